@@ -1,0 +1,195 @@
+#include "vsVolumeInput.h"
+
+#include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace vs
+{
+std::string CheckImage(vtkImageData* image, vtkDataArray* scalars)
+{
+  if (!image)
+  {
+    return "no input volume (vtkImageData) is set";
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  if (dims[0] <= 0 || dims[1] <= 0 || dims[2] <= 0 || image->GetNumberOfPoints() == 0)
+  {
+    std::ostringstream os;
+    os << "the input volume has an empty extent (" << dims[0] << " x " << dims[1] << " x " << dims[2] << ")";
+    return os.str();
+  }
+  if (!scalars)
+  {
+    return "the input volume has no point scalars to render";
+  }
+  if (scalars->GetNumberOfComponents() != 1)
+  {
+    std::ostringstream os;
+    os << "the input scalars '" << (scalars->GetName() ? scalars->GetName() : "")
+       << "' have " << scalars->GetNumberOfComponents()
+       << " components; only single-component scalars are supported";
+    return os.str();
+  }
+  switch (scalars->GetDataType())
+  {
+    case VTK_CHAR:
+    case VTK_SIGNED_CHAR:
+    case VTK_UNSIGNED_CHAR:
+    case VTK_SHORT:
+    case VTK_UNSIGNED_SHORT:
+    case VTK_INT:
+    case VTK_UNSIGNED_INT:
+    case VTK_LONG:
+    case VTK_UNSIGNED_LONG:
+    case VTK_LONG_LONG:
+    case VTK_UNSIGNED_LONG_LONG:
+    case VTK_FLOAT:
+    case VTK_DOUBLE:
+      break;
+    default:
+      return std::string("the input scalars have the unsupported type ") + scalars->GetDataTypeAsString();
+  }
+  if (scalars->GetNumberOfTuples() != image->GetNumberOfPoints())
+  {
+    return "the input scalars do not match the volume's points (cell data is not supported)";
+  }
+  return std::string();
+}
+
+std::string CheckProperty(vtkVolumeProperty* property)
+{
+  if (!property)
+  {
+    return "the volume has no vtkVolumeProperty";
+  }
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  if (!opacity || opacity->GetSize() == 0)
+  {
+    return "the scalar opacity transfer function has no points";
+  }
+  if (property->GetColorChannels(0) == 3)
+  {
+    vtkColorTransferFunction* color = property->GetRGBTransferFunction(0);
+    if (!color || color->GetSize() == 0)
+    {
+      return "the colour transfer function has no points";
+    }
+  }
+  if (!(property->GetScalarOpacityUnitDistance(0) > 0.0))
+  {
+    return "the scalar opacity unit distance must be positive";
+  }
+  return std::string();
+}
+
+VolumeGeometry ComputeGeometry(vtkImageData* image, vtkMatrix4x4* volumeMatrix)
+{
+  VolumeGeometry g;
+  int dims[3];
+  image->GetDimensions(dims);
+  int extent[6];
+  image->GetExtent(extent);
+  double origin[3], spacing[3];
+  image->GetOrigin(origin);
+  image->GetSpacing(spacing);
+  vtkMatrix3x3* dir = image->GetDirectionMatrix();
+  // structured index -> physical: p = origin + D * diag(spacing) * ijk; array index a = ijk - extent min.
+  glm::dmat4 indexToPhysical(1.0);
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      indexToPhysical[c][r] = dir->GetElement(r, c) * spacing[c];
+    }
+    double t = origin[r];
+    for (int c = 0; c < 3; ++c)
+    {
+      t += dir->GetElement(r, c) * spacing[c] * extent[2 * c];
+    }
+    indexToPhysical[3][r] = t;
+  }
+  glm::dmat4 model(1.0);
+  if (volumeMatrix)
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        model[c][r] = volumeMatrix->GetElement(r, c);
+      }
+    }
+  }
+  g.IndexToWorld = model * indexToPhysical;
+  g.WorldToIndex = glm::inverse(g.IndexToWorld);
+  for (int i = 0; i < 3; ++i)
+  {
+    g.Dims[i] = static_cast<uint32_t>(dims[i]);
+    g.BoxMin[i] = dims[i] > 1 ? 0.0f : -0.5f;
+    g.BoxMax[i] = dims[i] > 1 ? float(dims[i] - 1) : 0.5f;
+  }
+  g.MinSpacing = 1e300;
+  for (int c = 0; c < 3; ++c)
+  {
+    g.MinSpacing = std::min(g.MinSpacing, glm::length(glm::dvec3(g.IndexToWorld[c])));
+  }
+  return g;
+}
+
+std::vector<float> ScalarsAsFloat(vtkDataArray* scalars)
+{
+  const vtkIdType n = scalars->GetNumberOfTuples();
+  std::vector<float> out(static_cast<size_t>(n));
+  if (scalars->GetDataType() == VTK_FLOAT)
+  {
+    const float* p = static_cast<const float*>(scalars->GetVoidPointer(0));
+    std::copy(p, p + n, out.begin());
+  }
+  else
+  {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      out[static_cast<size_t>(i)] = static_cast<float>(scalars->GetComponent(i, 0));
+    }
+  }
+  return out;
+}
+
+TransferFunctionSamples SampleTransferFunction(vtkVolumeProperty* property, float smin, float smax,
+  double densityScale, size_t entries)
+{
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  double r[2];
+  opacity->GetRange(r);
+  double lo = std::min<double>(smin, r[0]), hi = std::max<double>(smax, r[1]);
+  const bool rgb = property->GetColorChannels(0) == 3;
+  vtkColorTransferFunction* ctf = rgb ? property->GetRGBTransferFunction(0) : nullptr;
+  vtkPiecewiseFunction* gray = rgb ? nullptr : property->GetGrayTransferFunction(0);
+  return TransferFunctionSamples::FromFunctions(static_cast<float>(lo), static_cast<float>(hi), entries,
+    [&](double s) { return opacity->GetValue(s); },
+    [&](double s, double c[3]) {
+      if (ctf)
+      {
+        ctf->GetColor(s, c);
+      }
+      else if (gray && gray->GetSize() > 0)
+      {
+        c[0] = c[1] = c[2] = gray->GetValue(s);
+      }
+      else
+      {
+        c[0] = c[1] = c[2] = 1.0;
+      }
+    },
+    property->GetScalarOpacityUnitDistance(0), densityScale);
+}
+}

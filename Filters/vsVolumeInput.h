@@ -1,0 +1,57 @@
+// vsVolumeInput.h — what the mapper needs from VTK's side of a volume: checks
+// the input and property, and turns them into the core's plain data: float
+// scalars, the index <-> world transforms, and the sampled transfer function.
+// Internal to VisSweep::Rendering and VisSweep::Filters (not wrapped).
+#ifndef vsVolumeInput_h
+#define vsVolumeInput_h
+
+// Hidden from VTK's wrappers: plain C++ for the module's own classes.
+#if !defined(__VTK_WRAP__)
+
+#include "vissweepFiltersModule.h"
+#include "vsTransferFunctionTable.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+class vtkDataArray;
+class vtkImageData;
+class vtkMatrix4x4;
+class vtkVolumeProperty;
+
+namespace vs
+{
+struct VISSWEEPFILTERS_EXPORT VolumeGeometry
+{
+  std::array<uint32_t, 3> Dims{ { 0, 0, 0 } };
+  glm::dmat4 IndexToWorld{ 1.0 }; // array index (0-based, voxel centres at integers) -> world
+  glm::dmat4 WorldToIndex{ 1.0 };
+  /** The index-space box the volume occupies: voxel centres, widened to +-0.5 on flat axes. */
+  glm::vec3 BoxMin{ 0.0f }, BoxMax{ 0.0f };
+  /** Smallest voxel edge in world units. */
+  double MinSpacing = 1.0;
+};
+
+/** Returns an empty string when `image` can be rendered, else the reason. */
+VISSWEEPFILTERS_EXPORT std::string CheckImage(vtkImageData* image, vtkDataArray* scalars);
+
+/** Returns an empty string when `property` can be used, else the reason. */
+VISSWEEPFILTERS_EXPORT std::string CheckProperty(vtkVolumeProperty* property);
+
+/** Voxel centres at array indices; `volumeMatrix` (may be null) is the prop's model matrix. */
+VISSWEEPFILTERS_EXPORT VolumeGeometry ComputeGeometry(vtkImageData* image, vtkMatrix4x4* volumeMatrix);
+
+/** The scalars as floats, x fastest (component 0). */
+VISSWEEPFILTERS_EXPORT std::vector<float> ScalarsAsFloat(vtkDataArray* scalars);
+
+/** The transfer function of component 0, sampled over [smin, smax] widened to the TF's points. */
+VISSWEEPFILTERS_EXPORT TransferFunctionSamples SampleTransferFunction(vtkVolumeProperty* property, float smin, float smax,
+  double densityScale, size_t entries = 4096);
+}
+
+#endif // __VTK_WRAP__
+
+#endif

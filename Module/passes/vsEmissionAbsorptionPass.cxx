@@ -1,0 +1,78 @@
+#include "vsEmissionAbsorptionPass.h"
+#include "vsBatch.h"
+#include "vsBuffer.h"
+#include "vsContext.h"
+#include "vsDeviceVolume.h"
+#include "vsError.h"
+#include "vsImage.h"
+#include "vsPipeline.h"
+#include "vsTransferFunctionTable.h"
+
+#include "vs_spirv_ea_render.h"
+
+namespace vs
+{
+namespace
+{
+// Keeps a buffer at least `bytes` large, reallocating only when it grows.
+void Reserve(std::unique_ptr<Buffer>& b, const std::shared_ptr<Context>& ctx, uint64_t bytes, const char* name)
+{
+  if (!b || b->Size() < bytes)
+  {
+    b.reset();
+    b = std::make_unique<Buffer>(ctx, bytes, name);
+  }
+}
+}
+
+EmissionAbsorptionPass::EmissionAbsorptionPass(std::shared_ptr<Context> context)
+  : Context_(std::move(context))
+{
+  this->Pipeline_ = std::make_unique<ComputePipeline>(this->Context_, VS_SPIRV(vs_spirv_ea_render),
+    std::vector<BindingType>{ BindingType::StorageImage, BindingType::StorageBuffer,
+      BindingType::StorageBuffer, BindingType::StorageBuffer, BindingType::StorageBuffer },
+    0, "emission-absorption");
+}
+
+EmissionAbsorptionPass::~EmissionAbsorptionPass() = default;
+
+std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
+  const TransferFunctionTable& tf, const shared::VsFrameParams& params, const std::vector<float>& depth)
+{
+  const uint32_t w = params.viewport.x, h = params.viewport.y;
+  if (w == 0 || h == 0)
+  {
+    return {};
+  }
+  const uint64_t pixels = uint64_t(w) * h;
+  if (!depth.empty() && depth.size() != pixels)
+  {
+    throw InputError("depth buffer has " + std::to_string(depth.size()) + " values for " +
+      std::to_string(pixels) + " pixels");
+  }
+  Reserve(this->Params_, this->Context_, sizeof(params), "frame parameters");
+  Reserve(this->Depth_, this->Context_, pixels * sizeof(float), "depth");
+  Reserve(this->Out_, this->Context_, pixels * 4 * sizeof(float), "emission-absorption image");
+  this->Params_->Upload(&params, sizeof(params));
+  if (depth.empty())
+  {
+    std::vector<float> ones(pixels, 1.0f);
+    this->Depth_->Upload(ones.data(), pixels * sizeof(float));
+  }
+  else
+  {
+    this->Depth_->Upload(depth.data(), pixels * sizeof(float));
+  }
+  DescriptorSet set(*this->Pipeline_);
+  set.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, *this->Params_).Bind(3, *this->Depth_).Bind(4, *this->Out_);
+  Batch batch(this->Context_);
+  batch.BeginTimer("render");
+  batch.Dispatch(*this->Pipeline_, set, nullptr, 0, (w + 7) / 8, (h + 7) / 8, 1);
+  batch.EndTimer();
+  batch.Submit();
+  this->LastSeconds_ = batch.Seconds("render");
+  std::vector<float> result(pixels * 4);
+  this->Out_->Download(result.data(), result.size() * sizeof(float));
+  return result;
+}
+}

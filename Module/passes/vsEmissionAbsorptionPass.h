@@ -1,0 +1,42 @@
+// vsEmissionAbsorptionPass.h — emission-absorption ray casting of a DeviceVolume
+// into premultiplied RGBA (float), stopped at the opaque depth of each pixel.
+#ifndef vsEmissionAbsorptionPass_h
+#define vsEmissionAbsorptionPass_h
+
+#include "vissweepCoreModule.h"
+#include "shared/frame_params.h"
+
+#include <memory>
+#include <vector>
+
+namespace vs
+{
+class Buffer;
+class ComputePipeline;
+class Context;
+class DeviceVolume;
+class TransferFunctionTable;
+
+class VISSWEEPCORE_EXPORT EmissionAbsorptionPass
+{
+public:
+  explicit EmissionAbsorptionPass(std::shared_ptr<Context> context);
+  ~EmissionAbsorptionPass();
+
+  /** Renders params.viewport.x by .y pixels. `depth` has one window depth in [0,1] per pixel
+   *  (1 = nothing opaque); empty means no opaque geometry. Returns RGBA, rows bottom-up. */
+  std::vector<float> Render(const DeviceVolume& volume, const TransferFunctionTable& tf,
+    const shared::VsFrameParams& params, const std::vector<float>& depth);
+
+  /** Device seconds of the last Render (0 without timestamp support). */
+  double LastSeconds() const { return this->LastSeconds_; }
+
+private:
+  std::shared_ptr<Context> Context_;
+  std::unique_ptr<ComputePipeline> Pipeline_;
+  std::unique_ptr<Buffer> Params_, Depth_, Out_;
+  double LastSeconds_ = 0.0;
+};
+}
+
+#endif

@@ -1,0 +1,62 @@
+/*
+ * vs_prelude.h — the common ground of the sampling math shared by GLSL and C++.
+ *
+ * Every header in this folder compiles twice: included by the compute shaders
+ * (GLSL 4.60, with GL_GOOGLE_include_directive) and included by C++ code and
+ * the CPU unit tests, where GLM provides the GLSL vector types and built-ins.
+ * Write in the common subset: GLSL types (vec3, uint, uvec4), GLSL built-ins,
+ * no constructors of structs (write an init function), no references except
+ * through VS_INOUT/VS_OUT, every function marked VS_FUNC.
+ */
+#ifndef VS_PRELUDE_H
+#define VS_PRELUDE_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/integer.hpp>
+#define VS_NAMESPACE_BEGIN                                                                         \
+  namespace vs                                                                                     \
+  {                                                                                                \
+  namespace shared                                                                                 \
+  {                                                                                                \
+  using namespace glm;
+#define VS_NAMESPACE_END                                                                           \
+  }                                                                                                \
+  }
+#define VS_FUNC inline
+#define VS_INOUT(T) T&
+#define VS_OUT(T) T&
+#define VS_CONST constexpr
+#else
+#define VS_NAMESPACE_BEGIN
+#define VS_NAMESPACE_END
+#define VS_FUNC
+#define VS_INOUT(T) inout T
+#define VS_OUT(T) out T
+#define VS_CONST const
+#endif
+
+VS_NAMESPACE_BEGIN
+
+VS_CONST float VS_PI = 3.14159265358979323846f;
+VS_CONST float VS_INV_PI = 0.31830988618379067154f;
+VS_CONST float VS_INV_4PI = 0.07957747154594766788f;
+/* The largest float below 1: samples in [0,1) stay below 1 after rounding. */
+VS_CONST float VS_ONE_MINUS_EPSILON = 0.99999994f;
+
+/* |a| with the sign of b (GLSL has no copysign). */
+VS_FUNC float vs_copysign(float a, float b)
+{
+  return b < 0.0f ? -abs(a) : abs(a);
+}
+
+VS_FUNC float vs_luminance(vec3 c)
+{
+  return dot(c, vec3(0.2126f, 0.7152f, 0.0722f));
+}
+
+VS_NAMESPACE_END
+
+#endif

@@ -1,0 +1,82 @@
+/*
+ * volume_access.glsl — GLSL-only helpers to read the volume and classify it.
+ * The including shader declares, before including this file:
+ *   layout(binding = VS_BINDING_VOLUME, r32f) uniform readonly image3D uVolume;
+ *   layout(std430, binding = VS_BINDING_TF) readonly buffer TransferFunction { vec4 uTF[]; };
+ * Non-finite voxels are stored as NaN; any interpolated NaN classifies to zero
+ * extinction and zero albedo (DESIGN: NaN/Inf voxels are empty space).
+ */
+
+/* Trilinear interpolation of the scalar at continuous index p with 8 imageLoads
+ * (measured faster than sampler3D on lavapipe). Indices clamp to the volume. */
+float vs_sample_scalar(vec3 p, ivec3 dims)
+{
+  vec3 q = clamp(p, vec3(0.0), vec3(dims - 1));
+  ivec3 i0 = ivec3(floor(q));
+  ivec3 i1 = min(i0 + 1, dims - 1);
+  vec3 f = q - vec3(i0);
+  float c000 = imageLoad(uVolume, ivec3(i0.x, i0.y, i0.z)).r;
+  float c100 = imageLoad(uVolume, ivec3(i1.x, i0.y, i0.z)).r;
+  float c010 = imageLoad(uVolume, ivec3(i0.x, i1.y, i0.z)).r;
+  float c110 = imageLoad(uVolume, ivec3(i1.x, i1.y, i0.z)).r;
+  float c001 = imageLoad(uVolume, ivec3(i0.x, i0.y, i1.z)).r;
+  float c101 = imageLoad(uVolume, ivec3(i1.x, i0.y, i1.z)).r;
+  float c011 = imageLoad(uVolume, ivec3(i0.x, i1.y, i1.z)).r;
+  float c111 = imageLoad(uVolume, ivec3(i1.x, i1.y, i1.z)).r;
+  float c00 = mix(c000, c100, f.x);
+  float c10 = mix(c010, c110, f.x);
+  float c01 = mix(c001, c101, f.x);
+  float c11 = mix(c011, c111, f.x);
+  return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
+}
+
+/* Post-classification: (albedo rgb, extinction per world unit) of scalar s,
+ * linear between LUT entries, clamped at the ends as VTK's transfer functions are. */
+vec4 vs_classify(float s, vec4 tf)
+{
+  if (isnan(s))
+    return vec4(0.0);
+  float x = clamp((s - tf.x) * tf.y, 0.0, tf.z - 1.0);
+  int i0 = int(floor(x));
+  int i1 = min(i0 + 1, int(tf.z) - 1);
+  return mix(uTF[i0], uTF[i1], x - float(i0));
+}
+
+/* Ray-box intersection in index space; returns (tNear, tFar), empty when tNear >= tFar. */
+vec2 vs_intersect_box(vec3 o, vec3 d, vec3 bmin, vec3 bmax)
+{
+  vec3 inv = 1.0 / d;
+  vec3 ta = (bmin - o) * inv;
+  vec3 tb = (bmax - o) * inv;
+  vec3 tmin = min(ta, tb);
+  vec3 tmax = max(ta, tb);
+  /* An axis-parallel ray (d = 0 on an axis) gives inf/-inf or NaN when it lies on a face;
+   * treat NaN as "no constraint" so rays on a face are inside. */
+  float t0 = max(max(isnan(tmin.x) ? -1e30 : tmin.x, isnan(tmin.y) ? -1e30 : tmin.y),
+    isnan(tmin.z) ? -1e30 : tmin.z);
+  float t1 = min(min(isnan(tmax.x) ? 1e30 : tmax.x, isnan(tmax.y) ? 1e30 : tmax.y),
+    isnan(tmax.z) ? 1e30 : tmax.z);
+  return vec2(t0, t1);
+}
+
+/* Clip the interval [t0,t1] of world ray o + t d against the half-spaces kept by the planes. */
+vec2 vs_clip_planes(vec3 o, vec3 d, vec2 t, vec4 planes[6], uint count)
+{
+  for (uint i = 0u; i < count; ++i)
+  {
+    float dn = dot(planes[i].xyz, d);
+    float on = dot(planes[i].xyz, o) + planes[i].w;
+    if (abs(dn) < 1e-20)
+    {
+      if (on < 0.0)
+        return vec2(1.0, 0.0);
+      continue;
+    }
+    float th = -on / dn;
+    if (dn > 0.0)
+      t.x = max(t.x, th);
+    else
+      t.y = min(t.y, th);
+  }
+  return t;
+}

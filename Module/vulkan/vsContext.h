@@ -1,0 +1,108 @@
+// vsContext.h — a Vulkan instance, one physical device and its compute queue.
+//
+// Device choice: a discrete GPU, then an integrated one, then a virtual one,
+// then a CPU device (lavapipe). VISSWEEP_DEVICE overrides it with an index
+// (as listed by `vissweep info`) or a case-insensitive substring of the name.
+// Validation layers are enabled in Debug builds (or with VISSWEEP_VALIDATION=1)
+// when installed; every message they print is counted.
+#ifndef vsContext_h
+#define vsContext_h
+
+#include "vsVulkan.h"
+#include "vissweepCoreModule.h"
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace vs
+{
+/** What a device is and the limits that matter to VisSweep. */
+struct VISSWEEPCORE_EXPORT DeviceInfo
+{
+  uint32_t Index = 0;
+  std::string Name;
+  std::string Type; // "discrete GPU", "integrated GPU", "virtual GPU", "CPU", "other"
+  std::string Driver;
+  std::string ApiVersion;
+  uint64_t DeviceLocalHeapBytes = 0;
+  uint32_t MaxImageDimension3D = 0;
+  uint32_t MaxImageDimension2D = 0;
+  uint64_t MaxStorageBufferRange = 0;
+  uint32_t MaxComputeWorkGroupCount[3] = { 0, 0, 0 };
+  uint32_t MaxPushConstantsSize = 0;
+  uint32_t SubgroupSize = 0;
+  bool FloatAtomicAdd = false;
+  bool Timestamps = false;
+  double TimestampPeriodNs = 0.0;
+
+  /** Several lines, one per property, as `vissweep info` prints them. */
+  std::string Describe() const;
+};
+
+struct VISSWEEPCORE_EXPORT ContextOptions
+{
+  /** Index or name substring; empty = $VISSWEEP_DEVICE, else the best device. */
+  std::string DeviceSelector;
+  /** -1 = default (on in Debug builds or with VISSWEEP_VALIDATION=1), 0 off, 1 on. */
+  int Validation = -1;
+};
+
+class VISSWEEPCORE_EXPORT Context
+{
+public:
+  /** Creates a context. Throws VulkanUnavailableError or NoDeviceError. */
+  static std::shared_ptr<Context> Create(const ContextOptions& options = ContextOptions());
+
+  /** The process-wide context, created on first use (thread-safe). Throws like Create. */
+  static std::shared_ptr<Context> Default();
+
+  /** Every device the loader reports (no context is kept). Throws VulkanUnavailableError. */
+  static std::vector<DeviceInfo> ListDevices();
+
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  const DeviceInfo& Info() const { return this->Info_; }
+  vk::Device Device() const { return this->Device_; }
+  vk::PhysicalDevice Physical() const { return this->Physical_; }
+  vk::Queue Queue() const { return this->Queue_; }
+  uint32_t QueueFamily() const { return this->QueueFamily_; }
+  vk::CommandPool CommandPool() const { return this->CommandPool_; }
+  bool ValidationEnabled() const { return this->ValidationEnabled_; }
+
+  /** Validation errors and warnings reported since the context was made. */
+  uint64_t ValidationMessageCount() const;
+
+  /** A memory type index with the given properties; -1 if none. */
+  int FindMemoryType(uint32_t typeBits, vk::MemoryPropertyFlags properties) const;
+
+  /** Guards the queue: submissions from several threads take turns. */
+  std::mutex& QueueMutex() { return this->QueueMutex_; }
+
+  /** Counts messages (called by the debug messenger). */
+  void CountValidationMessage();
+
+private:
+  Context() = default;
+  void Initialize(const ContextOptions& options);
+
+  vk::Instance Instance_;
+  vk::DebugUtilsMessengerEXT Messenger_;
+  vk::PhysicalDevice Physical_;
+  vk::Device Device_;
+  vk::Queue Queue_;
+  uint32_t QueueFamily_ = 0;
+  vk::CommandPool CommandPool_;
+  DeviceInfo Info_;
+  bool ValidationEnabled_ = false;
+  uint64_t ValidationMessages_ = 0;
+  mutable std::mutex Mutex_;
+  std::mutex QueueMutex_;
+};
+}
+
+#endif

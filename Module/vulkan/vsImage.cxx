@@ -1,0 +1,232 @@
+#include "vsImage.h"
+#include "vsBuffer.h"
+#include "vsContext.h"
+#include "vsError.h"
+
+#include <sstream>
+
+namespace vs
+{
+namespace
+{
+const vk::ImageUsageFlags kUsage = vk::ImageUsageFlagBits::eStorage |
+  vk::ImageUsageFlagBits::eTransferSrc | vk::ImageUsageFlagBits::eTransferDst;
+
+std::string Extent(uint32_t w, uint32_t h, uint32_t d)
+{
+  std::ostringstream os;
+  os << w << " x " << h << " x " << d;
+  return os.str();
+}
+}
+
+uint32_t Image3D::TexelBytes(vk::Format format)
+{
+  switch (format)
+  {
+    case vk::Format::eR8Unorm:
+      return 1;
+    case vk::Format::eR16Unorm:
+    case vk::Format::eR16Sfloat:
+      return 2;
+    case vk::Format::eR32Sfloat:
+      return 4;
+    case vk::Format::eR32G32B32A32Sfloat:
+      return 16;
+    default:
+      throw InputError("unsupported image format " + vk::to_string(format));
+  }
+}
+
+void Image3D::CheckLimits(Context& context, uint32_t width, uint32_t height, uint32_t depth,
+  vk::Format format, const std::string& name)
+{
+  const auto& info = context.Info();
+  if (width == 0 || height == 0 || depth == 0)
+  {
+    throw InputError("image '" + name + "' has an empty extent " + Extent(width, height, depth));
+  }
+  uint32_t largest = std::max(width, std::max(height, depth));
+  if (largest > info.MaxImageDimension3D)
+  {
+    throw DeviceLimitError("image '" + name + "' of " + Extent(width, height, depth) +
+      " exceeds the device's maxImageDimension3D of " + std::to_string(info.MaxImageDimension3D) +
+      " on '" + info.Name + "'");
+  }
+  vk::ImageFormatProperties props;
+  try
+  {
+    props = context.Physical().getImageFormatProperties(
+      format, vk::ImageType::e3D, vk::ImageTiling::eOptimal, kUsage);
+  }
+  catch (const vk::SystemError&)
+  {
+    throw DeviceLimitError("image '" + name + "': format " + vk::to_string(format) +
+      " is not supported as a 3D storage image on '" + info.Name + "'");
+  }
+  uint64_t bytes = uint64_t(width) * height * depth * TexelBytes(format);
+  if (bytes > props.maxResourceSize)
+  {
+    throw DeviceLimitError("image '" + name + "' of " + Extent(width, height, depth) + " (" +
+      std::to_string(bytes >> 20) + " MiB) exceeds the device's maxResourceSize of " +
+      std::to_string(props.maxResourceSize >> 20) + " MiB");
+  }
+  if (info.DeviceLocalHeapBytes && bytes > info.DeviceLocalHeapBytes)
+  {
+    throw DeviceLimitError("image '" + name + "' of " + Extent(width, height, depth) + " needs " +
+      std::to_string(bytes >> 20) + " MiB, more than the device-local heap of " +
+      std::to_string(info.DeviceLocalHeapBytes >> 20) + " MiB");
+  }
+}
+
+Image3D::Image3D(std::shared_ptr<Context> context, uint32_t width, uint32_t height, uint32_t depth,
+  vk::Format format, const std::string& name)
+  : Context_(std::move(context))
+  , Name_(name)
+  , Extent_{ width, height, depth }
+  , Format_(format)
+{
+  CheckLimits(*this->Context_, width, height, depth, format, name);
+  vk::Device device = this->Context_->Device();
+  vk::ImageCreateInfo ci;
+  ci.imageType = vk::ImageType::e3D;
+  ci.format = format;
+  ci.extent = vk::Extent3D{ width, height, depth };
+  ci.mipLevels = 1;
+  ci.arrayLayers = 1;
+  ci.samples = vk::SampleCountFlagBits::e1;
+  ci.tiling = vk::ImageTiling::eOptimal;
+  ci.usage = kUsage;
+  ci.sharingMode = vk::SharingMode::eExclusive;
+  ci.initialLayout = vk::ImageLayout::eUndefined;
+  this->Image_ = device.createImage(ci);
+  bool hostVisible = false;
+  try
+  {
+    this->Memory_ = AllocateMemory(*this->Context_, device.getImageMemoryRequirements(this->Image_),
+      false, hostVisible, "image '" + name + "'");
+  }
+  catch (...)
+  {
+    device.destroyImage(this->Image_);
+    throw;
+  }
+  device.bindImageMemory(this->Image_, this->Memory_, 0);
+  vk::ImageViewCreateInfo vci;
+  vci.image = this->Image_;
+  vci.viewType = vk::ImageViewType::e3D;
+  vci.format = format;
+  vci.subresourceRange = vk::ImageSubresourceRange{ vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1 };
+  this->View_ = device.createImageView(vci);
+
+  RunOnce(*this->Context_, [&](vk::CommandBuffer cmd) {
+    vk::ImageMemoryBarrier b;
+    b.srcAccessMask = {};
+    b.dstAccessMask = vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite |
+      vk::AccessFlagBits::eTransferWrite | vk::AccessFlagBits::eTransferRead;
+    b.oldLayout = vk::ImageLayout::eUndefined;
+    b.newLayout = vk::ImageLayout::eGeneral;
+    b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = this->Image_;
+    b.subresourceRange = vci.subresourceRange;
+    cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTopOfPipe,
+      vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eTransfer, {}, {}, {}, b);
+  });
+}
+
+Image3D::~Image3D()
+{
+  vk::Device device = this->Context_->Device();
+  device.destroyImageView(this->View_);
+  device.destroyImage(this->Image_);
+  device.freeMemory(this->Memory_);
+}
+
+uint64_t Image3D::Bytes() const
+{
+  return uint64_t(this->Extent_[0]) * this->Extent_[1] * this->Extent_[2] * TexelBytes(this->Format_);
+}
+
+void Image3D::UploadSlices(const void* data, uint32_t z0, uint32_t count)
+{
+  if (count == 0)
+  {
+    return;
+  }
+  if (z0 + count > this->Extent_[2])
+  {
+    throw InputError("upload past the last slice of image '" + this->Name_ + "'");
+  }
+  uint64_t sliceBytes = uint64_t(this->Extent_[0]) * this->Extent_[1] * TexelBytes(this->Format_);
+  // Stage in chunks no larger than the storage-buffer limit.
+  uint64_t maxChunk = std::min<uint64_t>(this->Context_->Info().MaxStorageBufferRange, 64ull << 20);
+  uint32_t slicesPerChunk = static_cast<uint32_t>(std::max<uint64_t>(1, maxChunk / sliceBytes));
+  if (sliceBytes > maxChunk)
+  {
+    throw DeviceLimitError("one slice of image '" + this->Name_ + "' is larger than the staging limit");
+  }
+  const char* bytes = static_cast<const char*>(data);
+  for (uint32_t z = 0; z < count; z += slicesPerChunk)
+  {
+    uint32_t n = std::min(slicesPerChunk, count - z);
+    Buffer staging(this->Context_, sliceBytes * n, this->Name_ + " (staging)");
+    staging.Upload(bytes + sliceBytes * z, sliceBytes * n);
+    RunOnce(*this->Context_, [&](vk::CommandBuffer cmd) {
+      vk::BufferImageCopy region;
+      region.bufferOffset = 0;
+      region.imageSubresource = vk::ImageSubresourceLayers{ vk::ImageAspectFlagBits::eColor, 0, 0, 1 };
+      region.imageOffset = vk::Offset3D{ 0, 0, static_cast<int32_t>(z0 + z) };
+      region.imageExtent = vk::Extent3D{ this->Extent_[0], this->Extent_[1], n };
+      cmd.copyBufferToImage(staging.Handle(), this->Image_, vk::ImageLayout::eGeneral, region);
+      vk::MemoryBarrier mb;
+      mb.srcAccessMask = vk::AccessFlagBits::eTransferWrite;
+      mb.dstAccessMask = vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite;
+      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eComputeShader,
+        {}, mb, {}, {});
+    });
+  }
+}
+
+void Image3D::Upload(const void* data, uint64_t bytes)
+{
+  if (bytes != this->Bytes())
+  {
+    throw InputError("upload of " + std::to_string(bytes) + " bytes into image '" + this->Name_ +
+      "' of " + std::to_string(this->Bytes()) + " bytes");
+  }
+  this->UploadSlices(data, 0, this->Extent_[2]);
+}
+
+void Image3D::Download(void* data, uint64_t bytes) const
+{
+  if (bytes != this->Bytes())
+  {
+    throw InputError("download of " + std::to_string(bytes) + " bytes from image '" + this->Name_ +
+      "' of " + std::to_string(this->Bytes()) + " bytes");
+  }
+  uint64_t sliceBytes = uint64_t(this->Extent_[0]) * this->Extent_[1] * TexelBytes(this->Format_);
+  uint64_t maxChunk = std::min<uint64_t>(this->Context_->Info().MaxStorageBufferRange, 64ull << 20);
+  uint32_t slicesPerChunk = static_cast<uint32_t>(std::max<uint64_t>(1, maxChunk / sliceBytes));
+  char* out = static_cast<char*>(data);
+  for (uint32_t z = 0; z < this->Extent_[2]; z += slicesPerChunk)
+  {
+    uint32_t n = std::min(slicesPerChunk, this->Extent_[2] - z);
+    Buffer staging(this->Context_, sliceBytes * n, this->Name_ + " (staging)");
+    RunOnce(*this->Context_, [&](vk::CommandBuffer cmd) {
+      vk::MemoryBarrier mb;
+      mb.srcAccessMask = vk::AccessFlagBits::eShaderWrite;
+      mb.dstAccessMask = vk::AccessFlagBits::eTransferRead;
+      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer,
+        {}, mb, {}, {});
+      vk::BufferImageCopy region;
+      region.bufferOffset = 0;
+      region.imageSubresource = vk::ImageSubresourceLayers{ vk::ImageAspectFlagBits::eColor, 0, 0, 1 };
+      region.imageOffset = vk::Offset3D{ 0, 0, static_cast<int32_t>(z) };
+      region.imageExtent = vk::Extent3D{ this->Extent_[0], this->Extent_[1], n };
+      cmd.copyImageToBuffer(this->Image_, vk::ImageLayout::eGeneral, staging.Handle(), region);
+    });
+    staging.Download(out + sliceBytes * z, sliceBytes * n);
+  }
+}
+}

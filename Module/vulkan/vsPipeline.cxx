@@ -1,0 +1,159 @@
+#include "vsPipeline.h"
+#include "vsBuffer.h"
+#include "vsContext.h"
+#include "vsError.h"
+#include "vsImage.h"
+
+namespace vs
+{
+namespace
+{
+vk::DescriptorType ToVk(BindingType t)
+{
+  return t == BindingType::StorageBuffer ? vk::DescriptorType::eStorageBuffer
+                                          : vk::DescriptorType::eStorageImage;
+}
+}
+
+ComputePipeline::ComputePipeline(std::shared_ptr<Context> context, const uint32_t* spirv,
+  size_t spirvBytes, std::vector<BindingType> bindings, uint32_t pushConstantBytes,
+  const std::string& name)
+  : Context_(std::move(context))
+  , Name_(name)
+  , Bindings_(std::move(bindings))
+  , PushBytes_(pushConstantBytes)
+{
+  if (pushConstantBytes > this->Context_->Info().MaxPushConstantsSize)
+  {
+    throw DeviceLimitError("pipeline '" + name + "' needs " + std::to_string(pushConstantBytes) +
+      " bytes of push constants; the device allows " +
+      std::to_string(this->Context_->Info().MaxPushConstantsSize));
+  }
+  vk::Device device = this->Context_->Device();
+  vk::ShaderModuleCreateInfo smci;
+  smci.codeSize = spirvBytes;
+  smci.pCode = spirv;
+  this->Module_ = device.createShaderModule(smci);
+
+  std::vector<vk::DescriptorSetLayoutBinding> layoutBindings;
+  for (uint32_t i = 0; i < this->Bindings_.size(); ++i)
+  {
+    vk::DescriptorSetLayoutBinding b;
+    b.binding = i;
+    b.descriptorType = ToVk(this->Bindings_[i]);
+    b.descriptorCount = 1;
+    b.stageFlags = vk::ShaderStageFlagBits::eCompute;
+    layoutBindings.push_back(b);
+  }
+  vk::DescriptorSetLayoutCreateInfo dslci;
+  dslci.bindingCount = static_cast<uint32_t>(layoutBindings.size());
+  dslci.pBindings = layoutBindings.data();
+  this->SetLayout_ = device.createDescriptorSetLayout(dslci);
+
+  vk::PushConstantRange range;
+  range.stageFlags = vk::ShaderStageFlagBits::eCompute;
+  range.offset = 0;
+  range.size = pushConstantBytes;
+  vk::PipelineLayoutCreateInfo plci;
+  plci.setLayoutCount = 1;
+  plci.pSetLayouts = &this->SetLayout_;
+  plci.pushConstantRangeCount = pushConstantBytes ? 1 : 0;
+  plci.pPushConstantRanges = &range;
+  this->Layout_ = device.createPipelineLayout(plci);
+
+  vk::ComputePipelineCreateInfo cpci;
+  cpci.stage.stage = vk::ShaderStageFlagBits::eCompute;
+  cpci.stage.module = this->Module_;
+  cpci.stage.pName = "main";
+  cpci.layout = this->Layout_;
+  auto result = device.createComputePipeline(nullptr, cpci);
+  if (result.result != vk::Result::eSuccess)
+  {
+    throw VulkanCallError("cannot create compute pipeline '" + name + "': " + vk::to_string(result.result));
+  }
+  this->Pipeline_ = result.value;
+}
+
+ComputePipeline::~ComputePipeline()
+{
+  vk::Device device = this->Context_->Device();
+  device.destroyPipeline(this->Pipeline_);
+  device.destroyPipelineLayout(this->Layout_);
+  device.destroyDescriptorSetLayout(this->SetLayout_);
+  device.destroyShaderModule(this->Module_);
+}
+
+DescriptorSet::DescriptorSet(const ComputePipeline& pipeline)
+  : Context_(pipeline.GetContext())
+  , PipelineName_(pipeline.Name())
+  , Bindings_(pipeline.Bindings())
+{
+  vk::Device device = this->Context_->Device();
+  uint32_t buffers = 0, images = 0;
+  for (auto b : this->Bindings_)
+  {
+    (b == BindingType::StorageBuffer ? buffers : images)++;
+  }
+  std::vector<vk::DescriptorPoolSize> sizes;
+  if (buffers)
+  {
+    sizes.push_back({ vk::DescriptorType::eStorageBuffer, buffers });
+  }
+  if (images)
+  {
+    sizes.push_back({ vk::DescriptorType::eStorageImage, images });
+  }
+  vk::DescriptorPoolCreateInfo pci;
+  pci.maxSets = 1;
+  pci.poolSizeCount = static_cast<uint32_t>(sizes.size());
+  pci.pPoolSizes = sizes.data();
+  this->Pool_ = device.createDescriptorPool(pci);
+  vk::DescriptorSetLayout layout = pipeline.SetLayout();
+  vk::DescriptorSetAllocateInfo ai;
+  ai.descriptorPool = this->Pool_;
+  ai.descriptorSetCount = 1;
+  ai.pSetLayouts = &layout;
+  this->Set_ = device.allocateDescriptorSets(ai)[0];
+}
+
+DescriptorSet::~DescriptorSet()
+{
+  this->Context_->Device().destroyDescriptorPool(this->Pool_);
+}
+
+DescriptorSet& DescriptorSet::Bind(uint32_t binding, const Buffer& buffer)
+{
+  if (binding >= this->Bindings_.size() || this->Bindings_[binding] != BindingType::StorageBuffer)
+  {
+    throw InputError("pipeline '" + this->PipelineName_ + "' has no storage buffer at binding " +
+      std::to_string(binding) + " (for '" + buffer.Name() + "')");
+  }
+  vk::DescriptorBufferInfo info{ buffer.Handle(), 0, VK_WHOLE_SIZE };
+  vk::WriteDescriptorSet w;
+  w.dstSet = this->Set_;
+  w.dstBinding = binding;
+  w.descriptorCount = 1;
+  w.descriptorType = vk::DescriptorType::eStorageBuffer;
+  w.pBufferInfo = &info;
+  this->Context_->Device().updateDescriptorSets(w, {});
+  return *this;
+}
+
+DescriptorSet& DescriptorSet::Bind(uint32_t binding, const Image3D& image)
+{
+  if (binding >= this->Bindings_.size() || this->Bindings_[binding] != BindingType::StorageImage)
+  {
+    throw InputError("pipeline '" + this->PipelineName_ + "' has no storage image at binding " +
+      std::to_string(binding) + " (for '" + image.Name() + "')");
+  }
+  vk::DescriptorImageInfo info{ nullptr, image.View(), vk::ImageLayout::eGeneral };
+  vk::WriteDescriptorSet w;
+  w.dstSet = this->Set_;
+  w.dstBinding = binding;
+  w.descriptorCount = 1;
+  w.descriptorType = vk::DescriptorType::eStorageImage;
+  w.pImageInfo = &info;
+  this->Context_->Device().updateDescriptorSets(w, {});
+  return *this;
+}
+}

@@ -1,0 +1,80 @@
+// vsPipeline.h — a compute pipeline made from embedded SPIR-V, its descriptor
+// set layout (one set; binding i has type Bindings[i]) and a push-constant block;
+// and DescriptorSet, the resources bound for one dispatch.
+#ifndef vsPipeline_h
+#define vsPipeline_h
+
+#include "vsVulkan.h"
+#include "vissweepCoreModule.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace vs
+{
+class Buffer;
+class Context;
+class Image3D;
+
+enum class BindingType
+{
+  StorageBuffer,
+  StorageImage
+};
+
+class VISSWEEPCORE_EXPORT ComputePipeline
+{
+public:
+  ComputePipeline(std::shared_ptr<Context> context, const uint32_t* spirv, size_t spirvBytes,
+    std::vector<BindingType> bindings, uint32_t pushConstantBytes, const std::string& name);
+  ~ComputePipeline();
+  ComputePipeline(const ComputePipeline&) = delete;
+  ComputePipeline& operator=(const ComputePipeline&) = delete;
+
+  vk::Pipeline Handle() const { return this->Pipeline_; }
+  vk::PipelineLayout Layout() const { return this->Layout_; }
+  vk::DescriptorSetLayout SetLayout() const { return this->SetLayout_; }
+  const std::vector<BindingType>& Bindings() const { return this->Bindings_; }
+  uint32_t PushConstantBytes() const { return this->PushBytes_; }
+  const std::string& Name() const { return this->Name_; }
+  const std::shared_ptr<Context>& GetContext() const { return this->Context_; }
+
+private:
+  std::shared_ptr<Context> Context_;
+  std::string Name_;
+  std::vector<BindingType> Bindings_;
+  uint32_t PushBytes_ = 0;
+  vk::ShaderModule Module_;
+  vk::DescriptorSetLayout SetLayout_;
+  vk::PipelineLayout Layout_;
+  vk::Pipeline Pipeline_;
+};
+
+/** The resources of one pipeline's descriptor set; owns its small pool. */
+class VISSWEEPCORE_EXPORT DescriptorSet
+{
+public:
+  explicit DescriptorSet(const ComputePipeline& pipeline);
+  ~DescriptorSet();
+  DescriptorSet(const DescriptorSet&) = delete;
+  DescriptorSet& operator=(const DescriptorSet&) = delete;
+
+  DescriptorSet& Bind(uint32_t binding, const Buffer& buffer);
+  DescriptorSet& Bind(uint32_t binding, const Image3D& image);
+
+  vk::DescriptorSet Handle() const { return this->Set_; }
+
+private:
+  std::shared_ptr<Context> Context_;
+  std::string PipelineName_;
+  std::vector<BindingType> Bindings_;
+  vk::DescriptorPool Pool_;
+  vk::DescriptorSet Set_;
+};
+
+/** The embedded SPIR-V of a shader, as compiled at build time (vs_spirv_<name>). */
+#define VS_SPIRV(array) array, sizeof(array)
+}
+
+#endif

@@ -1,0 +1,47 @@
+#include "vsWindowCompositor.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
+#include "vtk_glew.h"
+
+namespace vs
+{
+Viewport WindowCompositor::GetViewport(vtkRenderer* ren)
+{
+  Viewport vp;
+  ren->GetTiledSizeAndOrigin(&vp.Width, &vp.Height, &vp.X, &vp.Y);
+  return vp;
+}
+
+std::vector<float> WindowCompositor::ReadDepth(vtkRenderer* ren, const Viewport& vp)
+{
+  std::vector<float> depth(size_t(vp.Width) * vp.Height, 1.0f);
+  if (vp.Width > 0 && vp.Height > 0)
+  {
+    ren->GetRenderWindow()->GetZbufferData(vp.X, vp.Y, vp.X + vp.Width - 1, vp.Y + vp.Height - 1, depth.data());
+  }
+  return depth;
+}
+
+bool WindowCompositor::Draw(vtkRenderer* ren, const Viewport& vp, const std::vector<float>& rgba)
+{
+  auto* win = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!win || vp.Width <= 0 || vp.Height <= 0)
+  {
+    return false;
+  }
+  vtkOpenGLState* state = win->GetState();
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+  win->DrawPixels(vp.X, vp.Y, vp.X + vp.Width - 1, vp.Y + vp.Height - 1, 4, VTK_FLOAT,
+    const_cast<float*>(rgba.data()));
+  return true;
+}
+}
