@@ -12,6 +12,23 @@ namespace
 const vk::ImageUsageFlags kUsage = vk::ImageUsageFlagBits::eStorage |
   vk::ImageUsageFlagBits::eTransferSrc | vk::ImageUsageFlagBits::eTransferDst;
 
+// Moves the image between GENERAL (its resting layout, for the shaders) and a transfer layout.
+void Transition(vk::CommandBuffer cmd, vk::Image image, vk::ImageLayout from, vk::ImageLayout to)
+{
+  vk::ImageMemoryBarrier b;
+  b.srcAccessMask = vk::AccessFlagBits::eShaderWrite | vk::AccessFlagBits::eTransferWrite;
+  b.dstAccessMask = vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite |
+    vk::AccessFlagBits::eTransferRead | vk::AccessFlagBits::eTransferWrite;
+  b.oldLayout = from;
+  b.newLayout = to;
+  b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.image = image;
+  b.subresourceRange = vk::ImageSubresourceRange{ vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1 };
+  cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eTransfer,
+    vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eTransfer, {}, {}, {}, b);
+}
+
 std::string Extent(uint32_t w, uint32_t h, uint32_t d)
 {
   std::ostringstream os;
@@ -178,12 +195,9 @@ void Image3D::UploadSlices(const void* data, uint32_t z0, uint32_t count)
       region.imageSubresource = vk::ImageSubresourceLayers{ vk::ImageAspectFlagBits::eColor, 0, 0, 1 };
       region.imageOffset = vk::Offset3D{ 0, 0, static_cast<int32_t>(z0 + z) };
       region.imageExtent = vk::Extent3D{ this->Extent_[0], this->Extent_[1], n };
-      cmd.copyBufferToImage(staging.Handle(), this->Image_, vk::ImageLayout::eGeneral, region);
-      vk::MemoryBarrier mb;
-      mb.srcAccessMask = vk::AccessFlagBits::eTransferWrite;
-      mb.dstAccessMask = vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite;
-      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, vk::PipelineStageFlagBits::eComputeShader,
-        {}, mb, {}, {});
+      Transition(cmd, this->Image_, vk::ImageLayout::eGeneral, vk::ImageLayout::eTransferDstOptimal);
+      cmd.copyBufferToImage(staging.Handle(), this->Image_, vk::ImageLayout::eTransferDstOptimal, region);
+      Transition(cmd, this->Image_, vk::ImageLayout::eTransferDstOptimal, vk::ImageLayout::eGeneral);
     });
   }
 }
@@ -214,17 +228,14 @@ void Image3D::Download(void* data, uint64_t bytes) const
     uint32_t n = std::min(slicesPerChunk, this->Extent_[2] - z);
     Buffer staging(this->Context_, sliceBytes * n, this->Name_ + " (staging)");
     RunOnce(*this->Context_, [&](vk::CommandBuffer cmd) {
-      vk::MemoryBarrier mb;
-      mb.srcAccessMask = vk::AccessFlagBits::eShaderWrite;
-      mb.dstAccessMask = vk::AccessFlagBits::eTransferRead;
-      cmd.pipelineBarrier(vk::PipelineStageFlagBits::eComputeShader, vk::PipelineStageFlagBits::eTransfer,
-        {}, mb, {}, {});
+      Transition(cmd, this->Image_, vk::ImageLayout::eGeneral, vk::ImageLayout::eTransferSrcOptimal);
       vk::BufferImageCopy region;
       region.bufferOffset = 0;
       region.imageSubresource = vk::ImageSubresourceLayers{ vk::ImageAspectFlagBits::eColor, 0, 0, 1 };
       region.imageOffset = vk::Offset3D{ 0, 0, static_cast<int32_t>(z) };
       region.imageExtent = vk::Extent3D{ this->Extent_[0], this->Extent_[1], n };
-      cmd.copyImageToBuffer(this->Image_, vk::ImageLayout::eGeneral, staging.Handle(), region);
+      cmd.copyImageToBuffer(this->Image_, vk::ImageLayout::eTransferSrcOptimal, staging.Handle(), region);
+      Transition(cmd, this->Image_, vk::ImageLayout::eTransferSrcOptimal, vk::ImageLayout::eGeneral);
     });
     staging.Download(out + sliceBytes * z, sliceBytes * n);
   }

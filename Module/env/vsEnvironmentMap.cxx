@@ -1,0 +1,543 @@
+#include "vsEnvironmentMap.h"
+
+#include "shared/octahedral.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+namespace vs
+{
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+
+bool Good(float c)
+{
+  return std::isfinite(c) && c >= 0.0f;
+}
+
+/* Zero the bad channels of n RGB triples; returns the number of triples that had one. */
+std::int64_t SanitizeRGB(float* rgb, std::size_t n)
+{
+  std::int64_t bad = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    float* p = rgb + 3 * i;
+    if (!(Good(p[0]) && Good(p[1]) && Good(p[2])))
+    {
+      ++bad;
+      for (int c = 0; c < 3; ++c)
+      {
+        p[c] = Good(p[c]) ? p[c] : 0.0f;
+      }
+    }
+  }
+  return bad;
+}
+
+glm::vec3 OctaToDir(double u, double v)
+{
+  return shared::vs_octa_to_dir(glm::vec2(float(u), float(v)));
+}
+
+/* Angle between two directions (unit or not), accurate for small angles. */
+double Angle(glm::dvec3 a, glm::dvec3 b)
+{
+  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
+
+/* Bilinear lookup in a sanitized lat-long at lat-long coordinate u (any real,
+ * wrapped) and polar angle fraction v. */
+glm::vec3 BilinearUV(const LatLongImage& img, double u, double v)
+{
+  const int w = img.Width;
+  const int h = img.Height;
+  double x = u * w - 0.5;
+  double y = v * h - 0.5;
+  double xf = std::floor(x);
+  double yf = std::floor(y);
+  float fx = float(x - xf);
+  float fy = float(y - yf);
+  long long xi = (long long)xf % w;
+  if (xi < 0)
+  {
+    xi += w;
+  }
+  int x0 = int(xi);
+  int x1 = x0 + 1 == w ? 0 : x0 + 1;
+  int y0 = int(yf);
+  int y1 = y0 + 1;
+  y0 = std::min(std::max(y0, 0), h - 1);
+  y1 = std::min(std::max(y1, 0), h - 1);
+  glm::vec3 a = img.Pixel(x0, y0), b = img.Pixel(x1, y0);
+  glm::vec3 c = img.Pixel(x0, y1), d = img.Pixel(x1, y1);
+  return (a * (1.0f - fx) + b * fx) * (1.0f - fy) + (c * (1.0f - fx) + d * fx) * fy;
+}
+
+/* Area of the part of the axis-aligned square [x0,x1]x[y0,y1] with |x|+|y| < 1. */
+double SquareInDiamondArea(double x0, double y0, double x1, double y1)
+{
+  std::vector<glm::dvec2> poly = { { x0, y0 }, { x1, y0 }, { x1, y1 }, { x0, y1 } };
+  const glm::dvec2 normals[4] = { { 1, 1 }, { -1, 1 }, { 1, -1 }, { -1, -1 } };
+  for (const glm::dvec2& nrm : normals)
+  {
+    // Keep dot(n, p) <= 1 (Sutherland-Hodgman against one edge of the diamond).
+    std::vector<glm::dvec2> out;
+    for (std::size_t i = 0; i < poly.size(); ++i)
+    {
+      glm::dvec2 p = poly[i], q = poly[(i + 1) % poly.size()];
+      double dp = glm::dot(nrm, p) - 1.0, dq = glm::dot(nrm, q) - 1.0;
+      if (dp <= 0.0)
+      {
+        out.push_back(p);
+      }
+      if ((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0))
+      {
+        out.push_back(p + (q - p) * (dp / (dp - dq)));
+      }
+    }
+    poly.swap(out);
+    if (poly.empty())
+    {
+      return 0.0;
+    }
+  }
+  double area = 0.0;
+  for (std::size_t i = 0; i < poly.size(); ++i)
+  {
+    const glm::dvec2& p = poly[i];
+    const glm::dvec2& q = poly[(i + 1) % poly.size()];
+    area += p.x * q.y - q.x * p.y;
+  }
+  return 0.5 * std::abs(area);
+}
+
+/* Fraction of the solid angle of the octahedral rectangle [u0,u1]x[v0,v1] that lies
+ * within angle r of direction s: adaptive subdivision until the cells are small
+ * against r, then a linear coverage ramp across the disk's edge. */
+struct DiskCoverage
+{
+  glm::dvec3 S;
+  double R;
+
+  double Rect(double u0, double v0, double u1, double v1, int depth) const
+  {
+    const double um = 0.5 * (u0 + u1), vm = 0.5 * (v0 + v1);
+    const glm::dvec3 c(OctaToDir(um, vm));
+    const double delta = Angle(c, this->S);
+    // A bound of the rectangle's angular radius around its centre, from its
+    // corners and edge midpoints, with a safety margin for the map's curvature.
+    const double pu[8] = { u0, u1, u0, u1, um, um, u0, u1 };
+    const double pv[8] = { v0, v0, v1, v1, v0, v1, vm, vm };
+    double rho = 0.0;
+    for (int i = 0; i < 8; ++i)
+    {
+      rho = std::max(rho, Angle(c, glm::dvec3(OctaToDir(pu[i], pv[i]))));
+    }
+    rho = std::min(Pi, 1.5 * rho);
+    if (delta - rho >= this->R)
+    {
+      return 0.0;
+    }
+    if (delta + rho <= this->R)
+    {
+      return 1.0;
+    }
+    // Equal-area map: the rectangle's solid angle is 4 pi times its uv area.
+    const double width = std::sqrt(4.0 * Pi * (u1 - u0) * (v1 - v0));
+    if (width < this->R / 8.0 || depth >= 22)
+    {
+      return std::min(1.0, std::max(0.0, 0.5 + (this->R - delta) / width));
+    }
+    return 0.25 *
+      (this->Rect(u0, v0, um, vm, depth + 1) + this->Rect(um, v0, u1, vm, depth + 1) +
+        this->Rect(u0, vm, um, v1, depth + 1) + this->Rect(um, vm, u1, v1, depth + 1));
+  }
+};
+
+void CheckSize(int size, const char* what)
+{
+  if (!EnvironmentMap::IsPowerOfTwo(size) || size > (1 << 15))
+  {
+    throw std::invalid_argument(std::string(what) + ": the octahedral size must be a power of two in [1, 32768], not " +
+      std::to_string(size));
+  }
+}
+} // namespace
+
+glm::vec3 LatLongToDirection(double u, double v)
+{
+  const double phi = 2.0 * Pi * (0.5 - u);
+  const double theta = Pi * v;
+  return glm::vec3(glm::dvec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)));
+}
+
+glm::dvec2 DirectionToLatLong(glm::dvec3 d)
+{
+  d = glm::normalize(d);
+  double u = 0.5 - std::atan2(d.y, d.x) / (2.0 * Pi);
+  if (u >= 1.0)
+  {
+    u -= 1.0;
+  }
+  const double v = std::acos(std::min(1.0, std::max(-1.0, d.z))) / Pi;
+  return glm::dvec2(u, v);
+}
+
+glm::vec3 LatLongImage::Lookup(glm::vec3 dir) const
+{
+  const glm::dvec2 uv = DirectionToLatLong(glm::dvec3(dir));
+  return BilinearUV(*this, uv.x, uv.y);
+}
+
+double LatLongPower(const LatLongImage& image)
+{
+  double total = 0.0;
+  for (int j = 0; j < image.Height; ++j)
+  {
+    const double band = std::cos(Pi * j / image.Height) - std::cos(Pi * (j + 1) / image.Height);
+    double row = 0.0;
+    for (int i = 0; i < image.Width; ++i)
+    {
+      glm::vec3 p = image.Pixel(i, j);
+      for (int c = 0; c < 3; ++c)
+      {
+        p[c] = Good(p[c]) ? p[c] : 0.0f;
+      }
+      row += Luminance(p);
+    }
+    total += row * band * 2.0 * Pi / image.Width;
+  }
+  return total;
+}
+
+int EnvironmentMap::Levels() const
+{
+  int levels = 0;
+  while ((1 << levels) < this->Size)
+  {
+    ++levels;
+  }
+  return this->Size > 0 ? levels + 1 : 0;
+}
+
+glm::vec3 EnvironmentMap::Evaluate(glm::vec3 dir) const
+{
+  const float len = glm::length(dir);
+  if (this->Empty() || !(len > 0.0f) || !std::isfinite(len))
+  {
+    return glm::vec3(0.0f);
+  }
+  const glm::uvec2 t = shared::vs_dir_to_texel(dir / len, unsigned(this->Size));
+  return this->Texel(int(t.x), int(t.y));
+}
+
+double EnvironmentMap::TexelSolidAngle() const
+{
+  return this->Size > 0 ? 4.0 * Pi / (double(this->Size) * this->Size) : 0.0;
+}
+
+double EnvironmentMap::TotalPower() const
+{
+  return 4.0 * Pi * this->MeanLuminance;
+}
+
+int EnvironmentMap::DefaultSize(int latLongWidth)
+{
+  int size = 1;
+  while (size < latLongWidth / 2 + latLongWidth % 2 && size < (1 << 15))
+  {
+    size *= 2;
+  }
+  return size;
+}
+
+EnvironmentMap EnvironmentMap::Allocate(int size)
+{
+  CheckSize(size, "EnvironmentMap");
+  EnvironmentMap map;
+  map.Size = size;
+  map.Radiance.assign(3 * std::size_t(size) * size, 0.0f);
+  return map;
+}
+
+void EnvironmentMap::Finalize()
+{
+  const int n = this->Size;
+  const std::size_t texels = std::size_t(n) * n;
+  this->BadTexels += SanitizeRGB(this->Radiance.data(), texels);
+  const int levels = this->Levels();
+  this->ImportanceMips.assign(levels > 0 ? MipOffset(levels) : 0, 0.0f);
+  this->MeanRadiance = glm::dvec3(0.0);
+  this->MeanLuminance = 0.0;
+  if (levels == 0)
+  {
+    return;
+  }
+  float* finest = this->ImportanceMips.data() + MipOffset(levels - 1);
+  glm::dvec3 sum(0.0);
+  double lumSum = 0.0;
+  for (std::size_t i = 0; i < texels; ++i)
+  {
+    const glm::vec3 c(this->Radiance[3 * i], this->Radiance[3 * i + 1], this->Radiance[3 * i + 2]);
+    finest[i] = Luminance(c);
+    sum += glm::dvec3(c);
+    lumSum += finest[i];
+  }
+  this->MeanRadiance = sum / double(texels);
+  this->MeanLuminance = lumSum / double(texels);
+  for (int l = levels - 2; l >= 0; --l)
+  {
+    const int m = 1 << l;
+    const float* fine = this->ImportanceMips.data() + MipOffset(l + 1);
+    float* coarse = this->ImportanceMips.data() + MipOffset(l);
+    for (int y = 0; y < m; ++y)
+    {
+      for (int x = 0; x < m; ++x)
+      {
+        const std::size_t f = std::size_t(2 * y) * (2 * m) + 2 * x;
+        coarse[std::size_t(y) * m + x] = float(
+          0.25 * (double(fine[f]) + double(fine[f + 1]) + double(fine[f + 2 * m]) + double(fine[f + 2 * m + 1])));
+      }
+    }
+  }
+}
+
+EnvironmentMap EnvironmentMap::FromLatLong(const LatLongImage& image, int size, double rotationDeg,
+  double intensity, const ProgressFunction& progress, int threads)
+{
+  if (image.Width <= 0 || image.Height <= 0 ||
+    image.RGB.size() != 3 * std::size_t(image.Width) * image.Height)
+  {
+    throw std::invalid_argument("EnvironmentMap::FromLatLong: empty or inconsistent lat-long image (" +
+      std::to_string(image.Width) + " x " + std::to_string(image.Height) + ", " +
+      std::to_string(image.RGB.size()) + " floats)");
+  }
+  if (size == 0)
+  {
+    size = DefaultSize(image.Width);
+  }
+  CheckSize(size, "EnvironmentMap::FromLatLong");
+  if (!std::isfinite(rotationDeg) || !std::isfinite(intensity))
+  {
+    throw std::invalid_argument("EnvironmentMap::FromLatLong: rotation and intensity must be finite");
+  }
+
+  // A sanitized copy of the source: bad channels become 0 before any filtering,
+  // so one NaN cannot spread to the neighbouring texels.
+  LatLongImage src;
+  src.Width = image.Width;
+  src.Height = image.Height;
+  src.RGB = image.RGB;
+  EnvironmentMap map = Allocate(size);
+  map.BadTexels = SanitizeRGB(src.RGB.data(), std::size_t(src.Width) * src.Height);
+
+  const int n = size;
+  // Directions of the texel corners, (n+1)^2, to size each texel's sub-sample grid.
+  std::vector<glm::vec3> corners(std::size_t(n + 1) * (n + 1));
+  for (int y = 0; y <= n; ++y)
+  {
+    for (int x = 0; x <= n; ++x)
+    {
+      corners[std::size_t(y) * (n + 1) + x] = OctaToDir(double(x) / n, double(y) / n);
+    }
+  }
+  // Sub-sample spacing: at most ~0.5 source pixel (the smaller of the pixel's
+  // polar and equatorial azimuthal extents), so the bilinear source is integrated
+  // accurately (narrow bright features such as a sun keep their power).
+  const double pixelAngle = std::min(Pi / src.Height, 2.0 * Pi / src.Width);
+  const double spacing = 0.5 * pixelAngle;
+  const int maxSub = 32;
+  // Rotation: d is looked up as R_z(-rotation) d, i.e. at azimuth phi - rotation,
+  // which is the lat-long coordinate u + rotation / 360.
+  const double uShift = rotationDeg / 360.0 - std::floor(rotationDeg / 360.0);
+  const float scale = float(intensity);
+
+  auto doRow = [&](int y) {
+    for (int x = 0; x < n; ++x)
+    {
+      const glm::vec3& c00 = corners[std::size_t(y) * (n + 1) + x];
+      const glm::vec3& c10 = corners[std::size_t(y) * (n + 1) + x + 1];
+      const glm::vec3& c01 = corners[std::size_t(y + 1) * (n + 1) + x];
+      const glm::vec3& c11 = corners[std::size_t(y + 1) * (n + 1) + x + 1];
+      // Chord lengths ~ angles: the texel's extent along x and y.
+      const double ex = std::max(glm::length(c10 - c00), glm::length(c11 - c01));
+      const double ey = std::max(glm::length(c01 - c00), glm::length(c11 - c10));
+      const int sx = std::min(maxSub, std::max(1, int(std::ceil(ex / spacing))));
+      const int sy = std::min(maxSub, std::max(1, int(std::ceil(ey / spacing))));
+      glm::dvec3 sum(0.0);
+      for (int b = 0; b < sy; ++b)
+      {
+        const double v = (y + (b + 0.5) / sy) / n;
+        for (int a = 0; a < sx; ++a)
+        {
+          const double u = (x + (a + 0.5) / sx) / n;
+          const glm::vec3 d = OctaToDir(u, v);
+          const double lu = 0.5 - std::atan2(double(d.y), double(d.x)) / (2.0 * Pi) + uShift;
+          const double lv = std::acos(std::min(1.0, std::max(-1.0, double(d.z)))) / Pi;
+          sum += glm::dvec3(BilinearUV(src, lu, lv));
+        }
+      }
+      const glm::vec3 mean = glm::vec3(sum / double(sx * sy)) * scale;
+      float* out = &map.Radiance[3 * (std::size_t(y) * n + x)];
+      out[0] = mean.x;
+      out[1] = mean.y;
+      out[2] = mean.z;
+    }
+  };
+
+  if (threads <= 0)
+  {
+    threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  }
+  threads = std::min(threads, n);
+  std::atomic<int> nextRow(0);
+  auto worker = [&](bool report) {
+    for (int y = nextRow++; y < n; y = nextRow++)
+    {
+      doRow(y);
+      if (report && progress && (y % 16 == 0))
+      {
+        progress(std::min(1.0, double(nextRow.load()) / n));
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t)
+  {
+    pool.emplace_back(worker, false);
+  }
+  worker(true);
+  for (std::thread& t : pool)
+  {
+    t.join();
+  }
+  map.Finalize();
+  if (progress)
+  {
+    progress(1.0);
+  }
+  return map;
+}
+
+EnvironmentMap EnvironmentMap::Constant(int size, glm::vec3 rgb)
+{
+  EnvironmentMap map = Allocate(size);
+  for (std::size_t i = 0; i < std::size_t(size) * size; ++i)
+  {
+    map.Radiance[3 * i] = rgb.x;
+    map.Radiance[3 * i + 1] = rgb.y;
+    map.Radiance[3 * i + 2] = rgb.z;
+  }
+  map.Finalize();
+  return map;
+}
+
+EnvironmentMap EnvironmentMap::TwoToneSky(int size, glm::vec3 upper, glm::vec3 lower)
+{
+  EnvironmentMap map = Allocate(size);
+  const int n = size;
+  // z > 0 exactly where |u'| + |v'| < 1 (u' = 2u - 1): the horizon is the diamond,
+  // and the map is equal-area, so a texel's share of the upper hemisphere is the
+  // share of its square inside the diamond.
+  for (int y = 0; y < n; ++y)
+  {
+    for (int x = 0; x < n; ++x)
+    {
+      const double x0 = 2.0 * x / n - 1.0, x1 = 2.0 * (x + 1) / n - 1.0;
+      const double y0 = 2.0 * y / n - 1.0, y1 = 2.0 * (y + 1) / n - 1.0;
+      const double f = SquareInDiamondArea(x0, y0, x1, y1) / ((x1 - x0) * (y1 - y0));
+      const glm::vec3 c = glm::vec3(glm::dvec3(upper) * f + glm::dvec3(lower) * (1.0 - f));
+      float* out = &map.Radiance[3 * (std::size_t(y) * n + x)];
+      out[0] = c.x;
+      out[1] = c.y;
+      out[2] = c.z;
+    }
+  }
+  map.Finalize();
+  return map;
+}
+
+EnvironmentMap EnvironmentMap::SunDisk(
+  int size, glm::vec3 direction, double angularRadiusDeg, glm::vec3 radiance, glm::vec3 sky)
+{
+  EnvironmentMap map = Allocate(size);
+  const int n = size;
+  const double len = glm::length(glm::dvec3(direction));
+  if (!(len > 0.0) || !std::isfinite(len))
+  {
+    throw std::invalid_argument("EnvironmentMap::SunDisk: the sun direction must be a non-zero vector");
+  }
+  if (!std::isfinite(angularRadiusDeg) || angularRadiusDeg < 0.0)
+  {
+    throw std::invalid_argument("EnvironmentMap::SunDisk: the angular radius must be >= 0 degrees");
+  }
+  const glm::dvec3 s = glm::dvec3(direction) / len;
+  const double r = std::min(180.0, angularRadiusDeg) * Pi / 180.0;
+  std::vector<double> coverage(std::size_t(n) * n, 0.0);
+  if (r < 1e-5)
+  {
+    // Below ~0.0006 degrees: a point light carrying the disk's power, in its texel.
+    const glm::uvec2 t = shared::vs_dir_to_texel(glm::vec3(s), unsigned(n));
+    const double diskSolidAngle = 2.0 * Pi * (1.0 - std::cos(r));
+    coverage[std::size_t(t.y) * n + t.x] = diskSolidAngle / map.TexelSolidAngle();
+  }
+  else
+  {
+    std::vector<glm::vec3> corners(std::size_t(n + 1) * (n + 1));
+    for (int y = 0; y <= n; ++y)
+    {
+      for (int x = 0; x <= n; ++x)
+      {
+        corners[std::size_t(y) * (n + 1) + x] = OctaToDir(double(x) / n, double(y) / n);
+      }
+    }
+    const DiskCoverage disk{ s, r };
+    for (int y = 0; y < n; ++y)
+    {
+      for (int x = 0; x < n; ++x)
+      {
+        // Quick rejection from the texel centre and corners; refine the rest.
+        const glm::dvec3 c(OctaToDir((x + 0.5) / n, (y + 0.5) / n));
+        double rho = 0.0;
+        for (int k = 0; k < 4; ++k)
+        {
+          rho = std::max(rho,
+            Angle(c, glm::dvec3(corners[std::size_t(y + k / 2) * (n + 1) + x + k % 2])));
+        }
+        rho = std::min(Pi, 2.0 * rho);
+        const double delta = Angle(c, s);
+        double f;
+        if (delta - rho >= r)
+        {
+          f = 0.0;
+        }
+        else if (delta + rho <= r)
+        {
+          f = 1.0;
+        }
+        else
+        {
+          f = disk.Rect(double(x) / n, double(y) / n, double(x + 1) / n, double(y + 1) / n, 0);
+        }
+        coverage[std::size_t(y) * n + x] = f;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < coverage.size(); ++i)
+  {
+    const glm::vec3 c =
+      glm::vec3(glm::dvec3(sky) + (glm::dvec3(radiance) - glm::dvec3(sky)) * coverage[i]);
+    map.Radiance[3 * i] = c.x;
+    map.Radiance[3 * i + 1] = c.y;
+    map.Radiance[3 * i + 2] = c.z;
+  }
+  map.Finalize();
+  return map;
+}
+
+} // namespace vs

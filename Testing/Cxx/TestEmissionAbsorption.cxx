@@ -1,0 +1,125 @@
+// Emission-absorption on the device against the analytic homogeneous cube:
+// alpha = 1 - exp(-sigma_t L), colour = c * alpha, for every ray through the cube.
+#include "vsContext.h"
+#include "vsDeviceVolume.h"
+#include "vsEmissionAbsorptionPass.h"
+#include "vsTransferFunctionTable.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace vs;
+
+namespace
+{
+// An orthographic view along +z: NDC x,y in [-1,1] -> world [lo, hi], NDC z -1 -> z0, +1 -> z1.
+shared::VsFrameParams OrthoAlongZ(uint32_t w, uint32_t h, float lo, float hi, float z0, float z1)
+{
+  shared::VsFrameParams p{};
+  glm::mat4 m(1.0f);
+  m[0][0] = 0.5f * (hi - lo);
+  m[1][1] = 0.5f * (hi - lo);
+  m[2][2] = 0.5f * (z1 - z0);
+  m[3] = glm::vec4(0.5f * (hi + lo), 0.5f * (hi + lo), 0.5f * (z1 + z0), 1.0f);
+  p.invViewProj = m;
+  p.worldToIndex = glm::mat4(1.0f);
+  p.indexToWorld = glm::mat4(1.0f);
+  p.viewport = glm::uvec4(w, h, 0, 1);
+  return p;
+}
+}
+
+TEST(EmissionAbsorption, HomogeneousCubeIsAnalytic)
+{
+  auto ctx = Context::Default();
+  const uint32_t n = 16;
+  std::vector<float> voxels(n * n * n, 100.0f);
+  DeviceVolume volume(ctx, voxels.data(), { { n, n, n } });
+  const double alpha = 0.1, unit = 1.0;
+  const double color[3] = { 0.9, 0.5, 0.2 };
+  auto samples = TransferFunctionSamples::FromFunctions(0.0f, 255.0f, 256, [&](double) { return alpha; },
+    [&](double, double c[3]) {
+      for (int i = 0; i < 3; ++i)
+        c[i] = color[i];
+    },
+    unit, 1.0);
+  TransferFunctionTable tf(ctx, samples);
+
+  const uint32_t W = 32, H = 32;
+  auto p = OrthoAlongZ(W, H, -4.0f, 19.0f, -10.0f, 30.0f);
+  p.boxMin = glm::vec4(0.0f);
+  p.boxMax = glm::vec4(float(n - 1));
+  p.dims = glm::vec4(float(n));
+  auto t = tf.Params();
+  p.tf = glm::vec4(t[0], t[1], t[2], t[3]);
+  p.march = glm::vec4(0.37f, 0.999f, 0.0f, 0.0f); // a step that does not divide L
+
+  EmissionAbsorptionPass pass(ctx);
+  std::vector<float> rgba = pass.Render(volume, tf, p, {});
+  const double sigma = -std::log(1.0 - alpha) / unit;
+  const double expectedAlpha = 1.0 - std::exp(-sigma * (n - 1));
+  int inside = 0;
+  for (uint32_t y = 0; y < H; ++y)
+  {
+    for (uint32_t x = 0; x < W; ++x)
+    {
+      float wx = -4.0f + 23.0f * (x + 0.5f) / W, wy = -4.0f + 23.0f * (y + 0.5f) / H;
+      const float* px = &rgba[4 * (y * W + x)];
+      if (wx > 0.1f && wx < n - 1.1f && wy > 0.1f && wy < n - 1.1f)
+      {
+        ++inside;
+        EXPECT_NEAR(px[3], expectedAlpha, 0.01 * expectedAlpha) << x << "," << y;
+        for (int c = 0; c < 3; ++c)
+        {
+          EXPECT_NEAR(px[c], color[c] * expectedAlpha, 0.01 * color[c] * expectedAlpha);
+        }
+      }
+      else if (wx < -0.1f || wx > n - 0.9f || wy < -0.1f || wy > n - 0.9f)
+      {
+        EXPECT_EQ(px[3], 0.0f) << "ray outside the cube at " << x << "," << y;
+      }
+    }
+  }
+  EXPECT_GT(inside, 300);
+}
+
+TEST(EmissionAbsorption, OpaqueDepthStopsRays)
+{
+  auto ctx = Context::Default();
+  const uint32_t n = 8;
+  std::vector<float> voxels(n * n * n, 1.0f);
+  DeviceVolume volume(ctx, voxels.data(), { { n, n, n } });
+  TransferFunctionTable tf(ctx, TransferFunctionSamples::FromFunctions(0.0f, 1.0f, 16,
+    [](double) { return 0.5; }, [](double, double c[3]) { c[0] = c[1] = c[2] = 1.0; }, 1.0, 1.0));
+  const uint32_t W = 8, H = 8;
+  auto p = OrthoAlongZ(W, H, 1.0f, 6.0f, -10.0f, 30.0f);
+  p.boxMin = glm::vec4(0.0f);
+  p.boxMax = glm::vec4(float(n - 1));
+  p.dims = glm::vec4(float(n));
+  auto t = tf.Params();
+  p.tf = glm::vec4(t[0], t[1], t[2], t[3]);
+  p.march = glm::vec4(0.25f, 0.999f, 0.0f, 0.0f);
+  // Opaque surface at world z = 2 (window depth = (z - z0) / (z1 - z0) for this linear projection).
+  std::vector<float> depth(W * H, float((2.0 + 10.0) / 40.0));
+  EmissionAbsorptionPass pass(ctx);
+  auto rgba = pass.Render(volume, tf, p, depth);
+  const double expected = 1.0 - std::exp(std::log(0.5) * 2.0);
+  for (uint32_t i = 0; i < W * H; ++i)
+  {
+    EXPECT_NEAR(rgba[4 * i + 3], expected, 1e-3);
+  }
+}
+
+TEST(EmissionAbsorption, NonFiniteVoxelsAreEmptyAndCounted)
+{
+  auto ctx = Context::Default();
+  std::vector<float> voxels(4 * 4 * 4, 1.0f);
+  voxels[5] = std::nanf("");
+  voxels[6] = INFINITY;
+  voxels[7] = -INFINITY;
+  DeviceVolume volume(ctx, voxels.data(), { { 4, 4, 4 } });
+  EXPECT_EQ(volume.NonFiniteCount(), 3u);
+  EXPECT_EQ(volume.Range()[0], 1.0f);
+  EXPECT_EQ(volume.Range()[1], 1.0f);
+}

@@ -1,0 +1,76 @@
+#include "vsRenderTestUtilities.h"
+
+#include "vtkColorTransferFunction.h"
+#include "vtkImageData.h"
+#include "vtkNIFTIImageReader.h"
+#include "vtkObject.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkVolumeProperty.h"
+
+#include <cstring>
+
+namespace vstest
+{
+std::string Argument(int argc, char* argv[], const char* flag)
+{
+  for (int i = 0; i + 1 < argc; ++i)
+  {
+    if (std::strcmp(argv[i], flag) == 0)
+    {
+      return argv[i + 1];
+    }
+  }
+  return std::string();
+}
+
+vtkSmartPointer<vtkImageData> ReadBrain(const std::string& path)
+{
+  vtkNew<vtkNIFTIImageReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkSmartPointer<vtkImageData> image = reader->GetOutput();
+  return image;
+}
+
+vtkSmartPointer<vtkVolumeProperty> BrainProperty()
+{
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0, 0.0);
+  opacity->AddPoint(40, 0.0);
+  opacity->AddPoint(90, 0.05);
+  opacity->AddPoint(255, 0.3);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0, 0.0, 0.0, 0.0);
+  color->AddRGBPoint(90, 0.9, 0.6, 0.5);
+  color->AddRGBPoint(255, 1.0, 1.0, 0.9);
+  property->SetScalarOpacity(opacity);
+  property->SetColor(color);
+  property->SetScalarOpacityUnitDistance(1.0);
+  return property;
+}
+
+void ErrorRecorder::Execute(vtkObject*, unsigned long event, void* data)
+{
+  std::string msg = data ? static_cast<const char*>(data) : "";
+  (event == vtkCommand::ErrorEvent ? this->Errors : this->Warnings).push_back(msg);
+}
+
+void ErrorRecorder::Watch(vtkObject* o)
+{
+  o->AddObserver(vtkCommand::ErrorEvent, this);
+  o->AddObserver(vtkCommand::WarningEvent, this);
+}
+
+bool ErrorRecorder::Saw(const std::string& substring) const
+{
+  for (const auto& e : this->Errors)
+  {
+    if (e.find(substring) != std::string::npos)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+}

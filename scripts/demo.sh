@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Sets everything up on Debian 12, builds VisSweep and renders the demo:
+# the Colin27 brain MRI to build/demo/brain.png.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${VISSWEEP_BUILD_DIR:-$root/build}"
+ms() { echo $(( $(date +%s%N) / 1000000 )); }
+secs() { printf "%d.%01d" $(( $1 / 1000 )) $(( ($1 % 1000) / 100 )); }
+t0=$(ms)
+"$root/scripts/setup-debian.sh"
+t1=$(ms)
+"$root/scripts/build.sh"
+t2=$(ms)
+mkdir -p "$build/demo"
+export LP_NUM_THREADS="${LP_NUM_THREADS:-$(nproc)}"
+PYTHONPATH="$build${PYTHONPATH:+:$PYTHONPATH}" xvfb-run -a -s "-screen 0 1280x1024x24" \
+  /usr/bin/python3 "$root/Examples/Python/render_brain.py" \
+  --volume /usr/share/mricron/templates/ch2.nii.gz --output "$build/demo/brain.png"
+t3=$(ms)
+echo "stages: setup $(secs $((t1 - t0))) s, build $(secs $((t2 - t1))) s, render $(secs $((t3 - t2))) s"
+echo "demo image: $build/demo/brain.png"

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Sets everything up on Debian 12 and runs the whole test suite:
+# unit tests (GoogleTest), image regression tests, Python tests, stress tests.
+# Rendering tests need a display: the suite runs under xvfb-run.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${VISSWEEP_BUILD_DIR:-$root/build}"
+t0=$(date +%s)
+"$root/scripts/setup-debian.sh"
+t1=$(date +%s)
+"$root/scripts/build.sh"
+t2=$(date +%s)
+export LP_NUM_THREADS="${LP_NUM_THREADS:-2}"
+cd "$build"
+status=0
+xvfb-run -a -s "-screen 0 1280x1024x24" ctest --output-on-failure -j 2 --timeout 1500 || status=$?
+t3=$(date +%s)
+echo "setup $((t1 - t0)) s, build $((t2 - t1)) s, tests $((t3 - t2)) s"
+exit $status
