@@ -10,6 +10,7 @@
 
 #include "vissweepFiltersModule.h"
 #include "vsTransferFunctionTable.h"
+#include "vsVolumeGeometry.h"
 
 #include <glm/glm.hpp>
 
@@ -24,17 +25,6 @@ class vtkVolumeProperty;
 
 namespace vs
 {
-struct VISSWEEPFILTERS_EXPORT VolumeGeometry
-{
-  std::array<uint32_t, 3> Dims{ { 0, 0, 0 } };
-  glm::dmat4 IndexToWorld{ 1.0 }; // array index (0-based, voxel centres at integers) -> world
-  glm::dmat4 WorldToIndex{ 1.0 };
-  /** The index-space box the volume occupies: voxel centres, widened to +-0.5 on flat axes. */
-  glm::vec3 BoxMin{ 0.0f }, BoxMax{ 0.0f };
-  /** Smallest voxel edge in world units. */
-  double MinSpacing = 1.0;
-};
-
 /** Returns an empty string when `image` can be rendered, else the reason. */
 VISSWEEPFILTERS_EXPORT std::string CheckImage(vtkImageData* image, vtkDataArray* scalars);
 

@@ -400,6 +400,10 @@ void Context::Initialize(const ContextOptions& options)
     atomics.shaderBufferFloat32AtomicAdd = VK_TRUE;
     features.pNext = &atomics;
   }
+  // Sweeps write visibility in the grid's storage format (r8, r16 or r32f) from one shader.
+  vk::PhysicalDeviceFeatures supported = this->Physical_.getFeatures();
+  features.features.shaderStorageImageWriteWithoutFormat = supported.shaderStorageImageWriteWithoutFormat;
+  this->Info_.WriteWithoutFormat = supported.shaderStorageImageWriteWithoutFormat == VK_TRUE;
   vk::DeviceCreateInfo dci;
   dci.queueCreateInfoCount = 1;
   dci.pQueueCreateInfos = &qci;

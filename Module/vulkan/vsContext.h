@@ -35,6 +35,7 @@ struct VISSWEEPCORE_EXPORT DeviceInfo
   uint32_t MaxPushConstantsSize = 0;
   uint32_t SubgroupSize = 0;
   bool FloatAtomicAdd = false;
+  bool WriteWithoutFormat = false; // shaderStorageImageWriteWithoutFormat
   bool Timestamps = false;
   double TimestampPeriodNs = 0.0;
 

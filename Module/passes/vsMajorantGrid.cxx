@@ -1,0 +1,103 @@
+#include "vsMajorantGrid.h"
+#include "vsBatch.h"
+#include "vsBuffer.h"
+#include "vsContext.h"
+#include "vsDeviceVolume.h"
+#include "vsError.h"
+#include "vsImage.h"
+#include "vsPipeline.h"
+#include "vsTransferFunctionTable.h"
+
+#include "vs_spirv_majorant_minmax.h"
+
+#include <algorithm>
+
+namespace vs
+{
+MajorantGrid::MajorantGrid(std::shared_ptr<Context> context, uint32_t brickSize)
+  : Context_(std::move(context))
+  , BrickSize_(brickSize)
+{
+  if (brickSize < 1)
+  {
+    throw InputError("the majorant brick size must be at least 1 voxel");
+  }
+}
+
+MajorantGrid::~MajorantGrid() = default;
+
+void MajorantGrid::UpdateRanges(const DeviceVolume& volume)
+{
+  auto dims = volume.Dims();
+  std::array<uint32_t, 3> bricks;
+  for (int i = 0; i < 3; ++i)
+  {
+    // A brick covers voxels [bB, (b+1)B]; the last voxel index is dims-1.
+    bricks[i] = std::max<uint32_t>(1, (dims[i] - 1 + this->BrickSize_ - 1) / this->BrickSize_);
+  }
+  const uint64_t count = uint64_t(bricks[0]) * bricks[1] * bricks[2];
+  ComputePipeline pipeline(this->Context_, VS_SPIRV(vs_spirv_majorant_minmax),
+    { BindingType::StorageImage, BindingType::StorageBuffer }, 32, "majorant ranges");
+  Buffer ranges(this->Context_, count * 2 * sizeof(float), "brick ranges");
+  DescriptorSet set(pipeline);
+  set.Bind(0, volume.Image()).Bind(1, ranges);
+  struct
+  {
+    uint32_t bricks[4];
+    int32_t dims[4];
+  } push = { { bricks[0], bricks[1], bricks[2], this->BrickSize_ },
+    { int32_t(dims[0]), int32_t(dims[1]), int32_t(dims[2]), 0 } };
+  Batch batch(this->Context_);
+  batch.BeginTimer("ranges");
+  batch.Dispatch(pipeline, set, &push, sizeof(push), (bricks[0] + 3) / 4, (bricks[1] + 3) / 4, (bricks[2] + 3) / 4);
+  batch.EndTimer();
+  batch.Submit();
+  this->LastSeconds_ = batch.Seconds("ranges");
+  this->Ranges_.resize(count * 2);
+  ranges.Download(this->Ranges_.data(), count * 2 * sizeof(float));
+  if (bricks != this->Bricks_ || !this->Image_)
+  {
+    this->Image_.reset();
+    this->Image_ = std::make_unique<Image3D>(this->Context_, bricks[0], bricks[1], bricks[2],
+      vk::Format::eR32Sfloat, "majorant grid");
+    this->Bricks_ = bricks;
+  }
+  this->Majorants_.clear();
+  ++this->RangeUpdates_;
+}
+
+void MajorantGrid::UpdateMajorants(const TransferFunctionSamples& tf)
+{
+  if (!this->Image_)
+  {
+    throw InputError("majorants need the brick ranges first (UpdateRanges)");
+  }
+  const size_t count = this->Ranges_.size() / 2;
+  this->Majorants_.assign(count, 0.0f);
+  for (size_t i = 0; i < count; ++i)
+  {
+    float lo = this->Ranges_[2 * i], hi = this->Ranges_[2 * i + 1];
+    if (lo <= hi)
+    {
+      this->Majorants_[i] = tf.MaxExtinction(lo, hi);
+    }
+  }
+  this->Image_->Upload(this->Majorants_.data(), count * sizeof(float));
+  ++this->MajorantUpdates_;
+}
+
+double MajorantGrid::EmptyFraction() const
+{
+  if (this->Majorants_.empty())
+  {
+    return 0.0;
+  }
+  size_t empty = std::count(this->Majorants_.begin(), this->Majorants_.end(), 0.0f);
+  return double(empty) / double(this->Majorants_.size());
+}
+
+float MajorantGrid::MaxMajorant() const
+{
+  return this->Majorants_.empty() ? 0.0f : *std::max_element(this->Majorants_.begin(), this->Majorants_.end());
+}
+}

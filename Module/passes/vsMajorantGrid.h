@@ -1,0 +1,61 @@
+// vsMajorantGrid.h — the maximum extinction per brick of B^3 voxels (default 8),
+// conservative over the trilinear footprint of the brick. Delta tracking and
+// ratio tracking use it as their majorant; sweeps and the brute force skip
+// samples in bricks whose majorant is 0 (empty space).
+//
+// Two steps so each change does only the work it needs: the scalar range of every
+// brick (a device pass over the voxels, on a data change) and the majorants from
+// those ranges and the transfer function (host, on a transfer-function change).
+#ifndef vsMajorantGrid_h
+#define vsMajorantGrid_h
+
+#include "vissweepCoreModule.h"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace vs
+{
+class Context;
+class DeviceVolume;
+class Image3D;
+struct TransferFunctionSamples;
+
+class VISSWEEPCORE_EXPORT MajorantGrid
+{
+public:
+  MajorantGrid(std::shared_ptr<Context> context, uint32_t brickSize = 8);
+  ~MajorantGrid();
+
+  /** Recomputes the scalar range of every brick (after the volume's data changed). */
+  void UpdateRanges(const DeviceVolume& volume);
+  /** Recomputes the majorants from the ranges (after the transfer function changed) and uploads them. */
+  void UpdateMajorants(const TransferFunctionSamples& tf);
+
+  const Image3D& Image() const { return *this->Image_; }
+  std::array<uint32_t, 3> Bricks() const { return this->Bricks_; }
+  uint32_t BrickSize() const { return this->BrickSize_; }
+  const std::vector<float>& Majorants() const { return this->Majorants_; }
+  /** Fraction of bricks with majorant 0. */
+  double EmptyFraction() const;
+  float MaxMajorant() const;
+  /** Device seconds of the last range pass. */
+  double LastSeconds() const { return this->LastSeconds_; }
+  /** Times each step ran (to test that work is skipped). */
+  uint64_t RangeUpdates() const { return this->RangeUpdates_; }
+  uint64_t MajorantUpdates() const { return this->MajorantUpdates_; }
+
+private:
+  std::shared_ptr<Context> Context_;
+  uint32_t BrickSize_;
+  std::array<uint32_t, 3> Bricks_{ { 0, 0, 0 } };
+  std::vector<float> Ranges_; // min, max per brick
+  std::vector<float> Majorants_;
+  std::unique_ptr<Image3D> Image_;
+  double LastSeconds_ = 0.0;
+  uint64_t RangeUpdates_ = 0, MajorantUpdates_ = 0;
+};
+}
+
+#endif

@@ -1,0 +1,76 @@
+// vsSweepPlan.h — the geometry of the visibility sweeps (seed 000, Sec. 6, 8),
+// computed on the host: for each direction of the D x D equal-area octahedral
+// map, the sweep axis (Eq. 6), the start plane on the side the light comes
+// from (Eq. 7), the sweeping kernel covering the box projected along the light,
+// and the sweep-space filter size (Sec. 8, Eq. 9).
+#ifndef vsSweepPlan_h
+#define vsSweepPlan_h
+
+#include "vissweepCoreModule.h"
+#include "shared/sweep_params.h"
+#include "vsVolumeGeometry.h"
+
+#include <array>
+#include <vector>
+
+namespace vs
+{
+struct VISSWEEPCORE_EXPORT VisibilityGridParameters
+{
+  enum class Method
+  {
+    Sweep,
+    BruteForce
+  };
+  enum class Format
+  {
+    Unorm8,
+    Unorm16,
+    Float32
+  };
+  /** Directions per side of the octahedral map: 4, 8 or 16 (D x D directions). */
+  uint32_t DirectionResolution = 8;
+  /** Voxels per visibility cell along each axis (>= 1). */
+  double VoxelsPerCell = 4.0;
+  /** Kernel rays along the longer side of the projected box; 0 = the largest voxel count. */
+  uint32_t KernelResolution = 0;
+  /** Ray-marching step in world units; 0 = one voxel (the smallest spacing). */
+  double StepSize = 0.0;
+  bool Filtering = true;
+  /** beta / alpha of Eq. 9: widening angle as a fraction of a direction cell's opening angle. */
+  double FilterAngleFraction = 0.5;
+  Method Algorithm = Method::Sweep;
+  /** Brute force: rays per cell and direction (random points of the cell, random directions of the texel). */
+  uint32_t BruteForceSamples = 1;
+  Format StorageFormat = Format::Unorm8;
+  /** Kernel rays stop marching below this transmittance (below the 8-bit resolution). */
+  float StopTransmittance = 1e-6f;
+
+  /** Throws InputError naming the parameter when one is out of range. */
+  void Validate() const;
+};
+
+struct VISSWEEPCORE_EXPORT SweepPlan
+{
+  std::array<uint32_t, 3> Cells{ { 1, 1, 1 } };
+  glm::vec3 CellSize{ 1.0f }; // index units
+  uint32_t Side = 8;
+  std::vector<shared::VsSweepDirection> Directions; // all D x D, kernel offsets per batch
+  /** Directions grouped so that one batch's kernels fit in one storage buffer. */
+  std::vector<std::vector<uint32_t>> Batches;
+  uint64_t LargestBatchKernelFloats = 0;
+
+  /** Opening angle (radians) of the cone with the solid angle of one of D x D equal-area cells. */
+  static double CellOpeningAngle(uint32_t side);
+  /** Cells per axis for a geometry and a cell size in voxels. */
+  static std::array<uint32_t, 3> CellCount(const VolumeGeometry& g, double voxelsPerCell);
+  /** World light direction of direction index n (the centre of texel (n % D, n / D)). */
+  static glm::vec3 Direction(uint32_t n, uint32_t side);
+
+  /** Plans the sweeps of `directions` (all when empty); maxBatchFloats bounds a batch's kernel. */
+  static SweepPlan Make(const VolumeGeometry& g, const VisibilityGridParameters& p,
+    uint64_t maxBatchFloats, const std::vector<uint32_t>& directions = {}, uint32_t maxBatchDirections = 8);
+};
+}
+
+#endif

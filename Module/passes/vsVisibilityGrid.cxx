@@ -1,0 +1,346 @@
+#include "vsVisibilityGrid.h"
+#include "vsBatch.h"
+#include "vsBuffer.h"
+#include "vsContext.h"
+#include "vsDeviceVolume.h"
+#include "vsError.h"
+#include "vsImage.h"
+#include "vsMajorantGrid.h"
+#include "vsPipeline.h"
+#include "vsTransferFunctionTable.h"
+
+#include "vs_spirv_sweep_filter.h"
+#include "vs_spirv_sweep_march.h"
+#include "vs_spirv_sweep_project.h"
+#include "vs_spirv_visibility_bruteforce.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace vs
+{
+namespace
+{
+vk::Format ToVk(VisibilityGridParameters::Format f)
+{
+  switch (f)
+  {
+    case VisibilityGridParameters::Format::Unorm8:
+      return vk::Format::eR8Unorm;
+    case VisibilityGridParameters::Format::Unorm16:
+      return vk::Format::eR16Unorm;
+    default:
+      return vk::Format::eR32Sfloat;
+  }
+}
+
+bool SameLayout(const VisibilityGridParameters& a, const VisibilityGridParameters& b)
+{
+  return a.DirectionResolution == b.DirectionResolution && a.VoxelsPerCell == b.VoxelsPerCell &&
+    a.KernelResolution == b.KernelResolution && a.StepSize == b.StepSize && a.Filtering == b.Filtering &&
+    a.FilterAngleFraction == b.FilterAngleFraction && a.Algorithm == b.Algorithm &&
+    a.BruteForceSamples == b.BruteForceSamples && a.StorageFormat == b.StorageFormat &&
+    a.StopTransmittance == b.StopTransmittance;
+}
+
+bool SameGeometry(const VolumeGeometry& a, const VolumeGeometry& b)
+{
+  return a.Dims == b.Dims && a.WorldToIndex == b.WorldToIndex;
+}
+
+struct SlicePush
+{
+  uint32_t slice;
+  uint32_t firstDirection;
+};
+struct FilterPush
+{
+  uint32_t slice;
+  uint32_t firstDirection;
+  uint32_t pass;
+};
+}
+
+VisibilityGrid::VisibilityGrid(std::shared_ptr<Context> context)
+  : Context_(std::move(context))
+{
+}
+
+VisibilityGrid::~VisibilityGrid() = default;
+
+uint64_t VisibilityGrid::Bytes() const
+{
+  return this->Image_ ? this->Image_->Bytes() : 0;
+}
+
+void VisibilityGrid::CheckFits(Context& context, const VolumeGeometry& geometry, const VisibilityGridParameters& p)
+{
+  p.Validate();
+  auto cells = SweepPlan::CellCount(geometry, p.VoxelsPerCell);
+  const uint32_t d = p.DirectionResolution;
+  Image3D::CheckLimits(context, cells[0] * d, cells[1] * d, cells[2], ToVk(p.StorageFormat), "visibility grid");
+  if (!context.Info().WriteWithoutFormat)
+  {
+    throw DeviceLimitError("the device '" + context.Info().Name +
+      "' cannot write storage images without a format (shaderStorageImageWriteWithoutFormat), "
+      "which the visibility sweeps need");
+  }
+}
+
+void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionTable& tf,
+  const MajorantGrid& majorants, const VolumeGeometry& geometry, const std::vector<glm::dvec4>& worldClipPlanes,
+  const VisibilityGridParameters& parameters, const std::vector<uint32_t>& requested, const Progress& progress)
+{
+  parameters.Validate();
+  if (worldClipPlanes.size() > 6)
+  {
+    throw InputError("at most 6 clipping planes are supported, got " + std::to_string(worldClipPlanes.size()));
+  }
+  const auto& info = this->Context_->Info();
+  const uint64_t maxFloats = std::min<uint64_t>(info.MaxStorageBufferRange, 64ull << 20) / sizeof(float);
+
+  std::vector<uint32_t> directions = requested;
+  const bool reuse = this->Image_ && SameLayout(parameters, this->Parameters_) &&
+    SameGeometry(geometry, this->Geometry_);
+  if (!reuse)
+  {
+    directions.clear(); // a new layout needs every direction
+    CheckFits(*this->Context_, geometry, parameters);
+    this->Image_.reset();
+    this->Plan_ = SweepPlan::Make(geometry, parameters, maxFloats);
+    const auto& c = this->Plan_.Cells;
+    const uint32_t d = parameters.DirectionResolution;
+    this->Image_ = std::make_unique<Image3D>(this->Context_, c[0] * d, c[1] * d, c[2], ToVk(parameters.StorageFormat),
+      "visibility grid");
+    this->Parameters_ = parameters;
+    this->Geometry_ = geometry;
+  }
+  if (directions.empty())
+  {
+    for (uint32_t n = 0; n < parameters.DirectionResolution * parameters.DirectionResolution; ++n)
+    {
+      directions.push_back(n);
+    }
+  }
+  this->Plan_ = SweepPlan::Make(geometry, parameters, maxFloats, directions);
+
+  // What every dispatch shares.
+  shared::VsSweepGlobals g{};
+  g.worldToIndex = glm::mat4(geometry.WorldToIndex);
+  g.boxMin = glm::vec4(geometry.BoxMin, 0.0f);
+  g.boxMax = glm::vec4(geometry.BoxMax, 0.0f);
+  g.cellSize = glm::vec4(this->Plan_.CellSize, 0.0f);
+  g.grid = glm::uvec4(this->Plan_.Cells[0], this->Plan_.Cells[1], this->Plan_.Cells[2], this->Plan_.Side);
+  auto dims = volume.Dims();
+  g.dims = glm::vec4(float(dims[0]), float(dims[1]), float(dims[2]), 0.0f);
+  auto t = tf.Params();
+  g.tf = glm::vec4(t[0], t[1], t[2], t[3]);
+  const double step = parameters.StepSize > 0.0 ? parameters.StepSize : geometry.MinSpacing;
+  g.march = glm::vec4(float(step), float(majorants.BrickSize()), parameters.StopTransmittance, 0.0f);
+  auto bricks = majorants.Bricks();
+  g.bricks = glm::uvec4(bricks[0], bricks[1], bricks[2], uint32_t(worldClipPlanes.size()));
+  // World planes to index space: n.(M x + o) + w = (M^T n).x + (n.o + w).
+  const glm::dmat3 m(geometry.IndexToWorld);
+  const glm::dvec3 o(geometry.IndexToWorld[3]);
+  for (size_t i = 0; i < worldClipPlanes.size(); ++i)
+  {
+    glm::dvec3 n(worldClipPlanes[i]);
+    g.clipPlanes[i] = glm::vec4(glm::vec3(glm::transpose(m) * n), float(glm::dot(n, o) + worldClipPlanes[i].w));
+  }
+  g.bruteForce = glm::uvec4(parameters.BruteForceSamples, 1u, 0u, 0u);
+  Buffer globals(this->Context_, sizeof(g), "sweep globals");
+  globals.Upload(&g, sizeof(g));
+
+  this->LastSeconds_ = 0.0;
+  this->LastDispatches_ = 0;
+  if (parameters.Algorithm == VisibilityGridParameters::Method::Sweep)
+  {
+    this->RunSweeps(volume, tf, majorants, globals, progress);
+  }
+  else
+  {
+    this->RunBruteForce(volume, tf, majorants, globals, directions, progress);
+  }
+  this->DirectionsComputed_ += directions.size();
+}
+
+void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctionTable& tf,
+  const MajorantGrid& majorants, Buffer& globals, const Progress& progress)
+{
+  if (!this->March_)
+  {
+    using B = BindingType;
+    this->March_ = std::make_unique<ComputePipeline>(this->Context_, VS_SPIRV(vs_spirv_sweep_march),
+      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
+        B::StorageBuffer },
+      sizeof(SlicePush), "sweep march");
+    this->Filter_ = std::make_unique<ComputePipeline>(this->Context_, VS_SPIRV(vs_spirv_sweep_filter),
+      std::vector<B>{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer },
+      sizeof(FilterPush), "sweep filter");
+    this->Project_ = std::make_unique<ComputePipeline>(this->Context_, VS_SPIRV(vs_spirv_sweep_project),
+      std::vector<B>{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageImage },
+      sizeof(SlicePush), "sweep project");
+  }
+  const SweepPlan& plan = this->Plan_;
+  // Directions in batch order, so a batch is a contiguous range of the buffer.
+  std::vector<shared::VsSweepDirection> ordered;
+  std::vector<uint32_t> firsts;
+  for (const auto& batch : plan.Batches)
+  {
+    firsts.push_back(uint32_t(ordered.size()));
+    for (uint32_t n : batch)
+    {
+      ordered.push_back(plan.Directions[n]);
+    }
+  }
+  Buffer dirs(this->Context_, ordered.size() * sizeof(shared::VsSweepDirection), "sweep directions");
+  dirs.Upload(ordered.data(), ordered.size() * sizeof(shared::VsSweepDirection));
+  const uint64_t kernelBytes = std::max<uint64_t>(plan.LargestBatchKernelFloats, 1) * sizeof(float);
+  Buffer kernel(this->Context_, kernelBytes, "sweeping kernel");
+  std::unique_ptr<Buffer> prefix, filtered;
+  const bool filtering = this->Parameters_.Filtering;
+  if (filtering)
+  {
+    prefix = std::make_unique<Buffer>(this->Context_, kernelBytes, "kernel prefix sums");
+    filtered = std::make_unique<Buffer>(this->Context_, kernelBytes, "filtered kernel");
+  }
+
+  DescriptorSet march(*this->March_);
+  march.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, majorants.Image()).Bind(3, globals).Bind(4, dirs).Bind(5, kernel);
+  DescriptorSet project(*this->Project_);
+  project.Bind(0, globals).Bind(1, dirs).Bind(2, filtering ? *filtered : kernel).Bind(3, *this->Image_);
+  std::unique_ptr<DescriptorSet> filter;
+  if (filtering)
+  {
+    filter = std::make_unique<DescriptorSet>(*this->Filter_);
+    filter->Bind(0, globals).Bind(1, dirs).Bind(2, kernel).Bind(3, *prefix).Bind(4, *filtered);
+  }
+
+  size_t done = 0;
+  for (size_t bi = 0; bi < plan.Batches.size(); ++bi)
+  {
+    const auto& batch = plan.Batches[bi];
+    uint32_t slices = 0, ra = 0, rb = 0, ga = 0, gb = 0;
+    for (uint32_t n : batch)
+    {
+      const auto& s = plan.Directions[n];
+      slices = std::max(slices, plan.Cells[s.axes.x]);
+      ra = std::max(ra, s.kernel.x);
+      rb = std::max(rb, s.kernel.y);
+      ga = std::max(ga, plan.Cells[s.axes.y]);
+      gb = std::max(gb, plan.Cells[s.axes.z]);
+    }
+    const uint32_t nd = uint32_t(batch.size());
+    Batch cmd(this->Context_);
+    cmd.BeginTimer("sweep");
+    for (uint32_t slice = 0; slice < slices; ++slice)
+    {
+      SlicePush sp{ slice, firsts[bi] };
+      cmd.Dispatch(*this->March_, march, &sp, sizeof(sp), (ra + 7) / 8, (rb + 7) / 8, nd);
+      cmd.Barrier();
+      if (filtering)
+      {
+        FilterPush rows{ slice, firsts[bi], 0u };
+        cmd.Dispatch(*this->Filter_, *filter, &rows, sizeof(rows), (rb + 63) / 64, nd, 1);
+        cmd.Barrier();
+        FilterPush cols{ slice, firsts[bi], 1u };
+        cmd.Dispatch(*this->Filter_, *filter, &cols, sizeof(cols), (ra + 63) / 64, nd, 1);
+        cmd.Barrier();
+      }
+      cmd.Dispatch(*this->Project_, project, &sp, sizeof(sp), (ga + 7) / 8, (gb + 7) / 8, nd);
+      cmd.Barrier();
+    }
+    cmd.EndTimer();
+    cmd.Submit();
+    this->LastSeconds_ += cmd.Seconds("sweep");
+    this->LastDispatches_ += cmd.DispatchCount();
+    done += batch.size();
+    if (progress)
+    {
+      progress(double(bi + 1) / double(plan.Batches.size()));
+    }
+  }
+}
+
+void VisibilityGrid::RunBruteForce(const DeviceVolume& volume, const TransferFunctionTable& tf,
+  const MajorantGrid& majorants, Buffer& globals, const std::vector<uint32_t>& directions, const Progress& progress)
+{
+  if (!this->Brute_)
+  {
+    using B = BindingType;
+    this->Brute_ = std::make_unique<ComputePipeline>(this->Context_, VS_SPIRV(vs_spirv_visibility_bruteforce),
+      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageImage },
+      sizeof(SlicePush), "visibility brute force");
+  }
+  DescriptorSet set(*this->Brute_);
+  set.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, majorants.Image()).Bind(3, globals).Bind(4, *this->Image_);
+  const auto& c = this->Plan_.Cells;
+  const uint32_t cells = c[0] * c[1] * c[2];
+  const uint32_t maxGroups = this->Context_->Info().MaxComputeWorkGroupCount[0];
+  size_t done = 0;
+  for (uint32_t n : directions)
+  {
+    Batch cmd(this->Context_);
+    cmd.BeginTimer("bruteforce");
+    for (uint32_t first = 0; first < cells; first += maxGroups * 64)
+    {
+      SlicePush push{ first, n };
+      uint32_t groups = std::min(maxGroups, (cells - first + 63) / 64);
+      cmd.Dispatch(*this->Brute_, set, &push, sizeof(push), groups, 1, 1);
+    }
+    cmd.EndTimer();
+    cmd.Submit();
+    this->LastSeconds_ += cmd.Seconds("bruteforce");
+    this->LastDispatches_ += cmd.DispatchCount();
+    ++done;
+    if (progress)
+    {
+      progress(double(done) / double(directions.size()));
+    }
+  }
+}
+
+std::vector<float> VisibilityGrid::Download() const
+{
+  if (!this->Image_)
+  {
+    return {};
+  }
+  const auto& c = this->Plan_.Cells;
+  const uint32_t d = this->Plan_.Side;
+  const uint64_t texels = uint64_t(c[0]) * d * c[1] * d * c[2];
+  std::vector<float> raw(texels);
+  const uint32_t bytes = Image3D::TexelBytes(this->Image_->Format());
+  std::vector<uint8_t> data(texels * bytes);
+  this->Image_->Download(data.data(), data.size());
+  for (uint64_t i = 0; i < texels; ++i)
+  {
+    if (bytes == 1)
+    {
+      raw[i] = data[i] / 255.0f;
+    }
+    else if (bytes == 2)
+    {
+      uint16_t v;
+      std::memcpy(&v, &data[2 * i], 2);
+      raw[i] = v / 65535.0f;
+    }
+    else
+    {
+      std::memcpy(&raw[i], &data[4 * i], 4);
+    }
+  }
+  // Image (x * D + u, y * D + v, z) -> cell-major, direction-minor.
+  std::vector<float> out(texels);
+  const uint64_t w = uint64_t(c[0]) * d, h = uint64_t(c[1]) * d;
+  for (uint32_t z = 0; z < c[2]; ++z)
+    for (uint32_t y = 0; y < c[1]; ++y)
+      for (uint32_t x = 0; x < c[0]; ++x)
+        for (uint32_t n = 0; n < d * d; ++n)
+        {
+          uint64_t tx = uint64_t(x) * d + n % d, ty = uint64_t(y) * d + n / d;
+          out[((uint64_t(z) * c[1] + y) * c[0] + x) * d * d + n] = raw[(z * h + ty) * w + tx];
+        }
+  return out;
+}
+}

@@ -1,0 +1,86 @@
+// vsVisibilityGrid.h — the 5D visibility grid of seed 000 (Sec. 5, 6, 8) on the
+// device: V(cell, direction) = transmittance from the cell towards the light
+// direction, for D x D equal-area directions and cells of VoxelsPerCell^3 voxels.
+// Computed by plane sweeps (default) or by brute-force ray marching (the reference).
+//
+// Storage: one 3D image of (cells.x * D) x (cells.y * D) x cells.z texels, cell c's
+// directions as a D x D tile (direction n at (n % D, n / D)), so the renderer reads
+// a cell's octahedral map as one tile. Format r8 (default), r16 or r32f.
+#ifndef vsVisibilityGrid_h
+#define vsVisibilityGrid_h
+
+#include "vissweepCoreModule.h"
+#include "vsSweepPlan.h"
+#include "vsVolumeGeometry.h"
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace vs
+{
+class Buffer;
+class ComputePipeline;
+class Context;
+class DeviceVolume;
+class Image3D;
+class MajorantGrid;
+class TransferFunctionTable;
+
+class VISSWEEPCORE_EXPORT VisibilityGrid
+{
+public:
+  /** Called with the fraction done (0..1) after each batch of directions. */
+  using Progress = std::function<void(double)>;
+
+  explicit VisibilityGrid(std::shared_ptr<Context> context);
+  ~VisibilityGrid();
+
+  /** Computes the grid, or only `directions` of it (lazy updates) when the grid already has
+   *  this geometry and these parameters. worldClipPlanes: (n, w) keeping dot(n, x) + w >= 0;
+   *  voxels on the removed side do not occlude. Throws InputError / DeviceLimitError. */
+  void Compute(const DeviceVolume& volume, const TransferFunctionTable& tf, const MajorantGrid& majorants,
+    const VolumeGeometry& geometry, const std::vector<glm::dvec4>& worldClipPlanes,
+    const VisibilityGridParameters& parameters, const std::vector<uint32_t>& directions = {},
+    const Progress& progress = Progress());
+
+  /** Throws DeviceLimitError when the grid for this geometry and these parameters cannot exist. */
+  static void CheckFits(Context& context, const VolumeGeometry& geometry, const VisibilityGridParameters& p);
+
+  bool Valid() const { return this->Image_ != nullptr; }
+  const Image3D& Image() const { return *this->Image_; }
+  std::array<uint32_t, 3> Cells() const { return this->Plan_.Cells; }
+  glm::vec3 CellSize() const { return this->Plan_.CellSize; }
+  uint32_t Side() const { return this->Plan_.Side; }
+  const VisibilityGridParameters& Parameters() const { return this->Parameters_; }
+  uint64_t Bytes() const;
+
+  /** All values as floats: index (cell z, y, x, direction n) -> ((z * cy + y) * cx + x) * D*D + n. */
+  std::vector<float> Download() const;
+
+  /** Device seconds of the last Compute, and its dispatch count. */
+  double LastSeconds() const { return this->LastSeconds_; }
+  uint32_t LastDispatches() const { return this->LastDispatches_; }
+  /** Directions swept (or brute-forced) since this object was made. */
+  uint64_t DirectionsComputed() const { return this->DirectionsComputed_; }
+
+private:
+  void RunSweeps(const DeviceVolume& volume, const TransferFunctionTable& tf, const MajorantGrid& majorants,
+    Buffer& globals, const Progress& progress);
+  void RunBruteForce(const DeviceVolume& volume, const TransferFunctionTable& tf,
+    const MajorantGrid& majorants, Buffer& globals, const std::vector<uint32_t>& directions,
+    const Progress& progress);
+
+  std::shared_ptr<Context> Context_;
+  VisibilityGridParameters Parameters_;
+  SweepPlan Plan_;
+  VolumeGeometry Geometry_;
+  std::unique_ptr<Image3D> Image_;
+  std::unique_ptr<ComputePipeline> March_, Filter_, Project_, Brute_;
+  double LastSeconds_ = 0.0;
+  uint32_t LastDispatches_ = 0;
+  uint64_t DirectionsComputed_ = 0;
+};
+}
+
+#endif

@@ -1,0 +1,52 @@
+/*
+ * sweep_params.h — the parameters of the visibility sweeps (seed 000, Sec. 6, 8),
+ * shared by the compute shaders and the host (std430; vec4/uvec4/mat4 members only).
+ *
+ * Index space: continuous voxel coordinates (voxel centres at integers). Visibility
+ * V(x, w) is the transmittance from x towards the light direction w (to the box exit).
+ * Light travels along -w; in index space its direction per world unit is
+ * d = worldToIndex_linear(-w), so parameter t along a kernel ray is a world distance.
+ */
+#ifndef VS_SWEEP_PARAMS_H
+#define VS_SWEEP_PARAMS_H
+#include "vs_prelude.h"
+
+VS_NAMESPACE_BEGIN
+
+/* One sweep direction (one texel of the D x D equal-area octahedral map). */
+struct VsSweepDirection
+{
+  vec4 travel;      /* xyz: d, light travel per world unit in index space */
+  vec4 planeOrigin; /* xyz: index-space position of kernel ray (0,0) on the start plane */
+  vec4 kernelStep;  /* x: index units between kernel rays along axis a, y: along axis b */
+  vec4 filterSize;  /* x, y: base box width (kernel texels) along a, b; z, w: widening per world unit along a, b */
+  uvec4 axes;       /* x: sweep axis k, y: in-plane axis a, z: in-plane axis b, w: kernel offset (floats) */
+  uvec4 kernel;     /* x: rays along a, y: rays along b, z: 1 if slices go from high to low k, w: direction index */
+};
+
+/* What every sweep and brute-force dispatch shares. */
+struct VsSweepGlobals
+{
+  mat4 worldToIndex; /* world -> index (the brute force turns world directions into index space) */
+  vec4 boxMin;      /* index-space box of the volume (xyz) */
+  vec4 boxMax;
+  vec4 cellSize;    /* index units per visibility cell (xyz) */
+  uvec4 grid;       /* visibility cells per axis (xyz), w: directions per side D */
+  vec4 dims;        /* voxels per axis */
+  vec4 tf;          /* transfer-function LUT parameters (see frame_params.h) */
+  vec4 march;       /* x: step (world units), y: brick size (voxels), z: stop when V below this, w: unused */
+  uvec4 bricks;     /* majorant bricks per axis (xyz), w: clip planes in use */
+  vec4 clipPlanes[6];  /* index space: kept where dot(n, x) + w >= 0 */
+  uvec4 bruteForce; /* x: spatial x angular supersamples per side (1 = centre only), y: seed */
+};
+
+/* The sweep plane's coordinate of cell slice `slice` (in processing order) along axis k. */
+VS_FUNC float vs_slice_coordinate(VsSweepGlobals g, uint k, uint slice, bool descending, uint cells)
+{
+  uint c = descending ? cells - 1u - slice : slice;
+  return g.boxMin[k] + (float(c) + 0.5f) * g.cellSize[k];
+}
+
+VS_NAMESPACE_END
+
+#endif

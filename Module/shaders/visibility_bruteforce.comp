@@ -1,0 +1,53 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+/*
+ * Brute-force visibility: for every cell and direction, ray-march from the cell
+ * towards the light to the box exit. With G.bruteForce.x = N > 1, the average of N
+ * rays from random points of the cell towards random directions of the direction's
+ * octahedral texel — what a visibility cell means. The reference for the sweeps.
+ */
+#include "sweep_params.h"
+#include "octahedral.h"
+#include "rng.h"
+
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+layout(binding = 0, r32f) uniform readonly image3D uVolume;
+layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
+layout(binding = 2, r32f) uniform readonly image3D uMajorant;
+layout(std430, binding = 3) readonly buffer Globals { VsSweepGlobals G; };
+layout(binding = 4) uniform writeonly image3D uVisibility;
+layout(push_constant) uniform Push { uint firstCell; uint firstDirection; } pc;
+
+#include "sweep_access.glsl"
+
+void main()
+{
+  uint cellIndex = pc.firstCell + gl_GlobalInvocationID.x;
+  uint dir = pc.firstDirection + gl_GlobalInvocationID.y;
+  uint cellCount = G.grid.x * G.grid.y * G.grid.z;
+  uint side = G.grid.w;
+  if (cellIndex >= cellCount || dir >= side * side)
+    return;
+  uvec3 cell = uvec3(cellIndex % G.grid.x, (cellIndex / G.grid.x) % G.grid.y, cellIndex / (G.grid.x * G.grid.y));
+  uvec2 texel = uvec2(dir % side, dir / side);
+  uint N = max(G.bruteForce.x, 1u);
+  VsRng rng = vs_rng_init(uvec2(cellIndex, dir), 0u, G.bruteForce.y);
+  float sum = 0.0;
+  for (uint s = 0u; s < N; ++s)
+  {
+    vec3 jitter = vec3(0.5);
+    vec2 uvJitter = vec2(0.5);
+    if (N > 1u)
+    {
+      jitter = vec3(vs_rng_vec2(rng), vs_rng_float(rng));
+      uvJitter = vs_rng_vec2(rng);
+    }
+    vec3 p = G.boxMin.xyz + (vec3(cell) + jitter) * G.cellSize.xyz;
+    vec3 w = vs_octa_to_dir((vec2(texel) + uvJitter) / float(side));
+    vec3 d = (G.worldToIndex * vec4(w, 0.0)).xyz; /* towards the light, per world unit */
+    vec2 box = vs_intersect_box(p, d, G.boxMin.xyz, G.boxMax.xyz);
+    sum += exp(-vs_optical_depth(p, d, max(box.x, 0.0), box.y));
+  }
+  ivec3 t = ivec3(int(cell.x * side + texel.x), int(cell.y * side + texel.y), int(cell.z));
+  imageStore(uVisibility, t, vec4(sum / float(N)));
+}

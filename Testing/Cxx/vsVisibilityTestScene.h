@@ -1,0 +1,55 @@
+// Small volumes with known visibility for the visibility-grid tests.
+#ifndef vsVisibilityTestScene_h
+#define vsVisibilityTestScene_h
+
+#include "vsContext.h"
+#include "vsDeviceVolume.h"
+#include "vsMajorantGrid.h"
+#include "vsTransferFunctionTable.h"
+#include "vsVisibilityGrid.h"
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace vstest
+{
+/** A volume, a linear transfer function (sigma_t = scalar * sigmaPerUnit, white albedo) and its majorants. */
+struct VisibilityScene
+{
+  std::shared_ptr<vs::Context> Context = vs::Context::Default();
+  vs::VolumeGeometry Geometry;
+  std::unique_ptr<vs::DeviceVolume> Volume;
+  std::unique_ptr<vs::TransferFunctionTable> TF;
+  std::unique_ptr<vs::MajorantGrid> Majorants;
+
+  VisibilityScene(std::array<uint32_t, 3> dims, const std::function<float(int, int, int)>& scalar,
+    double sigmaAtOne, vs::VolumeGeometry geometry = vs::VolumeGeometry())
+  {
+    this->Geometry = geometry.Dims[0] ? geometry : vs::VolumeGeometry::Axis(dims);
+    std::vector<float> v(size_t(dims[0]) * dims[1] * dims[2]);
+    for (uint32_t z = 0; z < dims[2]; ++z)
+      for (uint32_t y = 0; y < dims[1]; ++y)
+        for (uint32_t x = 0; x < dims[0]; ++x)
+          v[(size_t(z) * dims[1] + y) * dims[0] + x] = scalar(int(x), int(y), int(z));
+    this->Volume = std::make_unique<vs::DeviceVolume>(this->Context, v.data(), dims);
+    // opacity(s) chosen so that sigma_t(s) = s * sigmaAtOne exactly at the LUT entries (s in [0, 1]).
+    auto samples = vs::TransferFunctionSamples::FromFunctions(0.0f, 1.0f, 1025,
+      [&](double s) { return 1.0 - std::exp(-s * sigmaAtOne); },
+      [](double, double c[3]) { c[0] = c[1] = c[2] = 1.0; }, 1.0, 1.0);
+    this->TF = std::make_unique<vs::TransferFunctionTable>(this->Context, samples);
+    this->Majorants = std::make_unique<vs::MajorantGrid>(this->Context);
+    this->Majorants->UpdateRanges(*this->Volume);
+    this->Majorants->UpdateMajorants(samples);
+  }
+
+  std::vector<float> Grid(vs::VisibilityGrid& grid, const vs::VisibilityGridParameters& p,
+    const std::vector<glm::dvec4>& planes = {})
+  {
+    grid.Compute(*this->Volume, *this->TF, *this->Majorants, this->Geometry, planes, p);
+    return grid.Download();
+  }
+};
+}
+
+#endif
