@@ -78,6 +78,9 @@ public:
   /* Source pixels (or texels) with a NaN, infinite or negative channel; those
    * channels were replaced by 0. The VTK classes warn once with this count. */
   std::int64_t BadTexels = 0;
+  /* Of those, the ones with a NaN or infinite channel (the rest had a negative one,
+   * typically tiny negatives from gamut clipping in real HDRIs). */
+  std::int64_t NonFiniteTexels = 0;
 
   bool Empty() const { return this->Size <= 0; }
   /* Number of pyramid levels, K + 1. */
@@ -113,9 +116,11 @@ public:
 
   /* Converts a lat-long image by integrating it over each octahedral texel: each
    * texel is supersampled on a stratified grid of sub-samples (vs_octa_to_dir,
-   * bilinear lookup with wrap in u and clamp in v) fine enough that the
-   * sub-sample spacing is below the source pixel size. size = 0 chooses
-   * DefaultSize(width). Bad source channels are zeroed and counted in BadTexels.
+   * bilinear lookup with wrap in u and clamp in v) with a spacing of at most 0.7
+   * source pixel, and texels whose samples vary by more than 1e-4 of the map's
+   * power (a sun) again 4x finer per axis. A size below the source's resolution
+   * is converted at DefaultSize(width) (at most 2048) and box-filtered down, which
+   * is exact on the nested equal-area texels. size = 0 chooses DefaultSize(width). Bad source channels are zeroed and counted in BadTexels.
    * threads = 0 uses the hardware concurrency; the result does not depend on it.
    * Throws std::invalid_argument for an empty image or a size that is not a power of two. */
   static EnvironmentMap FromLatLong(const LatLongImage& image, int size = 0,

@@ -1,0 +1,439 @@
+#include "vtkEnvironmentMapReader.h"
+
+#include "vsEnvironmentMap.h"
+
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkHDRReader.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfRgbaFile.h>
+#include <ImfArray.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+vtkStandardNewMacro(vtkEnvironmentMapReader);
+
+namespace
+{
+enum class FileKind
+{
+  Missing,
+  Directory,
+  Unknown,
+  OpenEXR,
+  RadianceHDR
+};
+
+FileKind Identify(const char* fileName)
+{
+  std::error_code ec;
+  if (std::filesystem::is_directory(fileName, ec))
+  {
+    return FileKind::Directory;
+  }
+  std::ifstream in(fileName, std::ios::binary);
+  if (!in)
+  {
+    return FileKind::Missing;
+  }
+  unsigned char magic[4] = { 0, 0, 0, 0 };
+  in.read(reinterpret_cast<char*>(magic), 4);
+  if (in.gcount() == 4 && magic[0] == 0x76 && magic[1] == 0x2f && magic[2] == 0x31 && magic[3] == 0x01)
+  {
+    return FileKind::OpenEXR;
+  }
+  if (in.gcount() >= 2 && magic[0] == '#' && magic[1] == '?')
+  {
+    return FileKind::RadianceHDR;
+  }
+  return FileKind::Unknown;
+}
+
+std::string Quote(const char* fileName)
+{
+  return std::string("\"") + (fileName ? fileName : "") + "\"";
+}
+
+/* Captures the error and warning messages of a VTK object (and keeps them off the
+ * output window), so they can be reported once, naming the file. */
+class MessageCatcher : public vtkCommand
+{
+public:
+  static MessageCatcher* New() { return new MessageCatcher; }
+  void Execute(vtkObject*, unsigned long event, void* data) override
+  {
+    const char* text = static_cast<const char*>(data);
+    std::string msg = text ? text : "";
+    // VTK's messages start with "ERROR: In file, line N\nvtkClass (0x...): ": keep the reason.
+    const std::size_t colon = msg.find("): ");
+    if (colon != std::string::npos)
+    {
+      msg = msg.substr(colon + 3);
+    }
+    while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' '))
+    {
+      msg.pop_back();
+    }
+    if (event == vtkCommand::ErrorEvent)
+    {
+      this->Errors += (this->Errors.empty() ? "" : "; ") + msg;
+    }
+  }
+  std::string Errors;
+};
+
+/* Reads the dimensions of a Radiance file through vtkHDRReader (information only when !full). */
+bool ReadHDR(const char* fileName, vs::LatLongImage* image, int& width, int& height, std::string& error)
+{
+  vtkNew<vtkHDRReader> reader;
+  vtkNew<MessageCatcher> catcher;
+  reader->AddObserver(vtkCommand::ErrorEvent, catcher);
+  reader->AddObserver(vtkCommand::WarningEvent, catcher);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, catcher);
+  reader->SetFileName(fileName);
+  if (!reader->CanReadFile(fileName))
+  {
+    error = Quote(fileName) + " is not a Radiance HDR file vtkHDRReader can read (bad header)";
+    return false;
+  }
+  reader->UpdateInformation();
+  int ext[6];
+  reader->GetDataExtent(ext);
+  width = ext[1] - ext[0] + 1;
+  height = ext[3] - ext[2] + 1;
+  if (!catcher->Errors.empty() || width <= 0 || height <= 0)
+  {
+    error = "cannot read the Radiance HDR file " + Quote(fileName) + ": " +
+      (catcher->Errors.empty() ? std::string("no image size in the header") : catcher->Errors);
+    return false;
+  }
+  if (!image)
+  {
+    return true;
+  }
+  reader->Update();
+  vtkImageData* out = reader->GetOutput();
+  vtkDataArray* scalars = out ? out->GetPointData()->GetScalars() : nullptr;
+  int dims[3] = { 0, 0, 0 };
+  if (out)
+  {
+    out->GetDimensions(dims);
+  }
+  if (!catcher->Errors.empty() || !scalars || dims[0] != width || dims[1] != height ||
+    scalars->GetNumberOfComponents() < 3 || scalars->GetNumberOfTuples() != vtkIdType(width) * height)
+  {
+    error = "cannot read the Radiance HDR file " + Quote(fileName) + ": " +
+      (catcher->Errors.empty() ? std::string("the pixel data is missing or truncated") : catcher->Errors);
+    return false;
+  }
+  image->Width = width;
+  image->Height = height;
+  image->RGB.resize(3 * std::size_t(width) * height);
+  // VTK images are bottom-up (point row 0 is the bottom of the picture); the
+  // lat-long's row 0 is the top (+Z).
+  for (int j = 0; j < height; ++j)
+  {
+    const vtkIdType srcRow = vtkIdType(height - 1 - j) * width;
+    float* dst = image->RGB.data() + 3 * std::size_t(j) * width;
+    for (int i = 0; i < width; ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        dst[3 * i + c] = float(scalars->GetComponent(srcRow + i, c));
+      }
+    }
+  }
+  return true;
+}
+
+/* The channel called `name`, or failing that the first one called "<layer>.name". */
+std::string FindChannel(const Imf::ChannelList& channels, const char* name)
+{
+  if (channels.findChannel(name))
+  {
+    return name;
+  }
+  const std::string suffix = std::string(".") + name;
+  for (auto it = channels.begin(); it != channels.end(); ++it)
+  {
+    const std::string n = it.name();
+    if (n.size() > suffix.size() && n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0)
+    {
+      return n;
+    }
+  }
+  return std::string();
+}
+
+/* Reads an OpenEXR lat-long (dimensions only when !image). Pixels outside the data
+ * window but inside the display window are black. */
+bool ReadEXR(const char* fileName, vs::LatLongImage* image, int& width, int& height, std::string& error,
+  const std::function<void(double)>& progress)
+{
+  try
+  {
+    Imf::InputFile file(fileName);
+    const Imf::Header& header = file.header();
+    const Imath::Box2i display = header.displayWindow();
+    const Imath::Box2i data = header.dataWindow();
+    width = display.max.x - display.min.x + 1;
+    height = display.max.y - display.min.y + 1;
+    if (width <= 0 || height <= 0)
+    {
+      error = "the OpenEXR file " + Quote(fileName) + " has an empty display window";
+      return false;
+    }
+    const Imf::ChannelList& channels = header.channels();
+    const std::string rgb[3] = { FindChannel(channels, "R"), FindChannel(channels, "G"),
+      FindChannel(channels, "B") };
+    const bool hasRGB = !rgb[0].empty() || !rgb[1].empty() || !rgb[2].empty();
+    const std::string y = FindChannel(channels, "Y");
+    const bool hasChroma = !FindChannel(channels, "RY").empty() || !FindChannel(channels, "BY").empty();
+    if (!hasRGB && y.empty())
+    {
+      std::string names;
+      for (auto it = channels.begin(); it != channels.end(); ++it)
+      {
+        names += (names.empty() ? "" : ", ") + std::string(it.name());
+      }
+      error = "the OpenEXR file " + Quote(fileName) + " has no R, G, B or Y channel (channels: " +
+        (names.empty() ? std::string("none") : names) + ")";
+      return false;
+    }
+    if (!image)
+    {
+      return true;
+    }
+
+    const int dw = data.max.x - data.min.x + 1;
+    const int dh = data.max.y - data.min.y + 1;
+    // The data window, 3 floats per pixel.
+    std::vector<float> buffer(3 * std::size_t(std::max(dw, 0)) * std::max(dh, 0), 0.0f);
+    if (dw > 0 && dh > 0)
+    {
+      const std::ptrdiff_t stride = 3 * std::ptrdiff_t(sizeof(float));
+      const std::ptrdiff_t rowStride = stride * dw;
+      char* base = reinterpret_cast<char*>(buffer.data()) - data.min.x * stride - data.min.y * rowStride;
+      auto readRows = [&](auto&& readBlock) {
+        const int block = 64;
+        for (int r = data.min.y; r <= data.max.y; r += block)
+        {
+          readBlock(r, std::min(data.max.y, r + block - 1));
+          if (progress)
+          {
+            progress(double(r - data.min.y + 1) / dh);
+          }
+        }
+      };
+      if (hasRGB || !hasChroma)
+      {
+        Imf::FrameBuffer fb;
+        if (hasRGB)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            // A missing colour channel reads as 0 (the fill value).
+            fb.insert(rgb[c].empty() ? (std::string("__missing_") + "RGB"[c]) : rgb[c],
+              Imf::Slice(Imf::FLOAT, base + c * sizeof(float), stride, rowStride, 1, 1, 0.0));
+          }
+        }
+        else
+        {
+          fb.insert(y, Imf::Slice(Imf::FLOAT, base, stride, rowStride, 1, 1, 0.0));
+        }
+        file.setFrameBuffer(fb);
+        readRows([&](int r0, int r1) { file.readPixels(r0, r1); });
+        if (!hasRGB)
+        {
+          for (std::size_t i = 0; i < buffer.size(); i += 3)
+          {
+            buffer[i + 1] = buffer[i + 2] = buffer[i];
+          }
+        }
+      }
+      else
+      {
+        // Luminance/chroma (Y, RY, BY): let RgbaInputFile convert to RGB (half).
+        Imf::RgbaInputFile rgbaFile(fileName);
+        Imf::Array2D<Imf::Rgba> pixels(dh, dw);
+        rgbaFile.setFrameBuffer(&pixels[0][0] - data.min.x - std::ptrdiff_t(data.min.y) * dw, 1, dw);
+        readRows([&](int r0, int r1) { rgbaFile.readPixels(r0, r1); });
+        for (int j = 0; j < dh; ++j)
+        {
+          for (int i = 0; i < dw; ++i)
+          {
+            float* p = &buffer[3 * (std::size_t(j) * dw + i)];
+            p[0] = float(pixels[j][i].r);
+            p[1] = float(pixels[j][i].g);
+            p[2] = float(pixels[j][i].b);
+          }
+        }
+      }
+    }
+    image->Width = width;
+    image->Height = height;
+    image->RGB.assign(3 * std::size_t(width) * height, 0.0f);
+    // Copy the part of the data window inside the display window (EXR rows go
+    // top to bottom, as the lat-long's).
+    const int x0 = std::max(data.min.x, display.min.x), x1 = std::min(data.max.x, display.max.x);
+    const int y0 = std::max(data.min.y, display.min.y), y1 = std::min(data.max.y, display.max.y);
+    for (int yy = y0; yy <= y1; ++yy)
+    {
+      for (int xx = x0; xx <= x1; ++xx)
+      {
+        const float* s = &buffer[3 * (std::size_t(yy - data.min.y) * dw + (xx - data.min.x))];
+        float* d = &image->RGB[3 * (std::size_t(yy - display.min.y) * width + (xx - display.min.x))];
+        d[0] = s[0];
+        d[1] = s[1];
+        d[2] = s[2];
+      }
+    }
+    return true;
+  }
+  catch (const std::exception& e)
+  {
+    error = "cannot read the OpenEXR file " + Quote(fileName) + ": " + e.what();
+    while (!error.empty() && std::isspace(static_cast<unsigned char>(error.back())))
+    {
+      error.pop_back();
+    }
+  }
+  catch (...)
+  {
+    error = "cannot read the OpenEXR file " + Quote(fileName) + ": unknown error";
+  }
+  return false;
+}
+
+bool ReadAny(const char* fileName, vs::LatLongImage* image, int& width, int& height, std::string& error,
+  const std::function<void(double)>& progress)
+{
+  width = height = 0;
+  if (!fileName || !*fileName)
+  {
+    error = "no file name given";
+    return false;
+  }
+  switch (Identify(fileName))
+  {
+    case FileKind::Missing:
+      error = "cannot open " + Quote(fileName) + ": " + std::strerror(errno);
+      return false;
+    case FileKind::Directory:
+      error = Quote(fileName) + " is a directory, not an environment map file";
+      return false;
+    case FileKind::Unknown:
+      error = Quote(fileName) +
+        " is neither an OpenEXR nor a Radiance HDR file (its first bytes are not an EXR magic number or \"#?\")";
+      return false;
+    case FileKind::OpenEXR:
+      return ReadEXR(fileName, image, width, height, error, progress);
+    case FileKind::RadianceHDR:
+      return ReadHDR(fileName, image, width, height, error);
+  }
+  return false;
+}
+} // namespace
+
+vtkEnvironmentMapReader::vtkEnvironmentMapReader() = default;
+
+vtkEnvironmentMapReader::~vtkEnvironmentMapReader()
+{
+  this->SetFileName(nullptr);
+}
+
+int vtkEnvironmentMapReader::CanReadFile(const char* fileName)
+{
+  const FileKind kind = fileName ? Identify(fileName) : FileKind::Missing;
+  return kind == FileKind::OpenEXR || kind == FileKind::RadianceHDR ? 1 : 0;
+}
+
+bool vtkEnvironmentMapReader::ReadLatLong(const char* fileName, vs::LatLongImage& image, std::string& error)
+{
+  int w, h;
+  return ReadAny(fileName, &image, w, h, error, nullptr);
+}
+
+std::string vtkEnvironmentMapReader::DescribeSource()
+{
+  return Quote(this->FileName);
+}
+
+int vtkEnvironmentMapReader::ComputeOutputSize()
+{
+  std::string error;
+  int w, h;
+  if (!ReadAny(this->FileName, nullptr, w, h, error, nullptr))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  if (this->OctahedralSize != 0 && !vs::EnvironmentMap::IsPowerOfTwo(this->OctahedralSize))
+  {
+    vtkErrorMacro(<< "OctahedralSize must be 0 (automatic) or a power of two, not " << this->OctahedralSize);
+    return 0;
+  }
+  return this->OctahedralSize > 0 ? this->OctahedralSize : vs::EnvironmentMap::DefaultSize(w);
+}
+
+std::shared_ptr<vs::EnvironmentMap> vtkEnvironmentMapReader::ComputeMap()
+{
+  this->LatLongWidth = this->LatLongHeight = 0;
+  vs::LatLongImage image;
+  std::string error;
+  int w, h;
+  // Reading is the first quarter of the progress, the conversion the rest.
+  auto readProgress = [this](double f) { this->UpdateProgress(0.25 * f); };
+  if (!ReadAny(this->FileName, &image, w, h, error, readProgress))
+  {
+    vtkErrorMacro(<< error);
+    return nullptr;
+  }
+  this->LatLongWidth = image.Width;
+  this->LatLongHeight = image.Height;
+  if (std::abs(image.Width - 2 * image.Height) > std::max(1, image.Width / 100))
+  {
+    vtkWarningMacro(<< Quote(this->FileName) << " is " << image.Width << " x " << image.Height
+                    << ", not 2:1; reading it as an equirectangular map anyway.");
+  }
+  try
+  {
+    auto convertProgress = [this](double f) { this->UpdateProgress(0.25 + 0.75 * f); };
+    return std::make_shared<vs::EnvironmentMap>(vs::EnvironmentMap::FromLatLong(image,
+      this->OctahedralSize, this->RotationDegrees, this->Intensity, convertProgress,
+      vtkSMPTools::GetEstimatedNumberOfThreads()));
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< Quote(this->FileName) << ": " << e.what());
+    return nullptr;
+  }
+}
+
+void vtkEnvironmentMapReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "OctahedralSize: " << this->OctahedralSize << "\n";
+  os << indent << "RotationDegrees: " << this->RotationDegrees << "\n";
+  os << indent << "LatLongWidth: " << this->LatLongWidth << "\n";
+  os << indent << "LatLongHeight: " << this->LatLongHeight << "\n";
+}
