@@ -6,6 +6,7 @@
 #include "vsError.h"
 #include "vsTransferFunctionTable.h"
 #include "vsVolumeInput.h"
+#include "vsVolumeScene.h"
 #include "vsWindowCompositor.h"
 
 #include "vtkCamera.h"
@@ -26,13 +27,8 @@ vtkStandardNewMacro(vtkVisibilitySweepVolumeMapper);
 struct vtkVisibilitySweepVolumeMapper::Internals
 {
   std::shared_ptr<vs::Context> Context;
-  std::unique_ptr<vs::DeviceVolume> Volume;
-  std::unique_ptr<vs::TransferFunctionTable> TF;
+  std::unique_ptr<vs::VolumeScene> Scene;
   std::unique_ptr<vs::EmissionAbsorptionPass> EA;
-  vtkMTimeType VolumeTime = 0;   // input + scalars MTime at the last upload
-  vtkDataArray* VolumeScalars = nullptr;
-  vtkMTimeType TFTime = 0;       // property MTime at the last table build
-  double TFDensityScale = -1.0;
   std::string LastError;
   uint32_t Frame = 0;
 };
@@ -91,37 +87,22 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     {
       I.Context = vs::Context::Default();
     }
-    vtkVolumeProperty* property = vol->GetProperty();
-    vs::VolumeGeometry geometry = vs::ComputeGeometry(input, vol->GetMatrix());
-
-    // Upload only when the data changed.
-    vtkMTimeType dataTime = std::max(input->GetMTime(), scalars->GetMTime());
-    bool newVolume = !I.Volume || I.VolumeScalars != scalars || dataTime > I.VolumeTime ||
-      I.Volume->Dims() != geometry.Dims;
-    if (newVolume)
+    if (!I.Scene)
     {
-      I.Volume.reset();
-      vs::DeviceVolume::CheckFits(*I.Context, geometry.Dims);
-      std::vector<float> values = vs::ScalarsAsFloat(scalars);
-      I.Volume = std::make_unique<vs::DeviceVolume>(I.Context, values.data(), geometry.Dims);
-      I.VolumeTime = dataTime;
-      I.VolumeScalars = scalars;
+      I.Scene = std::make_unique<vs::VolumeScene>(I.Context);
+    }
+    vs::VolumeScene::Changes changes =
+      I.Scene->Update(input, scalars, vol->GetProperty(), vol->GetMatrix(), this->DensityScale);
+    if (changes.Data)
+    {
       ++this->VolumeUploadCount;
-      I.TF.reset();
-      if (I.Volume->NonFiniteCount())
+      if (I.Scene->Volume().NonFiniteCount())
       {
-        vtkWarningMacro(<< I.Volume->NonFiniteCount()
+        vtkWarningMacro(<< I.Scene->Volume().NonFiniteCount()
                         << " voxels are NaN or infinite; they are rendered as empty space");
       }
     }
-    if (!I.TF || property->GetMTime() > I.TFTime || I.TFDensityScale != this->DensityScale)
-    {
-      auto range = I.Volume->Range();
-      I.TF = std::make_unique<vs::TransferFunctionTable>(I.Context,
-        vs::SampleTransferFunction(property, range[0], range[1], this->DensityScale));
-      I.TFTime = property->GetMTime();
-      I.TFDensityScale = this->DensityScale;
-    }
+    const vs::VolumeGeometry& geometry = I.Scene->Geometry();
 
     vs::Viewport vp = vs::WindowCompositor::GetViewport(ren);
     if (vp.Width <= 0 || vp.Height <= 0)
@@ -147,7 +128,7 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     p.boxMin = glm::vec4(geometry.BoxMin, 0.0f);
     p.boxMax = glm::vec4(geometry.BoxMax, 0.0f);
     p.dims = glm::vec4(geometry.Dims[0], geometry.Dims[1], geometry.Dims[2], 0.0f);
-    auto tf = I.TF->Params();
+    auto tf = I.Scene->TF().Params();
     p.tf = glm::vec4(tf[0], tf[1], tf[2], tf[3]);
     p.viewport = glm::uvec4(vp.Width, vp.Height, I.Frame++, static_cast<uint32_t>(this->Seed));
     double step = this->SampleDistance > 0.0 ? this->SampleDistance : 0.5 * geometry.MinSpacing;
@@ -174,7 +155,7 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     {
       I.EA = std::make_unique<vs::EmissionAbsorptionPass>(I.Context);
     }
-    std::vector<float> rgba = I.EA->Render(*I.Volume, *I.TF, p, depth);
+    std::vector<float> rgba = I.EA->Render(I.Scene->Volume(), I.Scene->TF(), p, depth);
     this->LastDeviceSeconds = I.EA->LastSeconds();
     vs::WindowCompositor::Draw(ren, vp, rgba);
     I.LastError.clear();

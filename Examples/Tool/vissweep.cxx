@@ -1,4 +1,5 @@
 // vissweep — the command-line tool: `vissweep info` prints the Vulkan device and its limits.
+#include "vsBenchSweeps.h"
 #include "vsContext.h"
 #include "vsError.h"
 
@@ -13,7 +14,26 @@ int main(int argc, char** argv)
   bool all = false;
   auto* info = app.add_subcommand("info", "print the Vulkan device VisSweep uses and the limits that matter");
   info->add_flag("--all", all, "list every device the loader reports");
-  CLI11_PARSE(app, argc, argv);
+  auto* bench = app.add_subcommand("bench", "benchmarks that print what they measure");
+  bench->require_subcommand(1);
+  vstool::AddBenchSweeps(*bench);
+  try
+  {
+    app.parse(argc, argv);
+  }
+  catch (const CLI::RuntimeError& e)
+  {
+    return e.get_exit_code(); // a subcommand ran and returned its status
+  }
+  catch (const CLI::ParseError& e)
+  {
+    return app.exit(e);
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "vissweep: " << e.what() << std::endl;
+    return 2;
+  }
 
   try
   {

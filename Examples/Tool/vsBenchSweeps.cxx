@@ -1,0 +1,219 @@
+#include "vsBenchSweeps.h"
+#include "vsToolVolume.h"
+
+#include "vsContext.h"
+#include "vsDeviceVolume.h"
+#include "vsImage.h"
+#include "vsMajorantGrid.h"
+#include "vsVisibilityGrid.h"
+#include "vsVolumeScene.h"
+
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
+#include "vtkVolumeProperty.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+namespace vstool
+{
+namespace
+{
+struct Options
+{
+  std::string Volume = DefaultBrainPath();
+  std::string Json;
+  int Repeats = 3;
+  int ReferenceSamples = 16;
+  bool Quick = false;
+};
+
+struct Diff
+{
+  double Mean = 0.0, Max = 0.0;
+};
+
+Diff Compare(const std::vector<float>& a, const std::vector<float>& b)
+{
+  Diff d;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    double e = std::abs(double(a[i]) - double(b[i]));
+    d.Mean += e;
+    d.Max = std::max(d.Max, e);
+  }
+  d.Mean /= double(std::max<size_t>(a.size(), 1));
+  return d;
+}
+
+double Median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+int Run(const Options& o)
+{
+  auto ctx = vs::Context::Default();
+  auto image = ReadVolume(o.Volume);
+  auto property = SkinProperty();
+  vs::VolumeScene scene(ctx);
+  scene.Update(image, image->GetPointData()->GetScalars(), property, nullptr, 1.0);
+  const auto dims = scene.Geometry().Dims;
+  const uint64_t volumeBytes = uint64_t(dims[0]) * dims[1] * dims[2] *
+    image->GetPointData()->GetScalars()->GetDataTypeSize();
+  std::printf("volume %s: %u x %u x %u voxels, %.1f MB as stored (%s); device '%s'\n", o.Volume.c_str(), dims[0],
+    dims[1], dims[2], volumeBytes / 1e6, image->GetPointData()->GetScalars()->GetDataTypeAsString(),
+    ctx->Info().Name.c_str());
+  std::printf("empty bricks (8^3) under the skin TF: %.1f %%\n", 100.0 * scene.Majorants().EmptyFraction());
+
+  auto compute = [&](vs::VisibilityGrid& grid, const vs::VisibilityGridParameters& p, int repeats) {
+    std::vector<double> seconds;
+    for (int r = 0; r < repeats; ++r)
+    {
+      grid.Compute(scene.Volume(), scene.TF(), scene.Majorants(), scene.Geometry(), {}, p);
+      seconds.push_back(grid.LastSeconds());
+    }
+    return Median(seconds);
+  };
+
+  const std::vector<double> cellSizes = o.Quick ? std::vector<double>{ 8 } : std::vector<double>{ 2, 4, 8, 16 };
+  const std::vector<uint32_t> kernels = o.Quick ? std::vector<uint32_t>{ 64 } : std::vector<uint32_t>{ 32, 64, 128, 256, 0 };
+  nlohmann::json report;
+  report["device"] = ctx->Info().Name;
+  report["volume"] = o.Volume;
+  report["dims"] = { dims[0], dims[1], dims[2] };
+  report["volume_bytes"] = volumeBytes;
+
+  std::printf("\n%-22s", "seconds (median of device timings)");
+  for (double c : cellSizes)
+  {
+    std::printf(" | %2.0f^3 vox/cell", c);
+  }
+  std::printf("\n");
+  std::map<double, std::vector<float>> references;
+  std::map<double, double> bruteSeconds;
+  std::map<double, uint64_t> gridBytes;
+  std::map<double, std::array<uint32_t, 3>> gridCells;
+  // Brute force: one ray per cell and direction (the cost row), and the supersampled reference.
+  for (double c : cellSizes)
+  {
+    vs::VisibilityGridParameters p;
+    p.VoxelsPerCell = c;
+    p.Algorithm = vs::VisibilityGridParameters::Method::BruteForce;
+    p.StorageFormat = vs::VisibilityGridParameters::Format::Float32;
+    vs::VisibilityGrid grid(ctx);
+    bruteSeconds[c] = compute(grid, p, 1);
+    p.BruteForceSamples = uint32_t(o.ReferenceSamples);
+    compute(grid, p, 1);
+    references[c] = grid.Download();
+    gridCells[c] = grid.Cells();
+  }
+  for (uint32_t k : kernels)
+  {
+    std::string label = k ? "sweep, " + std::to_string(k) + "^2 kernel" : "sweep, auto kernel";
+    std::printf("%-22s", label.c_str());
+    for (double c : cellSizes)
+    {
+      vs::VisibilityGridParameters p;
+      p.VoxelsPerCell = c;
+      p.KernelResolution = k;
+      vs::VisibilityGrid grid(ctx);
+      double s = compute(grid, p, o.Repeats);
+      Diff d = Compare(grid.Download(), references[c]);
+      gridBytes[c] = grid.Bytes();
+      std::printf(" | %5.2f s (%.3f/%.2f)", s, d.Mean, d.Max);
+      report["table"][label][std::to_string(int(c))] = { { "seconds", s }, { "mean_abs_error", d.Mean },
+        { "max_abs_error", d.Max } };
+    }
+    std::printf("\n");
+  }
+  std::printf("%-22s", "brute force, 1 ray");
+  for (double c : cellSizes)
+  {
+    std::printf(" | %5.2f s              ", bruteSeconds[c]);
+    report["table"]["brute force"][std::to_string(int(c))] = { { "seconds", bruteSeconds[c] } };
+  }
+  std::printf("\n%-22s", "grid memory (8-bit)");
+  for (double c : cellSizes)
+  {
+    std::printf(" | %8.2f MB          ", gridBytes[c] / 1e6);
+  }
+  std::printf("\n(errors: mean/max |V - V_ref| against the brute force with %d rays per cell and direction)\n",
+    o.ReferenceSamples);
+
+  // The defaults: 4^3 voxels per cell, auto kernel, filtering on, 8-bit storage.
+  const double defaultCell = o.Quick ? 8 : 4;
+  vs::VisibilityGridParameters p;
+  p.VoxelsPerCell = defaultCell;
+  vs::VisibilityGrid sweep(ctx);
+  double sweepSeconds = compute(sweep, p, o.Repeats);
+  Diff d = Compare(sweep.Download(), references[defaultCell]);
+  report["defaults"] = { { "voxels_per_cell", defaultCell }, { "sweep_seconds", sweepSeconds },
+    { "bruteforce_seconds", bruteSeconds[defaultCell] }, { "speedup", bruteSeconds[defaultCell] / sweepSeconds },
+    { "mean_abs_error", d.Mean }, { "max_abs_error", d.Max }, { "grid_bytes", sweep.Bytes() },
+    { "volume_bytes", volumeBytes }, { "reference_samples", o.ReferenceSamples } };
+  std::printf("\ndefaults (%.0f^3 voxels per cell, auto kernel, filtering on, 8-bit): sweep %.3f s, brute force %.3f s, "
+              "speedup %.1fx, mean |dV| %.4f, max |dV| %.3f, grid %.2f MB vs volume %.2f MB\n",
+    defaultCell, sweepSeconds, bruteSeconds[defaultCell], bruteSeconds[defaultCell] / sweepSeconds, d.Mean, d.Max,
+    sweep.Bytes() / 1e6, volumeBytes / 1e6);
+
+  // Storage formats: memory and the error quantisation adds (against float storage, same sweep).
+  std::printf("\nstorage format at the defaults: bytes and error added by quantisation\n");
+  vs::VisibilityGridParameters pf = p;
+  pf.StorageFormat = vs::VisibilityGridParameters::Format::Float32;
+  vs::VisibilityGrid fgrid(ctx);
+  compute(fgrid, pf, 1);
+  auto floats = fgrid.Download();
+  for (auto f : { vs::VisibilityGridParameters::Format::Unorm8, vs::VisibilityGridParameters::Format::Unorm16,
+         vs::VisibilityGridParameters::Format::Float32 })
+  {
+    vs::VisibilityGridParameters q = p;
+    q.StorageFormat = f;
+    vs::VisibilityGrid g(ctx);
+    double s = compute(g, q, 1);
+    Diff e = Compare(g.Download(), floats);
+    const char* name = f == vs::VisibilityGridParameters::Format::Unorm8 ? "r8"
+      : f == vs::VisibilityGridParameters::Format::Unorm16            ? "r16"
+                                                                       : "r32f";
+    std::printf("  %-5s %8.2f MB  mean %.2e  max %.2e  (%.3f s)\n", name, g.Bytes() / 1e6, e.Mean, e.Max, s);
+    report["formats"][name] = { { "bytes", g.Bytes() }, { "mean_abs_error", e.Mean }, { "max_abs_error", e.Max } };
+  }
+  // Filtering on vs off against the reference.
+  vs::VisibilityGridParameters nf = p;
+  nf.Filtering = false;
+  vs::VisibilityGrid unfiltered(ctx);
+  double su = compute(unfiltered, nf, 1);
+  Diff du = Compare(unfiltered.Download(), references[defaultCell]);
+  std::printf("\nfiltering off: %.3f s, mean |dV| %.4f, max %.3f (on: %.4f, %.3f)\n", su, du.Mean, du.Max, d.Mean, d.Max);
+  report["unfiltered"] = { { "seconds", su }, { "mean_abs_error", du.Mean }, { "max_abs_error", du.Max } };
+
+  if (!o.Json.empty())
+  {
+    std::ofstream(o.Json) << report.dump(2) << "\n";
+    std::printf("wrote %s\n", o.Json.c_str());
+  }
+  return 0;
+}
+}
+
+void AddBenchSweeps(CLI::App& bench)
+{
+  auto o = std::make_shared<Options>();
+  auto* cmd = bench.add_subcommand("sweeps", "visibility sweeps against brute force (the paper's Table 1)");
+  cmd->add_option("--volume", o->Volume, "volume file (default: Colin27 from mricron-data)");
+  cmd->add_option("--json", o->Json, "write the figures as JSON");
+  cmd->add_option("--repeats", o->Repeats, "timed runs per configuration (median)")->check(CLI::PositiveNumber);
+  cmd->add_option("--reference-samples", o->ReferenceSamples, "rays per cell and direction of the reference")
+    ->check(CLI::PositiveNumber);
+  cmd->add_flag("--quick", o->Quick, "one configuration only (seconds)");
+  cmd->callback([o]() { throw CLI::RuntimeError(Run(*o)); });
+}
+}

@@ -1,0 +1,98 @@
+#include "vsVolumeScene.h"
+
+#include "vsDeviceVolume.h"
+#include "vsError.h"
+#include "vsMajorantGrid.h"
+#include "vsTransferFunctionTable.h"
+#include "vsVolumeInput.h"
+
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkVolumeProperty.h"
+
+namespace vs
+{
+VolumeScene::VolumeScene(std::shared_ptr<Context> context)
+  : Context_(std::move(context))
+{
+}
+
+VolumeScene::~VolumeScene() = default;
+
+VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scalars,
+  vtkVolumeProperty* property, vtkMatrix4x4* volumeMatrix, double densityScale)
+{
+  std::string problem = CheckImage(image, scalars);
+  if (problem.empty())
+  {
+    problem = CheckProperty(property);
+  }
+  if (!problem.empty())
+  {
+    throw InputError(problem);
+  }
+  Changes changes;
+  VolumeGeometry geometry = ComputeGeometry(image, volumeMatrix);
+  changes.Geometry = !this->Volume_ || geometry.Dims != this->Geometry_.Dims ||
+    geometry.IndexToWorld != this->Geometry_.IndexToWorld;
+  this->Geometry_ = geometry;
+
+  const vtkMTimeType dataTime = std::max(image->GetMTime(), scalars->GetMTime());
+  if (!this->Volume_ || scalars != this->Scalars_ || dataTime > this->DataTime_ ||
+    this->Volume_->Dims() != geometry.Dims)
+  {
+    this->Volume_.reset();
+    this->TF_.reset();
+    DeviceVolume::CheckFits(*this->Context_, geometry.Dims);
+    std::vector<float> values = ScalarsAsFloat(scalars);
+    this->Volume_ = std::make_unique<DeviceVolume>(this->Context_, values.data(), geometry.Dims);
+    if (!this->Majorants_)
+    {
+      this->Majorants_ = std::make_unique<MajorantGrid>(this->Context_);
+    }
+    this->Majorants_->UpdateRanges(*this->Volume_);
+    this->DataTime_ = dataTime;
+    this->Scalars_ = scalars;
+    ++this->Uploads_;
+    changes.Data = true;
+  }
+
+  if (!this->TF_ || changes.Data || property->GetMTime() > this->PropertyTime_ ||
+    densityScale != this->DensityScale_)
+  {
+    auto range = this->Volume_->Range();
+    TransferFunctionSamples samples = SampleTransferFunction(property, range[0], range[1], densityScale);
+    // Compare with the previous table: only the columns that changed need work downstream.
+    const bool comparable = this->TF_ && !changes.Data &&
+      this->TF_->Samples().ScalarMin == samples.ScalarMin && this->TF_->Samples().ScalarMax == samples.ScalarMax &&
+      this->TF_->Samples().Entries.size() == samples.Entries.size();
+    bool sameExtinction = comparable, sameAlbedo = comparable;
+    for (size_t i = 0; comparable && i < samples.Entries.size(); ++i)
+    {
+      const bool equal = this->TF_->Samples().Entries[i] == samples.Entries[i];
+      if (i % 4 == 3)
+      {
+        sameExtinction = sameExtinction && equal;
+      }
+      else
+      {
+        sameAlbedo = sameAlbedo && equal;
+      }
+    }
+    changes.Extinction = !sameExtinction;
+    changes.Albedo = !sameAlbedo;
+    if (changes.Extinction || changes.Albedo)
+    {
+      this->TF_ = std::make_unique<TransferFunctionTable>(this->Context_, samples);
+      ++this->TableBuilds_;
+    }
+    if (changes.Extinction)
+    {
+      this->Majorants_->UpdateMajorants(samples);
+    }
+    this->PropertyTime_ = property->GetMTime();
+    this->DensityScale_ = densityScale;
+  }
+  return changes;
+}
+}

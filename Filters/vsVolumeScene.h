@@ -1,0 +1,80 @@
+// vsVolumeScene.h — a VTK volume (image data + vtkVolumeProperty + prop matrix)
+// turned into the core's device state: the scalar volume, the transfer-function
+// table and the majorant grid. Update() redoes only what a change needs:
+//   data changed            -> upload, brick ranges, majorants
+//   extinction changed      -> table, majorants (opacity, unit distance, density scale)
+//   only albedo changed     -> table
+// and reports which of these happened, so callers (the mapper, the visibility grid
+// filter, the tool) know whether visibility must be recomputed.
+// Internal to VisSweep (hidden from the wrappers).
+#ifndef vsVolumeScene_h
+#define vsVolumeScene_h
+
+#if !defined(__VTK_WRAP__)
+#include "vissweepFiltersModule.h"
+#include "vsVolumeGeometry.h"
+
+#include "vtkType.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkDataArray;
+class vtkImageData;
+class vtkMatrix4x4;
+class vtkVolumeProperty;
+
+namespace vs
+{
+class Context;
+class DeviceVolume;
+class MajorantGrid;
+class TransferFunctionTable;
+
+class VISSWEEPFILTERS_EXPORT VolumeScene
+{
+public:
+  struct Changes
+  {
+    bool Data = false;       // the voxels were uploaded again
+    bool Extinction = false; // sigma_t changed somewhere (data, opacity, unit distance, density scale)
+    bool Albedo = false;     // the colour transfer function changed
+    bool Geometry = false;   // the index <-> world transform changed (prop matrix, spacing, origin)
+  };
+
+  explicit VolumeScene(std::shared_ptr<Context> context);
+  ~VolumeScene();
+
+  /** Brings the device state up to date. Throws vs::Error (or InputError with the reason
+   *  for bad input: no scalars, several components, empty extent, empty transfer function). */
+  Changes Update(vtkImageData* image, vtkDataArray* scalars, vtkVolumeProperty* property,
+    vtkMatrix4x4* volumeMatrix, double densityScale);
+
+  bool Ready() const { return this->Volume_ != nullptr; }
+  const std::shared_ptr<Context>& GetContext() const { return this->Context_; }
+  const DeviceVolume& Volume() const { return *this->Volume_; }
+  const TransferFunctionTable& TF() const { return *this->TF_; }
+  const MajorantGrid& Majorants() const { return *this->Majorants_; }
+  const VolumeGeometry& Geometry() const { return this->Geometry_; }
+
+  /** Counters of the work done (for tests of the skip rules). */
+  int Uploads() const { return this->Uploads_; }
+  int TableBuilds() const { return this->TableBuilds_; }
+
+private:
+  std::shared_ptr<Context> Context_;
+  std::unique_ptr<DeviceVolume> Volume_;
+  std::unique_ptr<TransferFunctionTable> TF_;
+  std::unique_ptr<MajorantGrid> Majorants_;
+  VolumeGeometry Geometry_;
+  vtkMTimeType DataTime_ = 0;
+  vtkDataArray* Scalars_ = nullptr;
+  vtkMTimeType PropertyTime_ = 0;
+  double DensityScale_ = -1.0;
+  int Uploads_ = 0, TableBuilds_ = 0;
+};
+}
+#endif
+
+#endif
