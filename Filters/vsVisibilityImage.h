@@ -1,0 +1,25 @@
+// vsVisibilityImage.h — the device visibility grid as a vtkImageData for VTK
+// pipelines: points at the cell centres (aligned with the volume's origin,
+// spacing and direction matrix), a D*D-component array "Visibility", the scalar
+// "MeanVisibility" (1 - ambient occlusion), and field data with the parameters and
+// the direction of each component. Shared by vtkVisibilityGridFilter and the mapper.
+#ifndef vsVisibilityImage_h
+#define vsVisibilityImage_h
+
+#if !defined(__VTK_WRAP__)
+#include "vissweepFiltersModule.h"
+
+class vtkImageData;
+
+namespace vs
+{
+class VisibilityGrid;
+struct VolumeGeometry;
+
+/** Fills `out` from `grid`; `physical` is the volume's geometry without any prop matrix. */
+VISSWEEPFILTERS_EXPORT void VisibilityGridToImage(
+  const VisibilityGrid& grid, const VolumeGeometry& physical, vtkImageData* out);
+}
+#endif
+
+#endif
