@@ -11,10 +11,10 @@
  * Henyey-Greenstein with asymmetry g in (-1,1), as a function of the cosine of
  * the angle between the sampled direction w and an axis a:
  *     p(cos θ) = (1 - g²) / (4π (1 + g² - 2 g cos θ)^{3/2}),  cos θ = dot(a, w).
- * g > 0 puts the density around +a. Inverting its cdf in cos θ gives
- *     cos θ = (1 + g² - ((1 - g²) / (1 - g + 2 g u))²) / (2 g),
- * which cancels catastrophically as g -> 0: for |g| < VS_HG_ISOTROPIC_G the
- * sampler and the pdf both become exactly isotropic, so they agree.
+ * g > 0 puts the density around +a. The sampler inverts the cdf in cos θ
+ * (in a form without the usual cancellation, see vs_hg_sample_cos_theta).
+ * For |g| < VS_HG_ISOTROPIC_G the sampler and the pdf both become exactly
+ * isotropic (cos θ = 2u - 1, the g -> 0 limit of the sampler), so they agree.
  *
  * Which axis to pass: for a camera ray travelling along d that scatters at x,
  * light arrives at x travelling along -w (w = direction towards the light) and
@@ -91,15 +91,24 @@ VS_FUNC float vs_hg_pdf(float cosTheta, float g)
   return VS_INV_4PI * (1.0f - g * g) / (denom * sqrt(denom));
 }
 
-/* Inverse cdf of cos θ under Henyey-Greenstein; u in [0,1). */
+/* Inverse cdf of cos θ under Henyey-Greenstein; u in [0,1), cos θ increasing
+ * in u. The usual closed form (1 + g² - ((1 - g²)/(1 - g + 2gu))²)/(2g) loses
+ * up to 1e-3 to cancellation at small |g| or g near -1. Multiplying out the
+ * square cancels the 1/g exactly:
+ *     cos θ = (2u (1 + g²)(1 - g + g u) - (1 - g)²) / (1 - g + 2 g u)²,
+ * accurate to ~3e-7 for g >= 0; for g < 0 sample |g| mirrored,
+ * cos θ(g, u) = -cos θ(-g, 1 - u). */
 VS_FUNC float vs_hg_sample_cos_theta(float g, float u)
 {
   if (abs(g) < VS_HG_ISOTROPIC_G)
   {
-    return 1.0f - 2.0f * u;
+    return 2.0f * u - 1.0f;
   }
-  float q = (1.0f - g * g) / (1.0f - g + 2.0f * g * u);
-  return clamp((1.0f + g * g - q * q) / (2.0f * g), -1.0f, 1.0f);
+  float a = abs(g);
+  float v = g < 0.0f ? 1.0f - u : u;
+  float s = 1.0f - a + 2.0f * a * v;
+  float c = (2.0f * v * (1.0f + a * a) * (1.0f - a + a * v) - (1.0f - a) * (1.0f - a)) / (s * s);
+  return clamp(g < 0.0f ? -c : c, -1.0f, 1.0f);
 }
 
 /* A direction w distributed by Henyey-Greenstein around the unit vector axis

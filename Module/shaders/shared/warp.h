@@ -169,7 +169,8 @@ VS_FUNC vec4 vs_children(float values[256], uint n, uvec2 node, uint size)
 {
   uvec2 o = node * (2u * size);
   return vec4(vs_block_sum(values, n, o, size), vs_block_sum(values, n, o + uvec2(size, 0u), size),
-    vs_block_sum(values, n, o + uvec2(0u, size), size), vs_block_sum(values, n, o + uvec2(size), size));
+    vs_block_sum(values, n, o + uvec2(0u, size), size),
+    vs_block_sum(values, n, o + uvec2(size), size));
 }
 
 VS_FUNC float vs_warp_total(float values[256], uint n)

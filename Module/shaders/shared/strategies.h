@@ -1,0 +1,311 @@
+/*
+ * strategies.h — the five direction-sampling strategies of the renderer
+ * (DESIGN.md; Kroes et al., visibility sweeps, Sec. 7): each a sample
+ * function returning a unit direction and its pdf, and a pdf function for an
+ * arbitrary direction. pdfs are with respect to solid angle (1/sr).
+ *
+ * All but Uniform are piecewise constant over texels of the equal-area
+ * octahedral map: a texel of an n x n map covers 4π/n² sr, so a texel (or
+ * leaf) picked with discrete probability P, and a direction uniform within it
+ * (the warp's remapped sample pushed through vs_octa_to_dir, which is uniform
+ * in solid angle because the map is equal-area), has pdf P n² / (4π).
+ *
+ *   Uniform      pdf = 1/(4π).
+ *   Environment  full descent of the env quadtree (warp.h) from the root to a
+ *                leaf at level K (N = 2^K):  pdf = P(leaf) N²/(4π).
+ *   Visibility   warp the D x D visibility values (ε already added):
+ *                pdf = P(texel) D²/(4π).
+ *   Combined     warp the D x D product values, visibility x env node at level
+ *                log2(D) (vs_env_node): pdf = P(texel) D²/(4π).
+ *   TwoStep      the Combined texel, then descend the env quadtree inside it
+ *                from level log2(D) to K:  pdf = P(texel) P(leaf|texel) N²/(4π).
+ *                A texel whose env node is 0 has product 0 and is never picked.
+ *
+ * "values" below is the visibility map for Visibility and the product map for
+ * Combined and TwoStep; Uniform and Environment ignore it. Maps come as float[64]
+ * (D = 8, the default; functions named *_8x8) or compactly in float[256] with
+ * D in {2,4,8,16}. K >= log2(D) for TwoStep. A returned pdf of 0 means "no
+ * sample" (all-zero map or environment): the caller must skip the sample.
+ */
+#ifndef VS_STRATEGIES_H
+#define VS_STRATEGIES_H
+#include "octahedral.h"
+#include "sphere.h"
+#include "warp.h"
+
+VS_NAMESPACE_BEGIN
+
+VS_CONST uint VS_STRATEGY_UNIFORM = 0u;
+VS_CONST uint VS_STRATEGY_ENVIRONMENT = 1u;
+VS_CONST uint VS_STRATEGY_VISIBILITY = 2u;
+VS_CONST uint VS_STRATEGY_COMBINED = 3u;
+VS_CONST uint VS_STRATEGY_TWO_STEP = 4u;
+
+/* ------------------------------------------------------------- helpers */
+
+/* Solid-angle pdf of a texel of an n x n map chosen with probability prob. */
+VS_FUNC float vs_texel_pdf(float prob, uint n)
+{
+  return prob * (float(n) * float(n) * VS_INV_4PI);
+}
+
+/* The direction at position uInTexel in [0,1)^2 inside texel t of an n x n map. */
+VS_FUNC vec3 vs_dir_in_texel(uvec2 t, vec2 uInTexel, uint n)
+{
+  return vs_octa_to_dir((vec2(t) + uInTexel) / float(n));
+}
+
+VS_FUNC uint vs_log2(uint n)
+{
+  return uint(findMSB(n));
+}
+
+/* One entry of the Combined/TwoStep product map: the visibility of texel t of
+ * the D x D map times the env quadtree node over the same texel. */
+VS_FUNC float vs_product_weight(float visibility, uvec2 t, uint D)
+{
+  return visibility * vs_env_node(vs_log2(D), t);
+}
+
+/* -------------------------------------------------------------- uniform */
+
+VS_FUNC vec3 vs_sample_uniform(vec2 u, VS_OUT(float) pdf)
+{
+  pdf = vs_uniform_sphere_pdf();
+  return vs_sample_uniform_sphere(u);
+}
+
+VS_FUNC float vs_pdf_uniform(vec3 /* dir */)
+{
+  return vs_uniform_sphere_pdf();
+}
+
+/* ---------------------------------------------------------- environment */
+
+/* finestLevel K: the env quadtree's leaves are the 2^K x 2^K texels. */
+VS_FUNC vec3 vs_sample_environment(uint finestLevel, vec2 u, VS_OUT(float) pdf)
+{
+  uvec2 leaf;
+  float prob;
+  vec2 uLeaf;
+  vs_env_descend(0u, uvec2(0u), finestLevel, u, leaf, prob, uLeaf);
+  uint n = 1u << finestLevel;
+  pdf = vs_texel_pdf(prob, n);
+  return vs_dir_in_texel(leaf, uLeaf, n);
+}
+
+VS_FUNC float vs_pdf_environment(uint finestLevel, vec3 dir)
+{
+  uint n = 1u << finestLevel;
+  float prob = vs_env_leaf_prob(0u, uvec2(0u), finestLevel, vs_dir_to_texel(dir, n));
+  return vs_texel_pdf(prob, n);
+}
+
+/* ------------------------------------ tabulated D x D maps (Visibility, Combined) */
+
+VS_FUNC vec3 vs_sample_tabulated_8x8(float values[64], vec2 u, VS_OUT(float) pdf)
+{
+  uvec2 t;
+  float prob;
+  vec2 uTexel;
+  vs_warp_8x8(values, u, t, prob, uTexel);
+  pdf = vs_texel_pdf(prob, 8u);
+  return vs_dir_in_texel(t, uTexel, 8u);
+}
+
+VS_FUNC float vs_pdf_tabulated_8x8(float values[64], vec3 dir)
+{
+  return vs_texel_pdf(vs_warp_prob_8x8(values, vs_dir_to_texel(dir, 8u)), 8u);
+}
+
+VS_FUNC vec3 vs_sample_tabulated(float values[256], uint D, vec2 u, VS_OUT(float) pdf)
+{
+  uvec2 t;
+  float prob;
+  vec2 uTexel;
+  vs_warp(values, D, u, t, prob, uTexel);
+  pdf = vs_texel_pdf(prob, D);
+  return vs_dir_in_texel(t, uTexel, D);
+}
+
+VS_FUNC float vs_pdf_tabulated(float values[256], uint D, vec3 dir)
+{
+  return vs_texel_pdf(vs_warp_prob(values, D, vs_dir_to_texel(dir, D)), D);
+}
+
+/* Visibility and Combined differ only in what the caller puts into the map. */
+VS_FUNC vec3 vs_sample_visibility_8x8(float visibility[64], vec2 u, VS_OUT(float) pdf)
+{
+  return vs_sample_tabulated_8x8(visibility, u, pdf);
+}
+
+VS_FUNC float vs_pdf_visibility_8x8(float visibility[64], vec3 dir)
+{
+  return vs_pdf_tabulated_8x8(visibility, dir);
+}
+
+VS_FUNC vec3 vs_sample_visibility(float visibility[256], uint D, vec2 u, VS_OUT(float) pdf)
+{
+  return vs_sample_tabulated(visibility, D, u, pdf);
+}
+
+VS_FUNC float vs_pdf_visibility(float visibility[256], uint D, vec3 dir)
+{
+  return vs_pdf_tabulated(visibility, D, dir);
+}
+
+VS_FUNC vec3 vs_sample_combined_8x8(float product[64], vec2 u, VS_OUT(float) pdf)
+{
+  return vs_sample_tabulated_8x8(product, u, pdf);
+}
+
+VS_FUNC float vs_pdf_combined_8x8(float product[64], vec3 dir)
+{
+  return vs_pdf_tabulated_8x8(product, dir);
+}
+
+VS_FUNC vec3 vs_sample_combined(float product[256], uint D, vec2 u, VS_OUT(float) pdf)
+{
+  return vs_sample_tabulated(product, D, u, pdf);
+}
+
+VS_FUNC float vs_pdf_combined(float product[256], uint D, vec3 dir)
+{
+  return vs_pdf_tabulated(product, D, dir);
+}
+
+/* ------------------------------------------------------------- two-step */
+
+/* Second step: from texel t (probability probTexel) of the D x D product map,
+ * descend the env quadtree to a leaf at finestLevel. */
+VS_FUNC vec3 vs_two_step_descend(
+  uvec2 t, float probTexel, vec2 uTexel, uint D, uint finestLevel, VS_OUT(float) pdf)
+{
+  uvec2 leaf;
+  float probLeaf;
+  vec2 uLeaf;
+  vs_env_descend(vs_log2(D), t, finestLevel, uTexel, leaf, probLeaf, uLeaf);
+  uint n = 1u << finestLevel;
+  pdf = vs_texel_pdf(probTexel * probLeaf, n);
+  return vs_dir_in_texel(leaf, uLeaf, n);
+}
+
+/* pdf of dir given the probability of its texel in the D x D product map. */
+VS_FUNC float vs_two_step_pdf_given_texel_prob(
+  float probTexel, uvec2 leaf, uint D, uint finestLevel)
+{
+  uint level = vs_log2(D);
+  uvec2 t = leaf >> (finestLevel - level);
+  float probLeaf = vs_env_leaf_prob(level, t, finestLevel, leaf);
+  return vs_texel_pdf(probTexel * probLeaf, 1u << finestLevel);
+}
+
+VS_FUNC vec3 vs_sample_two_step_8x8(float product[64], uint finestLevel, vec2 u, VS_OUT(float) pdf)
+{
+  uvec2 t;
+  float prob;
+  vec2 uTexel;
+  vs_warp_8x8(product, u, t, prob, uTexel);
+  return vs_two_step_descend(t, prob, uTexel, 8u, finestLevel, pdf);
+}
+
+VS_FUNC float vs_pdf_two_step_8x8(float product[64], uint finestLevel, vec3 dir)
+{
+  uvec2 leaf = vs_dir_to_texel(dir, 1u << finestLevel);
+  float probTexel = vs_warp_prob_8x8(product, leaf >> (finestLevel - 3u));
+  return vs_two_step_pdf_given_texel_prob(probTexel, leaf, 8u, finestLevel);
+}
+
+VS_FUNC vec3 vs_sample_two_step(
+  float product[256], uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
+{
+  uvec2 t;
+  float prob;
+  vec2 uTexel;
+  vs_warp(product, D, u, t, prob, uTexel);
+  return vs_two_step_descend(t, prob, uTexel, D, finestLevel, pdf);
+}
+
+VS_FUNC float vs_pdf_two_step(float product[256], uint D, uint finestLevel, vec3 dir)
+{
+  uvec2 leaf = vs_dir_to_texel(dir, 1u << finestLevel);
+  float probTexel = vs_warp_prob(product, D, leaf >> (finestLevel - vs_log2(D)));
+  return vs_two_step_pdf_given_texel_prob(probTexel, leaf, D, finestLevel);
+}
+
+/* ------------------------------------------------------------ dispatch */
+
+/* Any strategy by its VS_STRATEGY_* id; values = visibility or product map. */
+VS_FUNC vec3 vs_sample_direction_8x8(
+  uint strategy, float values[64], uint finestLevel, vec2 u, VS_OUT(float) pdf)
+{
+  if (strategy == VS_STRATEGY_ENVIRONMENT)
+  {
+    return vs_sample_environment(finestLevel, u, pdf);
+  }
+  if (strategy == VS_STRATEGY_VISIBILITY || strategy == VS_STRATEGY_COMBINED)
+  {
+    return vs_sample_tabulated_8x8(values, u, pdf);
+  }
+  if (strategy == VS_STRATEGY_TWO_STEP)
+  {
+    return vs_sample_two_step_8x8(values, finestLevel, u, pdf);
+  }
+  return vs_sample_uniform(u, pdf);
+}
+
+VS_FUNC float vs_pdf_direction_8x8(uint strategy, float values[64], uint finestLevel, vec3 dir)
+{
+  if (strategy == VS_STRATEGY_ENVIRONMENT)
+  {
+    return vs_pdf_environment(finestLevel, dir);
+  }
+  if (strategy == VS_STRATEGY_VISIBILITY || strategy == VS_STRATEGY_COMBINED)
+  {
+    return vs_pdf_tabulated_8x8(values, dir);
+  }
+  if (strategy == VS_STRATEGY_TWO_STEP)
+  {
+    return vs_pdf_two_step_8x8(values, finestLevel, dir);
+  }
+  return vs_pdf_uniform(dir);
+}
+
+VS_FUNC vec3 vs_sample_direction(
+  uint strategy, float values[256], uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
+{
+  if (strategy == VS_STRATEGY_ENVIRONMENT)
+  {
+    return vs_sample_environment(finestLevel, u, pdf);
+  }
+  if (strategy == VS_STRATEGY_VISIBILITY || strategy == VS_STRATEGY_COMBINED)
+  {
+    return vs_sample_tabulated(values, D, u, pdf);
+  }
+  if (strategy == VS_STRATEGY_TWO_STEP)
+  {
+    return vs_sample_two_step(values, D, finestLevel, u, pdf);
+  }
+  return vs_sample_uniform(u, pdf);
+}
+
+VS_FUNC float vs_pdf_direction(uint strategy, float values[256], uint D, uint finestLevel, vec3 dir)
+{
+  if (strategy == VS_STRATEGY_ENVIRONMENT)
+  {
+    return vs_pdf_environment(finestLevel, dir);
+  }
+  if (strategy == VS_STRATEGY_VISIBILITY || strategy == VS_STRATEGY_COMBINED)
+  {
+    return vs_pdf_tabulated(values, D, dir);
+  }
+  if (strategy == VS_STRATEGY_TWO_STEP)
+  {
+    return vs_pdf_two_step(values, D, finestLevel, dir);
+  }
+  return vs_pdf_uniform(dir);
+}
+
+VS_NAMESPACE_END
+
+#endif
