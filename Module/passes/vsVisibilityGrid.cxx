@@ -50,12 +50,19 @@ bool SameGeometry(const VolumeGeometry& a, const VolumeGeometry& b)
 
 struct SlicePush
 {
-  uint32_t slice;
+  uint32_t first;
+  uint32_t firstDirection;
+};
+struct ChunkPush
+{
+  uint32_t firstSlice;
+  uint32_t count;
   uint32_t firstDirection;
 };
 struct FilterPush
 {
-  uint32_t slice;
+  uint32_t firstSlice;
+  uint32_t count;
   uint32_t firstDirection;
   uint32_t pass;
 };
@@ -172,51 +179,61 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
     using B = BindingType;
     this->March_ = std::make_unique<ComputePipeline>(this->Context_, VS_SPIRV(vs_spirv_sweep_march),
       std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
-        B::StorageBuffer },
-      sizeof(SlicePush), "sweep march");
+        B::StorageBuffer, B::StorageBuffer },
+      sizeof(ChunkPush), "sweep march");
     this->Filter_ = std::make_unique<ComputePipeline>(this->Context_, VS_SPIRV(vs_spirv_sweep_filter),
-      std::vector<B>{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer },
+      std::vector<B>{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer },
       sizeof(FilterPush), "sweep filter");
     this->Project_ = std::make_unique<ComputePipeline>(this->Context_, VS_SPIRV(vs_spirv_sweep_project),
       std::vector<B>{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageImage },
-      sizeof(SlicePush), "sweep project");
+      sizeof(ChunkPush), "sweep project");
   }
   const SweepPlan& plan = this->Plan_;
-  // Directions in batch order, so a batch is a contiguous range of the buffer.
+  const bool filtering = this->Parameters_.Filtering;
+  const uint64_t budget = std::min<uint64_t>(this->Context_->Info().MaxStorageBufferRange, 64ull << 20) / sizeof(float);
+
+  // Directions in batch order, so a batch is a contiguous range of the buffer; per batch, the
+  // slices per chunk so that its kernel stack (rays x slices) fits one buffer.
   std::vector<shared::VsSweepDirection> ordered;
-  std::vector<uint32_t> firsts;
+  std::vector<uint32_t> firsts, chunks;
+  uint64_t stackFloats = 1, stateFloats = 1;
   for (const auto& batch : plan.Batches)
   {
     firsts.push_back(uint32_t(ordered.size()));
+    uint64_t rays = 0;
+    uint32_t slices = 1;
     for (uint32_t n : batch)
     {
       ordered.push_back(plan.Directions[n]);
+      rays += uint64_t(plan.Directions[n].kernel.x) * plan.Directions[n].kernel.y;
+      slices = std::max(slices, plan.Cells[plan.Directions[n].axes.x]);
     }
+    uint32_t chunk = uint32_t(std::max<uint64_t>(1, std::min<uint64_t>(slices, budget / std::max<uint64_t>(rays, 1))));
+    chunks.push_back(chunk);
+    stackFloats = std::max(stackFloats, rays * chunk);
+    stateFloats = std::max(stateFloats, rays);
   }
   Buffer dirs(this->Context_, ordered.size() * sizeof(shared::VsSweepDirection), "sweep directions");
   dirs.Upload(ordered.data(), ordered.size() * sizeof(shared::VsSweepDirection));
-  const uint64_t kernelBytes = std::max<uint64_t>(plan.LargestBatchKernelFloats, 1) * sizeof(float);
-  Buffer kernel(this->Context_, kernelBytes, "sweeping kernel");
-  std::unique_ptr<Buffer> prefix, filtered;
-  const bool filtering = this->Parameters_.Filtering;
+  Buffer state(this->Context_, stateFloats * sizeof(float), "sweeping kernel");
+  Buffer stack(this->Context_, stackFloats * sizeof(float), "sweeping kernel per slice");
+  std::unique_ptr<Buffer> prefix;
   if (filtering)
   {
-    prefix = std::make_unique<Buffer>(this->Context_, kernelBytes, "kernel prefix sums");
-    filtered = std::make_unique<Buffer>(this->Context_, kernelBytes, "filtered kernel");
+    prefix = std::make_unique<Buffer>(this->Context_, stackFloats * sizeof(float), "kernel prefix sums");
   }
-
   DescriptorSet march(*this->March_);
-  march.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, majorants.Image()).Bind(3, globals).Bind(4, dirs).Bind(5, kernel);
+  march.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, majorants.Image()).Bind(3, globals).Bind(4, dirs)
+    .Bind(5, state).Bind(6, stack);
   DescriptorSet project(*this->Project_);
-  project.Bind(0, globals).Bind(1, dirs).Bind(2, filtering ? *filtered : kernel).Bind(3, *this->Image_);
+  project.Bind(0, globals).Bind(1, dirs).Bind(2, stack).Bind(3, *this->Image_);
   std::unique_ptr<DescriptorSet> filter;
   if (filtering)
   {
     filter = std::make_unique<DescriptorSet>(*this->Filter_);
-    filter->Bind(0, globals).Bind(1, dirs).Bind(2, kernel).Bind(3, *prefix).Bind(4, *filtered);
+    filter->Bind(0, globals).Bind(1, dirs).Bind(2, stack).Bind(3, *prefix);
   }
 
-  size_t done = 0;
   for (size_t bi = 0; bi < plan.Batches.size(); ++bi)
   {
     const auto& batch = plan.Batches[bi];
@@ -231,30 +248,30 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
       gb = std::max(gb, plan.Cells[s.axes.z]);
     }
     const uint32_t nd = uint32_t(batch.size());
+    const uint32_t chunk = chunks[bi];
     Batch cmd(this->Context_);
     cmd.BeginTimer("sweep");
-    for (uint32_t slice = 0; slice < slices; ++slice)
+    for (uint32_t first = 0; first < slices; first += chunk)
     {
-      SlicePush sp{ slice, firsts[bi] };
-      cmd.Dispatch(*this->March_, march, &sp, sizeof(sp), (ra + 7) / 8, (rb + 7) / 8, nd);
+      ChunkPush cp{ first, chunk, firsts[bi] };
+      cmd.Dispatch(*this->March_, march, &cp, sizeof(cp), (ra + 7) / 8, (rb + 7) / 8, nd);
       cmd.Barrier();
       if (filtering)
       {
-        FilterPush rows{ slice, firsts[bi], 0u };
-        cmd.Dispatch(*this->Filter_, *filter, &rows, sizeof(rows), (rb + 63) / 64, nd, 1);
+        FilterPush rows{ first, chunk, firsts[bi], 0u };
+        cmd.Dispatch(*this->Filter_, *filter, &rows, sizeof(rows), (rb + 63) / 64, chunk, nd);
         cmd.Barrier();
-        FilterPush cols{ slice, firsts[bi], 1u };
-        cmd.Dispatch(*this->Filter_, *filter, &cols, sizeof(cols), (ra + 63) / 64, nd, 1);
+        FilterPush cols{ first, chunk, firsts[bi], 1u };
+        cmd.Dispatch(*this->Filter_, *filter, &cols, sizeof(cols), (ra + 63) / 64, chunk, nd);
         cmd.Barrier();
       }
-      cmd.Dispatch(*this->Project_, project, &sp, sizeof(sp), (ga + 7) / 8, (gb + 7) / 8, nd);
+      cmd.Dispatch(*this->Project_, project, &cp, sizeof(cp), (ga + 7) / 8, (gb + 7) / 8, chunk * nd);
       cmd.Barrier();
     }
     cmd.EndTimer();
     cmd.Submit();
     this->LastSeconds_ += cmd.Seconds("sweep");
     this->LastDispatches_ += cmd.DispatchCount();
-    done += batch.size();
     if (progress)
     {
       progress(double(bi + 1) / double(plan.Batches.size()));

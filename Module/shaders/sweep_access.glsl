@@ -1,44 +1,88 @@
 /*
  * sweep_access.glsl — extinction along rays for the sweeps and the brute force
  * (GLSL only). The including shader declares uVolume, uTF, uMajorant and a
- * buffer holding `VsSweepGlobals G` before including this file.
+ * buffer holding `VsSweepGlobals G` before including this file, and calls
+ * vs_load_sweep_globals() first in main(): the per-sample code then reads the
+ * globals from registers, not from the buffer (measured: lavapipe does not hoist them).
  */
 #include "volume_access.glsl"
+
+ivec3 gDims;
+ivec3 gBricks;
+float gBrickSize;
+vec4 gTF;
+uint gClipCount;
+float gStep;
+
+void vs_load_sweep_globals()
+{
+  gDims = ivec3(G.dims.xyz);
+  gBricks = ivec3(G.bricks.xyz);
+  gBrickSize = G.march.y;
+  gTF = G.tf;
+  gClipCount = G.bricks.w;
+  gStep = G.march.x;
+}
 
 /* Extinction at index-space point p: post-classified, zero where a clip plane removes it. */
 float vs_extinction(vec3 p)
 {
-  for (uint i = 0u; i < G.bricks.w; ++i)
+  for (uint i = 0u; i < gClipCount; ++i)
   {
     if (dot(G.clipPlanes[i].xyz, p) + G.clipPlanes[i].w < 0.0)
       return 0.0;
   }
-  return vs_classify(vs_sample_scalar(p, ivec3(G.dims.xyz)), G.tf).w;
+  return vs_classify(vs_sample_scalar(p, gDims), gTF).w;
 }
 
 /* The majorant of the brick holding p (0 = empty brick: no sample needed). */
 float vs_brick_majorant(vec3 p)
 {
-  ivec3 b = clamp(ivec3(floor(p / G.march.y)), ivec3(0), ivec3(G.bricks.xyz) - 1);
+  ivec3 b = clamp(ivec3(floor(p / gBrickSize)), ivec3(0), gBricks - 1);
   return imageLoad(uMajorant, b).r;
 }
 
+/* Distance from p along d to the exit of the brick holding p (>= 0). */
+float vs_brick_exit(vec3 p, vec3 d)
+{
+  vec3 lo = floor(p / gBrickSize) * gBrickSize;
+  vec3 hi = lo + gBrickSize;
+  float t = 1e30;
+  for (int i = 0; i < 3; ++i)
+  {
+    if (d[i] > 1e-20)
+      t = min(t, (hi[i] - p[i]) / d[i]);
+    else if (d[i] < -1e-20)
+      t = min(t, (lo[i] - p[i]) / d[i]);
+  }
+  return max(t, 0.0);
+}
+
 /* Optical depth along o + t d for t in [t0, t1] (world units), midpoint rule with
- * steps of at most G.march.x, skipping samples in empty bricks. */
+ * steps of at most the march step. Samples in empty bricks are skipped a whole brick
+ * at a time (to the first sample past the brick's exit), so the sample positions and
+ * the result are those of the plain midpoint rule. */
 float vs_optical_depth(vec3 o, vec3 d, float t0, float t1)
 {
   if (!(t1 > t0))
     return 0.0;
   float len = t1 - t0;
-  uint n = uint(ceil(len / G.march.x));
-  n = max(n, 1u);
+  uint n = max(uint(ceil(len / gStep)), 1u);
   float dt = len / float(n);
   float tau = 0.0;
-  for (uint s = 0u; s < n; ++s)
+  uint s = 0u;
+  while (s < n)
   {
     vec3 p = o + (t0 + (float(s) + 0.5) * dt) * d;
     if (vs_brick_majorant(p) > 0.0)
-      tau += vs_extinction(p) * dt;
+    {
+      tau += vs_extinction(p);
+      s += 1u;
+    }
+    else
+    {
+      s += max(1u, uint(ceil(vs_brick_exit(p, d) / dt)));
+    }
   }
-  return tau;
+  return tau * dt;
 }

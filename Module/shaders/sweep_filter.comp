@@ -3,23 +3,21 @@
 /*
  * Sweep-space filtering (seed 000, Sec. 8): a box filter over the sweeping kernel
  * before projection, separable, with a sliding window whose cost does not depend
- * on its width (an inclusive prefix sum per row or column, then differences of the
- * linearly interpolated prefix). Width along an axis: the visibility cell projected
- * on the sweep plane, widened on each side by t_i tan(beta) (Eq. 9).
- * pass 0 (rows, along a): Kernel -> Prefix -> Filtered. pass 1 (columns, along b):
- * Filtered -> Prefix -> Filtered.
+ * on its width (an inclusive prefix sum of the line, then differences of its
+ * linear interpolant). Width along an axis: the visibility cell projected onto the
+ * sweep plane, widened on each side by t_i tan(beta) (Eq. 9). In place on the kernel
+ * stack, one invocation per line (row: pass 0, column: pass 1) per slice per direction.
  */
 #include "sweep_params.h"
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 layout(std430, binding = 0) readonly buffer Globals { VsSweepGlobals G; };
 layout(std430, binding = 1) readonly buffer Directions { VsSweepDirection uDir[]; };
-layout(std430, binding = 2) readonly buffer Kernel { float uKernel[]; };
+layout(std430, binding = 2) buffer Stack { float uStack[]; };
 layout(std430, binding = 3) buffer Prefix { float uPrefix[]; };
-layout(std430, binding = 4) buffer Filtered { float uFiltered[]; };
-layout(push_constant) uniform Push { uint slice; uint firstDirection; uint pass; } pc;
+layout(push_constant) uniform Push { uint firstSlice; uint count; uint firstDirection; uint pass; } pc;
 
-/* Integral of the piecewise-constant row over [-0.5, u - 0.5], from the inclusive prefix. */
+/* Integral of the piecewise-constant line over [0, u] (texel j covers [j, j+1)). */
 float integral(uint base, uint stride, uint n, float u)
 {
   u = clamp(u, 0.0, float(n));
@@ -31,32 +29,30 @@ float integral(uint base, uint stride, uint n, float u)
 
 void main()
 {
-  VsSweepDirection D = uDir[pc.firstDirection + gl_GlobalInvocationID.y];
+  uint s = gl_GlobalInvocationID.y;
+  VsSweepDirection D = uDir[pc.firstDirection + gl_GlobalInvocationID.z];
   uint k = D.axes.x;
-  if (pc.slice >= G.grid[k])
+  uint slice = pc.firstSlice + s;
+  if (s >= pc.count || slice >= G.grid[k])
     return;
   bool rows = pc.pass == 0u;
-  uint n = rows ? D.kernel.x : D.kernel.y;      /* length of the line */
+  uint n = rows ? D.kernel.x : D.kernel.y;
   uint lines = rows ? D.kernel.y : D.kernel.x;
   uint line = gl_GlobalInvocationID.x;
   if (line >= lines)
     return;
   uint stride = rows ? 1u : D.kernel.x;
-  uint base = D.axes.w + (rows ? line * D.kernel.x : line);
+  uint rays = D.kernel.x * D.kernel.y;
+  uint base = D.axes.w * pc.count + s * rays + (rows ? line * D.kernel.x : line);
 
-  float c = vs_slice_coordinate(G, k, pc.slice, D.kernel.z == 1u, G.grid[k]);
-  float t = (c - D.planeOrigin[k]) / D.travel[k];
+  float t = vs_slice_t(G.boxMin[k], G.cellSize[k], G.grid[k], D.planeOrigin[k], D.travel[k], D.kernel.z == 1u, slice);
   float width = rows ? D.filterSize.x + 2.0 * t * D.filterSize.z : D.filterSize.y + 2.0 * t * D.filterSize.w;
   if (width <= 1.0)
-  {
-    for (uint j = 0u; j < n; ++j)
-      uFiltered[base + j * stride] = rows ? uKernel[base + j * stride] : uFiltered[base + j * stride];
     return;
-  }
   float sum = 0.0;
   for (uint j = 0u; j < n; ++j)
   {
-    sum += rows ? uKernel[base + j * stride] : uFiltered[base + j * stride];
+    sum += uStack[base + j * stride];
     uPrefix[base + j * stride] = sum;
   }
   float halfWidth = 0.5 * width;
@@ -64,6 +60,6 @@ void main()
   {
     float lo = max(float(j) + 0.5 - halfWidth, 0.0);
     float hi = min(float(j) + 0.5 + halfWidth, float(n));
-    uFiltered[base + j * stride] = (integral(base, stride, n, hi) - integral(base, stride, n, lo)) / (hi - lo);
+    uStack[base + j * stride] = (integral(base, stride, n, hi) - integral(base, stride, n, lo)) / (hi - lo);
   }
 }

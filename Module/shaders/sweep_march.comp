@@ -1,9 +1,12 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 /*
- * Visibility sweep, step (3) of seed 000 Fig. 4 / Eq. 8: every kernel ray of every
- * direction of the batch advances from the previous visibility slice to slice
- * `slice`, multiplying its transmittance by the segment's transmittance.
+ * Visibility sweep, step (3) of seed 000 Fig. 4 / Eq. 8. Each kernel ray of each
+ * direction of the batch advances through the `count` cell slices of this chunk,
+ * multiplying its transmittance by each segment's transmittance, and leaves its
+ * value at every slice in the kernel stack (what the sweeping kernel holds when
+ * the sweep plane reaches that slice). One invocation walks many slices, so a
+ * whole sweep is a few dispatches instead of a few per slice.
  */
 #include "sweep_params.h"
 
@@ -13,37 +16,44 @@ layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
 layout(binding = 2, r32f) uniform readonly image3D uMajorant;
 layout(std430, binding = 3) readonly buffer Globals { VsSweepGlobals G; };
 layout(std430, binding = 4) readonly buffer Directions { VsSweepDirection uDir[]; };
-layout(std430, binding = 5) buffer Kernel { float uKernel[]; };
-layout(push_constant) uniform Push { uint slice; uint firstDirection; } pc;
+layout(std430, binding = 5) buffer State { float uState[]; };  /* V per ray between chunks */
+layout(std430, binding = 6) writeonly buffer Stack { float uStack[]; };
+layout(push_constant) uniform Push { uint firstSlice; uint count; uint firstDirection; } pc;
 
 #include "sweep_access.glsl"
 
-float slice_t(VsSweepDirection D, uint i)
-{
-  uint k = D.axes.x;
-  float c = vs_slice_coordinate(G, k, i, D.kernel.z == 1u, G.grid[k]);
-  return (c - D.planeOrigin[k]) / D.travel[k];
-}
 
 void main()
 {
+  vs_load_sweep_globals();
   VsSweepDirection D = uDir[pc.firstDirection + gl_GlobalInvocationID.z];
   uvec2 r = gl_GlobalInvocationID.xy;
-  if (r.x >= D.kernel.x || r.y >= D.kernel.y || pc.slice >= G.grid[D.axes.x])
+  if (r.x >= D.kernel.x || r.y >= D.kernel.y)
     return;
-  uint idx = D.axes.w + r.y * D.kernel.x + r.x;
-  float V = pc.slice == 0u ? 1.0 : uKernel[idx];
-  if (V > G.march.z)
+  uint rays = D.kernel.x * D.kernel.y;
+  uint ray = r.y * D.kernel.x + r.x;
+  uint k = D.axes.x;
+  uint slices = G.grid[k];
+  float boxMinK = G.boxMin[k], cellSizeK = G.cellSize[k], startK = D.planeOrigin[k], travelK = D.travel[k];
+  bool descending = D.kernel.z == 1u;
+  vec3 o = D.planeOrigin.xyz;
+  o[D.axes.y] += float(r.x) * D.kernelStep.x;
+  o[D.axes.z] += float(r.y) * D.kernelStep.y;
+  vec3 d = D.travel.xyz;
+  vec2 box = vs_intersect_box(o, d, G.boxMin.xyz, G.boxMax.xyz);
+  float V = pc.firstSlice == 0u ? 1.0 : uState[D.axes.w + ray];
+  float t0 = pc.firstSlice == 0u ? 0.0
+    : vs_slice_t(boxMinK, cellSizeK, slices, startK, travelK, descending, pc.firstSlice - 1u);
+  for (uint s = 0u; s < pc.count; ++s)
   {
-    vec3 o = D.planeOrigin.xyz;
-    o[D.axes.y] += float(r.x) * D.kernelStep.x;
-    o[D.axes.z] += float(r.y) * D.kernelStep.y;
-    vec3 d = D.travel.xyz;
-    float t0 = pc.slice == 0u ? 0.0 : slice_t(D, pc.slice - 1u);
-    float t1 = slice_t(D, pc.slice);
-    vec2 box = vs_intersect_box(o, d, G.boxMin.xyz, G.boxMax.xyz);
-    float a = max(t0, box.x), b = min(t1, box.y);
-    V *= exp(-vs_optical_depth(o, d, a, b));
+    uint slice = pc.firstSlice + s;
+    if (slice >= slices)
+      break;
+    float t1 = vs_slice_t(boxMinK, cellSizeK, slices, startK, travelK, descending, slice);
+    if (V > G.march.z)
+      V *= exp(-vs_optical_depth(o, d, max(t0, box.x), min(t1, box.y)));
+    uStack[D.axes.w * pc.count + s * rays + ray] = V;
+    t0 = t1;
   }
-  uKernel[idx] = V;
+  uState[D.axes.w + ray] = V;
 }

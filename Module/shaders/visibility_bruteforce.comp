@@ -22,6 +22,7 @@ layout(push_constant) uniform Push { uint firstCell; uint firstDirection; } pc;
 
 void main()
 {
+  vs_load_sweep_globals();
   uint cellIndex = pc.firstCell + gl_GlobalInvocationID.x;
   uint dir = pc.firstDirection + gl_GlobalInvocationID.y;
   uint cellCount = G.grid.x * G.grid.y * G.grid.z;

@@ -20,7 +20,8 @@ struct VsSweepDirection
   vec4 planeOrigin; /* xyz: index-space position of kernel ray (0,0) on the start plane */
   vec4 kernelStep;  /* x: index units between kernel rays along axis a, y: along axis b */
   vec4 filterSize;  /* x, y: base box width (kernel texels) along a, b; z, w: widening per world unit along a, b */
-  uvec4 axes;       /* x: sweep axis k, y: in-plane axis a, z: in-plane axis b, w: kernel offset (floats) */
+  uvec4 axes;       /* x: sweep axis k, y: in-plane axis a, z: in-plane axis b, w: first ray of this direction in its
+                       batch (kernel state index; its kernel stack starts at w * slices per chunk) */
   uvec4 kernel;     /* x: rays along a, y: rays along b, z: 1 if slices go from high to low k, w: direction index */
 };
 
@@ -40,11 +41,15 @@ struct VsSweepGlobals
   uvec4 bruteForce; /* x: spatial x angular supersamples per side (1 = centre only), y: seed */
 };
 
-/* The sweep plane's coordinate of cell slice `slice` (in processing order) along axis k. */
-VS_FUNC float vs_slice_coordinate(VsSweepGlobals g, uint k, uint slice, bool descending, uint cells)
+/* Distance along the light (world units) from the start plane to the centre plane of
+ * cell slice `slice` (in processing order); slices are evenly spaced, so this is
+ * t0 + slice * dt. Takes scalars, not the structs: a GLSL struct argument is a copy. */
+VS_FUNC float vs_slice_t(float boxMinK, float cellSizeK, uint cellsK, float startK, float travelK, bool descending,
+  uint slice)
 {
-  uint c = descending ? cells - 1u - slice : slice;
-  return g.boxMin[k] + (float(c) + 0.5f) * g.cellSize[k];
+  uint c = descending ? cellsK - 1u - slice : slice;
+  float coordinate = boxMinK + (float(c) + 0.5f) * cellSizeK;
+  return (coordinate - startK) / travelK;
 }
 
 VS_NAMESPACE_END
