@@ -28,7 +28,7 @@ void Reserve(std::unique_ptr<Buffer>& b, const std::shared_ptr<Context>& ctx, ui
 EmissionAbsorptionPass::EmissionAbsorptionPass(std::shared_ptr<Context> context)
   : Context_(std::move(context))
 {
-  this->Pipeline_ = std::make_unique<ComputePipeline>(this->Context_, VS_SPIRV(vs_spirv_ea_render),
+  this->Pipeline_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_ea_render),
     std::vector<BindingType>{ BindingType::StorageImage, BindingType::StorageBuffer,
       BindingType::StorageBuffer, BindingType::StorageBuffer, BindingType::StorageBuffer },
     0, "emission-absorption");

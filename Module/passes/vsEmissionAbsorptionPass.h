@@ -33,7 +33,7 @@ public:
 
 private:
   std::shared_ptr<Context> Context_;
-  std::unique_ptr<ComputePipeline> Pipeline_;
+  std::shared_ptr<ComputePipeline> Pipeline_;
   std::unique_ptr<Buffer> Params_, Depth_, Out_;
   double LastSeconds_ = 0.0;
 };

@@ -36,8 +36,9 @@ void MajorantGrid::UpdateRanges(const DeviceVolume& volume)
     bricks[i] = std::max<uint32_t>(1, (dims[i] - 1 + this->BrickSize_ - 1) / this->BrickSize_);
   }
   const uint64_t count = uint64_t(bricks[0]) * bricks[1] * bricks[2];
-  ComputePipeline pipeline(this->Context_, VS_SPIRV(vs_spirv_majorant_minmax),
+  auto shared = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_majorant_minmax),
     { BindingType::StorageImage, BindingType::StorageBuffer }, 32, "majorant ranges");
+  const ComputePipeline& pipeline = *shared;
   Buffer ranges(this->Context_, count * 2 * sizeof(float), "brick ranges");
   DescriptorSet set(pipeline);
   set.Bind(0, volume.Image()).Bind(1, ranges);

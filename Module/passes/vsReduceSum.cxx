@@ -11,7 +11,7 @@ namespace vs
 ReduceSum::ReduceSum(std::shared_ptr<Context> context)
   : Context_(std::move(context))
 {
-  this->Pipeline_ = std::make_unique<ComputePipeline>(this->Context_, VS_SPIRV(vs_spirv_reduce_sum),
+  this->Pipeline_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_reduce_sum),
     std::vector<BindingType>{ BindingType::StorageBuffer, BindingType::StorageBuffer }, sizeof(uint32_t),
     "reduce-sum");
 }

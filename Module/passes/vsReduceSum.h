@@ -23,7 +23,7 @@ public:
 
 private:
   std::shared_ptr<Context> Context_;
-  std::unique_ptr<ComputePipeline> Pipeline_;
+  std::shared_ptr<ComputePipeline> Pipeline_;
 };
 }
 

@@ -177,14 +177,14 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
   if (!this->March_)
   {
     using B = BindingType;
-    this->March_ = std::make_unique<ComputePipeline>(this->Context_, VS_SPIRV(vs_spirv_sweep_march),
+    this->March_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_march),
       std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
         B::StorageBuffer, B::StorageBuffer },
       sizeof(ChunkPush), "sweep march");
-    this->Filter_ = std::make_unique<ComputePipeline>(this->Context_, VS_SPIRV(vs_spirv_sweep_filter),
+    this->Filter_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_filter),
       std::vector<B>{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer },
       sizeof(FilterPush), "sweep filter");
-    this->Project_ = std::make_unique<ComputePipeline>(this->Context_, VS_SPIRV(vs_spirv_sweep_project),
+    this->Project_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_project),
       std::vector<B>{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageImage },
       sizeof(ChunkPush), "sweep project");
   }
@@ -285,7 +285,7 @@ void VisibilityGrid::RunBruteForce(const DeviceVolume& volume, const TransferFun
   if (!this->Brute_)
   {
     using B = BindingType;
-    this->Brute_ = std::make_unique<ComputePipeline>(this->Context_, VS_SPIRV(vs_spirv_visibility_bruteforce),
+    this->Brute_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_visibility_bruteforce),
       std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageImage },
       sizeof(SlicePush), "visibility brute force");
   }

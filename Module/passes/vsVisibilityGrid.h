@@ -76,7 +76,7 @@ private:
   SweepPlan Plan_;
   VolumeGeometry Geometry_;
   std::unique_ptr<Image3D> Image_;
-  std::unique_ptr<ComputePipeline> March_, Filter_, Project_, Brute_;
+  std::shared_ptr<ComputePipeline> March_, Filter_, Project_, Brute_;
   double LastSeconds_ = 0.0;
   uint32_t LastDispatches_ = 0;
   uint64_t DirectionsComputed_ = 0;

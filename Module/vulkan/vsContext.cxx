@@ -1,5 +1,6 @@
 #include "vsContext.h"
 #include "vsError.h"
+#include "vsPipeline.h"
 
 #include <algorithm>
 #include <cctype>
@@ -428,6 +429,7 @@ void Context::Initialize(const ContextOptions& options)
 
 Context::~Context()
 {
+  this->Pipelines_.clear(); // before the device they live on
   if (this->Device_)
   {
     this->Device_.waitIdle();
@@ -445,6 +447,18 @@ Context::~Context()
     }
     this->Instance_.destroy();
   }
+}
+
+std::shared_ptr<ComputePipeline> Context::Pipeline(
+  const std::string& key, const std::function<std::shared_ptr<ComputePipeline>()>& make)
+{
+  std::lock_guard<std::mutex> lock(this->PipelineMutex_);
+  auto& slot = this->Pipelines_[key];
+  if (!slot)
+  {
+    slot = make();
+  }
+  return slot;
 }
 
 uint64_t Context::ValidationMessageCount() const

@@ -12,6 +12,8 @@
 #include "vissweepCoreModule.h"
 
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -19,6 +21,8 @@
 
 namespace vs
 {
+class ComputePipeline;
+
 /** What a device is and the limits that matter to VisSweep. */
 struct VISSWEEPCORE_EXPORT DeviceInfo
 {
@@ -84,6 +88,11 @@ public:
   /** Guards the queue: submissions from several threads take turns. */
   std::mutex& QueueMutex() { return this->QueueMutex_; }
 
+  /** The pipeline compiled under `key`, made by `make` on first use. Compiling a pipeline takes
+   *  seconds on lavapipe, so every pass of every mapper in the process shares them. */
+  std::shared_ptr<ComputePipeline> Pipeline(
+    const std::string& key, const std::function<std::shared_ptr<ComputePipeline>()>& make);
+
   /** Counts messages (called by the debug messenger). */
   void CountValidationMessage();
 
@@ -103,6 +112,8 @@ private:
   uint64_t ValidationMessages_ = 0;
   mutable std::mutex Mutex_;
   std::mutex QueueMutex_;
+  std::mutex PipelineMutex_;
+  std::map<std::string, std::shared_ptr<ComputePipeline>> Pipelines_;
 };
 }
 

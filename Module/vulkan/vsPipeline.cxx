@@ -18,18 +18,18 @@ vk::DescriptorType ToVk(BindingType t)
 ComputePipeline::ComputePipeline(std::shared_ptr<Context> context, const uint32_t* spirv,
   size_t spirvBytes, std::vector<BindingType> bindings, uint32_t pushConstantBytes,
   const std::string& name)
-  : Context_(std::move(context))
+  : Context_(context)
+  , Device_(context->Device())
   , Name_(name)
   , Bindings_(std::move(bindings))
   , PushBytes_(pushConstantBytes)
 {
-  if (pushConstantBytes > this->Context_->Info().MaxPushConstantsSize)
+  if (pushConstantBytes > context->Info().MaxPushConstantsSize)
   {
     throw DeviceLimitError("pipeline '" + name + "' needs " + std::to_string(pushConstantBytes) +
-      " bytes of push constants; the device allows " +
-      std::to_string(this->Context_->Info().MaxPushConstantsSize));
+      " bytes of push constants; the device allows " + std::to_string(context->Info().MaxPushConstantsSize));
   }
-  vk::Device device = this->Context_->Device();
+  vk::Device device = this->Device_;
   vk::ShaderModuleCreateInfo smci;
   smci.codeSize = spirvBytes;
   smci.pCode = spirv;
@@ -76,11 +76,19 @@ ComputePipeline::ComputePipeline(std::shared_ptr<Context> context, const uint32_
 
 ComputePipeline::~ComputePipeline()
 {
-  vk::Device device = this->Context_->Device();
+  vk::Device device = this->Device_;
   device.destroyPipeline(this->Pipeline_);
   device.destroyPipelineLayout(this->Layout_);
   device.destroyDescriptorSetLayout(this->SetLayout_);
   device.destroyShaderModule(this->Module_);
+}
+
+std::shared_ptr<ComputePipeline> SharedPipeline(const std::shared_ptr<Context>& context, const uint32_t* spirv,
+  size_t spirvBytes, std::vector<BindingType> bindings, uint32_t pushConstantBytes, const std::string& name)
+{
+  return context->Pipeline(name, [&]() {
+    return std::make_shared<ComputePipeline>(context, spirv, spirvBytes, bindings, pushConstantBytes, name);
+  });
 }
 
 DescriptorSet::DescriptorSet(const ComputePipeline& pipeline)

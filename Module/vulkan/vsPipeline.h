@@ -38,10 +38,11 @@ public:
   const std::vector<BindingType>& Bindings() const { return this->Bindings_; }
   uint32_t PushConstantBytes() const { return this->PushBytes_; }
   const std::string& Name() const { return this->Name_; }
-  const std::shared_ptr<Context>& GetContext() const { return this->Context_; }
+  std::shared_ptr<Context> GetContext() const { return this->Context_.lock(); }
 
 private:
-  std::shared_ptr<Context> Context_;
+  std::weak_ptr<Context> Context_; // the context's pipeline cache owns pipelines: no cycle
+  vk::Device Device_;
   std::string Name_;
   std::vector<BindingType> Bindings_;
   uint32_t PushBytes_ = 0;
@@ -72,6 +73,12 @@ private:
   vk::DescriptorPool Pool_;
   vk::DescriptorSet Set_;
 };
+
+/** The context's pipeline named `name`, compiled on first use and shared by every pass of the
+ *  process (compiling takes seconds on lavapipe). */
+VISSWEEPCORE_EXPORT std::shared_ptr<ComputePipeline> SharedPipeline(const std::shared_ptr<Context>& context,
+  const uint32_t* spirv, size_t spirvBytes, std::vector<BindingType> bindings, uint32_t pushConstantBytes,
+  const std::string& name);
 
 /** The embedded SPIR-V of a shader, as compiled at build time (vs_spirv_<name>). */
 #define VS_SPIRV(array) array, sizeof(array)

@@ -1,0 +1,58 @@
+#include "vsDeviceEnvironment.h"
+#include "vsBuffer.h"
+#include "vsEnvironmentMap.h"
+#include "vsError.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace vs
+{
+DeviceEnvironment::DeviceEnvironment(std::shared_ptr<Context> context, const EnvironmentMap& source, int minSize)
+{
+  if (source.Empty() || !EnvironmentMap::IsPowerOfTwo(source.Size))
+  {
+    throw InputError("the environment map is empty or not a power of two in size");
+  }
+  // Refine small maps so that the product with a D x D visibility map has a level log2(D).
+  EnvironmentMap refined;
+  const EnvironmentMap* map = &source;
+  if (source.Size < minSize)
+  {
+    refined = EnvironmentMap::Allocate(minSize);
+    const int f = minSize / source.Size;
+    for (int y = 0; y < minSize; ++y)
+    {
+      for (int x = 0; x < minSize; ++x)
+      {
+        glm::vec3 v = source.Texel(x / f, y / f);
+        float* t = &refined.Radiance[3 * (size_t(y) * minSize + x)];
+        t[0] = v.x;
+        t[1] = v.y;
+        t[2] = v.z;
+      }
+    }
+    refined.Finalize();
+    map = &refined;
+  }
+  this->Size_ = map->Size;
+  this->Level_ = map->Levels() - 1;
+  const size_t texels = size_t(map->Size) * map->Size;
+  std::vector<float> rgba(4 * texels, 0.0f);
+  for (size_t i = 0; i < texels; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      rgba[4 * i + c] = map->Radiance[3 * i + c];
+    }
+    this->MaxLuminance_ = std::max(this->MaxLuminance_,
+      0.2126 * map->Radiance[3 * i] + 0.7152 * map->Radiance[3 * i + 1] + 0.0722 * map->Radiance[3 * i + 2]);
+  }
+  this->Radiance_ = std::make_unique<Buffer>(context, rgba.size() * sizeof(float), "environment radiance");
+  this->Radiance_->Upload(rgba.data(), rgba.size() * sizeof(float));
+  this->Mips_ = std::make_unique<Buffer>(context, map->ImportanceMips.size() * sizeof(float), "environment importance");
+  this->Mips_->Upload(map->ImportanceMips.data(), map->ImportanceMips.size() * sizeof(float));
+}
+
+DeviceEnvironment::~DeviceEnvironment() = default;
+}

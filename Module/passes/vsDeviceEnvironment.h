@@ -1,0 +1,41 @@
+// vsDeviceEnvironment.h — an environment map on the device: the equal-area
+// octahedral radiance (one vec4 per texel) and its luminance importance quadtree
+// (the flat mip array of vs::EnvironmentMap), as the render pass reads them.
+#ifndef vsDeviceEnvironment_h
+#define vsDeviceEnvironment_h
+
+#include "vissweepCoreModule.h"
+
+#include <memory>
+
+namespace vs
+{
+class Buffer;
+class Context;
+class EnvironmentMap;
+
+class VISSWEEPCORE_EXPORT DeviceEnvironment
+{
+public:
+  /** Uploads `map`; maps smaller than minSize texels per side are refined (each texel
+   *  split into its 4 children, which is exact for piecewise-constant texels). */
+  DeviceEnvironment(std::shared_ptr<Context> context, const EnvironmentMap& map, int minSize = 8);
+  ~DeviceEnvironment();
+
+  const Buffer& Radiance() const { return *this->Radiance_; }
+  const Buffer& Mips() const { return *this->Mips_; }
+  int Size() const { return this->Size_; }
+  /** log2(Size): the finest level of the quadtree. */
+  int FinestLevel() const { return this->Level_; }
+  /** The largest radiance of any texel (luminance), for sanity bounds. */
+  double MaxLuminance() const { return this->MaxLuminance_; }
+  bool IsBlack() const { return this->MaxLuminance_ <= 0.0; }
+
+private:
+  std::unique_ptr<Buffer> Radiance_, Mips_;
+  int Size_ = 0, Level_ = 0;
+  double MaxLuminance_ = 0.0;
+};
+}
+
+#endif

@@ -1,0 +1,176 @@
+#include "vsMonteCarloPass.h"
+#include "vsBatch.h"
+#include "vsBuffer.h"
+#include "vsContext.h"
+#include "vsDeviceEnvironment.h"
+#include "vsDeviceVolume.h"
+#include "vsError.h"
+#include "vsImage.h"
+#include "vsMajorantGrid.h"
+#include "vsPipeline.h"
+#include "vsTransferFunctionTable.h"
+#include "vsVisibilityGrid.h"
+
+#include "vs_spirv_mc_render_r16.h"
+#include "vs_spirv_mc_render_r32f.h"
+#include "vs_spirv_mc_render_r8.h"
+
+namespace vs
+{
+MonteCarloPass::MonteCarloPass(std::shared_ptr<Context> context)
+  : Context_(std::move(context))
+{
+}
+
+MonteCarloPass::~MonteCarloPass() = default;
+
+const ComputePipeline& MonteCarloPass::PipelineFor(const VisibilityGrid* grid)
+{
+  vk::Format f = grid && grid->Valid() ? grid->Image().Format() : vk::Format::eR8Unorm;
+  int i = f == vk::Format::eR8Unorm ? 0 : f == vk::Format::eR16Unorm ? 1 : 2;
+  if (!this->Pipelines_[i])
+  {
+    using B = BindingType;
+    std::vector<B> bindings{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageImage, B::StorageBuffer,
+      B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer };
+    if (i == 0)
+      this->Pipelines_[i] = SharedPipeline(
+        this->Context_, VS_SPIRV(vs_spirv_mc_render_r8), bindings, sizeof(uint32_t), "monte carlo (r8 visibility)");
+    else if (i == 1)
+      this->Pipelines_[i] = SharedPipeline(
+        this->Context_, VS_SPIRV(vs_spirv_mc_render_r16), bindings, sizeof(uint32_t), "monte carlo (r16 visibility)");
+    else
+      this->Pipelines_[i] = SharedPipeline(
+        this->Context_, VS_SPIRV(vs_spirv_mc_render_r32f), bindings, sizeof(uint32_t), "monte carlo (r32f visibility)");
+  }
+  return *this->Pipelines_[i];
+}
+
+void MonteCarloPass::Reset(uint32_t width, uint32_t height)
+{
+  const uint64_t pixels = uint64_t(width) * height;
+  if (pixels == 0)
+  {
+    throw InputError("an image of zero pixels");
+  }
+  if (width != this->Width_ || height != this->Height_ || !this->Sum_)
+  {
+    this->Sum_.reset();
+    this->Comp_.reset();
+    this->Squares_.reset();
+    this->Depth_.reset();
+    this->Sum_ = std::make_unique<Buffer>(this->Context_, pixels * 16, "radiance sum");
+    this->Comp_ = std::make_unique<Buffer>(this->Context_, pixels * 16, "radiance compensation");
+    this->Squares_ = std::make_unique<Buffer>(this->Context_, pixels * 16, "radiance squares");
+    this->Depth_ = std::make_unique<Buffer>(this->Context_, pixels * 4, "depth");
+    this->LastDepth_.clear();
+  }
+  this->Sum_->Fill(0u);
+  this->Comp_->Fill(0u);
+  this->Squares_->Fill(0u);
+  this->Width_ = width;
+  this->Height_ = height;
+  this->Samples_ = 0;
+  this->TotalSeconds_ = 0.0;
+}
+
+void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTable& tf,
+  const MajorantGrid& majorants, const VisibilityGrid* grid, const DeviceEnvironment& environment,
+  shared::VsRenderParams params, const std::vector<float>& depth)
+{
+  if (params.viewport.x != this->Width_ || params.viewport.y != this->Height_ || !this->Sum_)
+  {
+    throw InputError("MonteCarloPass::Render for a size the accumulators were not reset to");
+  }
+  const uint64_t pixels = uint64_t(this->Width_) * this->Height_;
+  if (!depth.empty() && depth.size() != pixels)
+  {
+    throw InputError("depth buffer has " + std::to_string(depth.size()) + " values for " + std::to_string(pixels) +
+      " pixels");
+  }
+  if (depth != this->LastDepth_ || this->LastDepth_.empty())
+  {
+    this->LastDepth_ = depth.empty() ? std::vector<float>(pixels, 1.0f) : depth;
+    this->Depth_->Upload(this->LastDepth_.data(), pixels * 4);
+  }
+  const bool useGrid = grid && grid->Valid() && params.grid.w > 0;
+  if (!useGrid)
+  {
+    params.grid = glm::uvec4(1u, 1u, 1u, 0u);
+    if (!this->NoGrid_)
+    {
+      this->NoGrid_ = std::make_unique<Image3D>(this->Context_, 1, 1, 1, vk::Format::eR8Unorm, "no visibility grid");
+    }
+  }
+  params.viewport.z = this->Samples_;
+  if (!this->Params_)
+  {
+    this->Params_ = std::make_unique<Buffer>(this->Context_, sizeof(params), "render parameters");
+  }
+  this->Params_->Upload(&params, sizeof(params));
+
+  const ComputePipeline& pipeline = this->PipelineFor(useGrid ? grid : nullptr);
+  DescriptorSet set(pipeline);
+  set.Bind(0, volume.Image())
+    .Bind(1, tf.Lut())
+    .Bind(2, majorants.Image())
+    .Bind(3, useGrid ? grid->Image() : *this->NoGrid_)
+    .Bind(4, *this->Params_)
+    .Bind(5, environment.Radiance())
+    .Bind(6, environment.Mips())
+    .Bind(7, *this->Depth_)
+    .Bind(8, *this->Sum_)
+    .Bind(9, *this->Comp_)
+    .Bind(10, *this->Squares_);
+  Batch batch(this->Context_);
+  batch.BeginTimer("render");
+  // One sample per pixel per dispatch (see mc_render.glsl).
+  for (uint32_t s = 0; s < params.sampling.y; ++s)
+  {
+    batch.Dispatch(pipeline, set, &s, sizeof(s), (this->Width_ + 7) / 8, (this->Height_ + 7) / 8, 1);
+    batch.Barrier();
+  }
+  batch.EndTimer();
+  batch.Submit();
+  this->LastSeconds_ = batch.Seconds("render");
+  this->TotalSeconds_ += this->LastSeconds_;
+  this->Samples_ += params.sampling.y;
+}
+
+std::vector<float> MonteCarloPass::Mean() const
+{
+  const uint64_t n = uint64_t(this->Width_) * this->Height_ * 4;
+  std::vector<float> sum(n, 0.0f);
+  if (!this->Sum_ || this->Samples_ == 0)
+  {
+    return sum;
+  }
+  this->Sum_->Download(sum.data(), n * 4);
+  const float inv = 1.0f / float(this->Samples_);
+  for (auto& v : sum)
+  {
+    v *= inv;
+  }
+  return sum;
+}
+
+std::vector<float> MonteCarloPass::Variance() const
+{
+  const uint64_t n = uint64_t(this->Width_) * this->Height_ * 4;
+  std::vector<float> var(n, 0.0f);
+  if (!this->Sum_ || this->Samples_ < 2)
+  {
+    return var;
+  }
+  std::vector<float> sq(n);
+  this->Squares_->Download(sq.data(), n * 4);
+  std::vector<float> mean = this->Mean();
+  const double N = this->Samples_;
+  for (uint64_t i = 0; i < n; ++i)
+  {
+    double m = mean[i];
+    var[i] = float(std::max(0.0, (double(sq[i]) / N - m * m) * N / (N - 1.0)));
+  }
+  return var;
+}
+}

@@ -1,0 +1,67 @@
+// vsMonteCarloPass.h — progressive Monte Carlo single scattering (seed 000) on the
+// device: each Render() adds samples per pixel to compensated float accumulators
+// of (rgb, alpha) and of their squares; Mean() and Variance() read them back.
+// Reset() restarts accumulation (camera, transfer function, light... changed).
+#ifndef vsMonteCarloPass_h
+#define vsMonteCarloPass_h
+
+#include "vissweepCoreModule.h"
+#include "shared/render_params.h"
+
+#include <memory>
+#include <vector>
+
+namespace vs
+{
+class Buffer;
+class ComputePipeline;
+class Context;
+class DeviceEnvironment;
+class DeviceVolume;
+class Image3D;
+class MajorantGrid;
+class TransferFunctionTable;
+class VisibilityGrid;
+
+class VISSWEEPCORE_EXPORT MonteCarloPass
+{
+public:
+  explicit MonteCarloPass(std::shared_ptr<Context> context);
+  ~MonteCarloPass();
+
+  /** Clears the accumulators for a width x height image. */
+  void Reset(uint32_t width, uint32_t height);
+
+  /** Adds params.sampling.y samples per pixel. `grid` may be null for Uniform and Environment;
+   *  `depth` has one window depth per pixel (empty: nothing opaque). params.viewport.z (first sample
+   *  index) is set from the samples accumulated so far. */
+  void Render(const DeviceVolume& volume, const TransferFunctionTable& tf, const MajorantGrid& majorants,
+    const VisibilityGrid* grid, const DeviceEnvironment& environment, shared::VsRenderParams params,
+    const std::vector<float>& depth);
+
+  /** Per pixel (rgb, alpha) means, rows bottom-up. */
+  std::vector<float> Mean() const;
+  /** Per pixel variance of one sample of (rgb, alpha) (for standard errors: variance / samples). */
+  std::vector<float> Variance() const;
+
+  uint32_t Samples() const { return this->Samples_; }
+  uint32_t Width() const { return this->Width_; }
+  uint32_t Height() const { return this->Height_; }
+  /** Device seconds of the last Render and of all Renders since the last Reset. */
+  double LastSeconds() const { return this->LastSeconds_; }
+  double TotalSeconds() const { return this->TotalSeconds_; }
+
+private:
+  const ComputePipeline& PipelineFor(const VisibilityGrid* grid);
+
+  std::shared_ptr<Context> Context_;
+  std::shared_ptr<ComputePipeline> Pipelines_[3]; // r8, r16, r32f visibility
+  std::unique_ptr<Image3D> NoGrid_;
+  std::unique_ptr<Buffer> Params_, Depth_, Sum_, Comp_, Squares_;
+  std::vector<float> LastDepth_;
+  uint32_t Width_ = 0, Height_ = 0, Samples_ = 0;
+  double LastSeconds_ = 0.0, TotalSeconds_ = 0.0;
+};
+}
+
+#endif

@@ -1,0 +1,324 @@
+/*
+ * mc_render.glsl — unbiased progressive Monte Carlo single scattering under
+ * environment light (seed 000, Sec. 4 and 7). Included by mc_render_<format>.comp,
+ * which defines VS_VIS_FORMAT (the visibility grid's storage format).
+ *
+ * Per sample: a jittered camera ray; free-flight distance by delta tracking against
+ * the majorant bricks (empty bricks skipped); at a real collision, one direction from
+ * the strategy (Uniform, Environment, Visibility, Combined or TwoStep), its
+ * transmittance to the box by ratio tracking, and
+ *     L = albedo * (1/4pi) * T * L_env(w) / pdf(w).
+ * The approximate visibility only shapes the pdf; T is the true transmittance, which
+ * keeps the estimator unbiased. Escaping rays see the environment (or are transparent,
+ * so VTK's background shows); rays reaching the opaque depth are transparent.
+ * Accumulates compensated (Kahan) sums of (rgb, alpha) and their squares per pixel;
+ * one dispatch adds one sample per pixel, sample `sampleOffset` of the frame.
+ */
+#include "octahedral.h"
+#include "render_params.h"
+#include "rng.h"
+#include "strategies.h"
+
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+layout(binding = 0, r32f) uniform readonly image3D uVolume;
+layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
+layout(binding = 2, r32f) uniform readonly image3D uMajorant;
+layout(binding = 3, VS_VIS_FORMAT) uniform readonly image3D uVisibility;
+layout(std430, binding = 4) readonly buffer Params { VsRenderParams P; };
+layout(std430, binding = 5) readonly buffer EnvRadiance { vec4 uEnv[]; };
+layout(std430, binding = 6) readonly buffer EnvMips { float uMips[]; };
+layout(std430, binding = 7) readonly buffer Depth { float uDepth[]; };
+layout(std430, binding = 8) buffer Sum { vec4 uSum[]; };
+layout(std430, binding = 9) buffer Compensation { vec4 uComp[]; };
+layout(std430, binding = 10) buffer Squares { vec4 uSq[]; };
+layout(push_constant) uniform Push { uint sampleOffset; } pc;
+
+float vs_env_mip(uint index)
+{
+  return uMips[index];
+}
+
+#include "volume_access.glsl"
+
+/* Registers, loaded once per invocation (lavapipe does not hoist buffer loads). */
+ivec3 gDims;
+ivec3 gBricks;
+float gBrickSize;
+vec4 gTF;
+uint gEnvSize;
+uint gClipCount;
+/* The per-sample direction maps live at module scope: a function-local array inside the
+ * sample loop became a stack allocation per iteration in lavapipe and overflowed after
+ * ~100 samples per dispatch (measured: wrong images at 256 samples per frame). */
+float gValues[256];
+float gValues64[64];
+
+vec3 env_radiance(vec3 w)
+{
+  uvec2 t = vs_dir_to_texel(w, gEnvSize);
+  return uEnv[t.y * gEnvSize + t.x].rgb * P.sampling2.y;
+}
+
+float brick_majorant(ivec3 b)
+{
+  return imageLoad(uMajorant, clamp(b, ivec3(0), gBricks - 1)).r;
+}
+
+/* The brick the ray o + t d is in just after t, and the distance t where it leaves it. */
+ivec3 brick_at(vec3 o, vec3 d, float t, out float tExit)
+{
+  float nudge = 1e-4 * gBrickSize;
+  vec3 p = o + t * d;
+  vec3 probe = p + nudge * sign(d);
+  ivec3 b = ivec3(floor(probe / gBrickSize));
+  vec3 lo = vec3(b) * gBrickSize, hi = lo + gBrickSize;
+  float e = 1e30;
+  for (int i = 0; i < 3; ++i)
+  {
+    if (d[i] > 1e-20)
+      e = min(e, (hi[i] - p[i]) / d[i]);
+    else if (d[i] < -1e-20)
+      e = min(e, (lo[i] - p[i]) / d[i]);
+  }
+  /* Always move forward, even when rounding put p on the far side of a face. */
+  tExit = t + max(e, nudge / max(length(d), 1e-20));
+  return b;
+}
+
+/* Delta tracking on [t0, t1): true at a real collision (tHit, its albedo). */
+bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, out float tHit, out vec3 albedo)
+{
+  float t = t0;
+  while (t < t1)
+  {
+    float tExit;
+    ivec3 b = brick_at(o, d, t, tExit);
+    tExit = min(tExit, t1);
+    float mu = brick_majorant(b);
+    if (mu > 0.0)
+    {
+      while (true)
+      {
+        t -= log(1.0 - vs_rng_float(rng)) / mu;
+        if (t >= tExit)
+          break;
+        vec4 c = vs_classify(vs_sample_scalar(o + t * d, gDims), gTF);
+        if (vs_rng_float(rng) * mu < c.w)
+        {
+          tHit = t;
+          albedo = c.rgb;
+          return true;
+        }
+      }
+    }
+    t = tExit;
+  }
+  return false;
+}
+
+/* Ratio tracking of the transmittance on [t0, t1), with Russian roulette once it is small. */
+float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng)
+{
+  float T = 1.0;
+  float t = t0;
+  while (t < t1)
+  {
+    float tExit;
+    ivec3 b = brick_at(o, d, t, tExit);
+    tExit = min(tExit, t1);
+    float mu = brick_majorant(b);
+    if (mu > 0.0)
+    {
+      while (true)
+      {
+        t -= log(1.0 - vs_rng_float(rng)) / mu;
+        if (t >= tExit)
+          break;
+        float sigma = vs_classify(vs_sample_scalar(o + t * d, gDims), gTF).w;
+        T *= max(0.0, 1.0 - sigma / mu);
+        if (T < 0.05)
+        {
+          if (vs_rng_float(rng) < 0.5)
+            return 0.0;
+          T *= 2.0;
+        }
+      }
+    }
+    t = tExit;
+  }
+  return T;
+}
+
+/* The ray interval inside the (cropped) box and the kept side of every clip plane. */
+vec2 ray_interval(vec3 o, vec3 d)
+{
+  vec2 t = vs_intersect_box(o, d, P.boxMin.xyz, P.boxMax.xyz);
+  for (uint i = 0u; i < gClipCount; ++i)
+  {
+    vec4 pl = P.clipPlanes[i];
+    float dn = dot(pl.xyz, d);
+    float on = dot(pl.xyz, o) + pl.w;
+    if (abs(dn) < 1e-20)
+    {
+      if (on < 0.0)
+        return vec2(1.0, 0.0);
+      continue;
+    }
+    float th = -on / dn;
+    if (dn > 0.0)
+      t.x = max(t.x, th);
+    else
+      t.y = min(t.y, th);
+  }
+  return t;
+}
+
+float visibility_texel(uvec3 cell, uint n, uint D)
+{
+  ivec3 t = ivec3(int(cell.x * D + n % D), int(cell.y * D + n / D), int(cell.z));
+  return imageLoad(uVisibility, t).r;
+}
+
+/* The D x D values the strategy warps at index-space point x: visibility (+ epsilon),
+ * times the environment's importance at level log2(D) for Combined and TwoStep. */
+void direction_values(vec3 x, uint strategy, uint D, inout VsRng rng)
+{
+  uvec3 cells = P.grid.xyz;
+  vec3 c = (x - P.boxMin.xyz) / P.cellSize.xyz - 0.5;
+  c = clamp(c, vec3(0.0), vec3(cells - 1u));
+  uvec3 c0 = uvec3(floor(c));
+  uvec3 c1 = min(c0 + 1u, cells - 1u);
+  vec3 f = c - vec3(c0);
+  uint DD = D * D;
+  for (uint n = 0u; n < DD; ++n)
+    gValues[n] = 0.0;
+  if (P.sampling.z == VS_CELL_STOCHASTIC)
+  {
+    /* One corner with probability equal to its trilinear weight. */
+    vec3 u = vec3(vs_rng_vec2(rng), vs_rng_float(rng));
+    uvec3 cell = uvec3(u.x < f.x ? c1.x : c0.x, u.y < f.y ? c1.y : c0.y, u.z < f.z ? c1.z : c0.z);
+    for (uint n = 0u; n < DD; ++n)
+      gValues[n] = visibility_texel(cell, n, D);
+  }
+  else
+  {
+    for (uint k = 0u; k < 8u; ++k)
+    {
+      uvec3 cell = uvec3((k & 1u) != 0u ? c1.x : c0.x, (k & 2u) != 0u ? c1.y : c0.y, (k & 4u) != 0u ? c1.z : c0.z);
+      float w = ((k & 1u) != 0u ? f.x : 1.0 - f.x) * ((k & 2u) != 0u ? f.y : 1.0 - f.y) *
+        ((k & 4u) != 0u ? f.z : 1.0 - f.z);
+      if (w > 0.0)
+        for (uint n = 0u; n < DD; ++n)
+          gValues[n] += w * visibility_texel(cell, n, D);
+    }
+  }
+  uint level = vs_log2(D);
+  for (uint n = 0u; n < DD; ++n)
+  {
+    float v = gValues[n] + P.sampling2.x;
+    gValues[n] = strategy == VS_STRATEGY_VISIBILITY ? v : v * vs_env_node(level, uvec2(n % D, n / D));
+  }
+}
+
+vec3 sample_direction(vec3 x, uint strategy, inout VsRng rng, out float pdf)
+{
+  uint K = P.sampling.w;
+  uint D = P.grid.w;
+  if (strategy == VS_STRATEGY_ENVIRONMENT)
+    return vs_sample_environment(K, vs_rng_vec2(rng), pdf);
+  if (strategy == VS_STRATEGY_UNIFORM || D == 0u)
+    return vs_sample_uniform(vs_rng_vec2(rng), pdf);
+  direction_values(x, strategy, D, rng);
+  vec2 u = vs_rng_vec2(rng);
+  if (D == 8u)
+  {
+    for (uint n = 0u; n < 64u; ++n)
+      gValues64[n] = gValues[n];
+    return vs_sample_direction_8x8(strategy, gValues64, K, u, pdf);
+  }
+  return vs_sample_direction(strategy, gValues, D, K, u, pdf);
+}
+
+void accumulate(uint idx, vec4 v)
+{
+  /* Kahan summation: the sum stays exact to float precision over 1e5+ samples. */
+  vec4 y = v - uComp[idx];
+  vec4 s = uSum[idx];
+  vec4 t = s + y;
+  uComp[idx] = (t - s) - y;
+  uSum[idx] = t;
+  uSq[idx] += v * v;
+}
+
+void main()
+{
+  uvec2 pix = gl_GlobalInvocationID.xy;
+  uint W = P.viewport.x, H = P.viewport.y;
+  if (pix.x >= W || pix.y >= H)
+    return;
+  gDims = ivec3(P.dims.xyz);
+  gBricks = ivec3(P.bricks.xyz);
+  gBrickSize = P.sampling2.z;
+  gTF = P.tf;
+  gEnvSize = 1u << P.sampling.w;
+  gClipCount = P.bricks.w;
+  uint strategy = P.sampling.x;
+  uint idx = pix.y * W + pix.x;
+  float depth = uDepth[idx];
+
+  /* One sample per dispatch. A loop over samples here ran into lavapipe's handling of the
+   * strategies' array arguments inside loops: wrong results past ~100 iterations and heap
+   * corruption at 16 (measured); TestMonteCarlo checks that frame splits change no bit. */
+  {
+    VsRng rng = vs_rng_init(pix, P.viewport.z + pc.sampleOffset, P.viewport.w);
+    vec2 jitter = vs_rng_vec2(rng);
+    vec2 ndc = (vec2(pix) + jitter) / vec2(W, H) * 2.0 - 1.0;
+    vec4 pn = P.invViewProj * vec4(ndc, -1.0, 1.0);
+    vec4 pf = P.invViewProj * vec4(ndc, 1.0, 1.0);
+    vec3 ow = pn.xyz / pn.w;
+    vec3 dw = normalize(pf.xyz / pf.w - ow);
+    float tDepth = 1e30;
+    if (depth < 1.0)
+    {
+      vec4 pd = P.invViewProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
+      tDepth = dot(pd.xyz / pd.w - ow, dw);
+    }
+    vec3 o = (P.worldToIndex * vec4(ow, 1.0)).xyz;
+    vec3 d = (P.worldToIndex * vec4(dw, 0.0)).xyz;
+    vec2 ti = ray_interval(o, d);
+    float t0 = max(ti.x, 0.0), t1 = min(ti.y, tDepth);
+
+    vec4 result = vec4(0.0);
+    float tHit;
+    vec3 albedo;
+    if (t0 < t1 && delta_track(o, d, t0, t1, rng, tHit, albedo))
+    {
+      result.a = 1.0;
+      if (any(greaterThan(albedo, vec3(0.0))))
+      {
+        vec3 x = o + tHit * d;
+        float pdf;
+        vec3 w = sample_direction(x, strategy, rng, pdf);
+        if (pdf > 0.0)
+        {
+          vec3 Le = env_radiance(w);
+          if (any(greaterThan(Le, vec3(0.0))))
+          {
+            vec3 di = (P.worldToIndex * vec4(w, 0.0)).xyz;
+            vec2 ts = ray_interval(x, di);
+            float T = ratio_track(x, di, 0.0, ts.y, rng);
+            result.rgb = albedo * VS_INV_4PI * T * Le / pdf;
+          }
+        }
+      }
+    }
+    else if (tDepth >= 1e30 && P.background.w > 0.5)
+    {
+      result = vec4(env_radiance(dw), 1.0);
+    }
+    /* Non-finite contributions (should not happen) are dropped rather than poisoning the pixel. */
+    if (any(isnan(result)) || any(isinf(result)))
+      result = vec4(0.0);
+    accumulate(idx, result);
+  }
+}

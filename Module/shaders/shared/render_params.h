@@ -1,0 +1,38 @@
+/*
+ * render_params.h — what a Monte Carlo render dispatch needs (std430; vec4/uvec4/mat4
+ * members only), shared by mc_render.glsl and the host.
+ *
+ * Marching happens in index space (voxel centres at integers) with the ray
+ * parameter t in world units: o_i = worldToIndex o, d_i = worldToIndex_linear d for a
+ * unit world direction d, so extinction (per world unit) integrates over t directly.
+ */
+#ifndef VS_RENDER_PARAMS_H
+#define VS_RENDER_PARAMS_H
+#include "vs_prelude.h"
+
+VS_NAMESPACE_BEGIN
+
+VS_CONST uint VS_CELL_TRILINEAR = 0u;  /* interpolate the 8 cells' maps (seed 000) */
+VS_CONST uint VS_CELL_STOCHASTIC = 1u; /* pick one cell with its trilinear weight */
+
+struct VsRenderParams
+{
+  mat4 invViewProj;  /* OpenGL NDC (z in [-1,1]) -> world */
+  mat4 worldToIndex;
+  vec4 boxMin;       /* index-space box of the volume (cropped) */
+  vec4 boxMax;
+  vec4 dims;         /* voxels per axis */
+  vec4 tf;           /* transfer-function LUT parameters (frame_params.h) */
+  vec4 background;   /* rgb: constant background; w: 1 = escaping rays see the environment, 0 = transparent */
+  uvec4 viewport;    /* width, height, index of the first sample of this frame, seed */
+  uvec4 sampling;    /* x: strategy, y: samples per pixel this frame, z: cell mode, w: env finest level K */
+  vec4 sampling2;    /* x: epsilon added to visibility, y: environment intensity, z: majorant brick size, w: 0 */
+  uvec4 grid;        /* visibility cells (xyz), w: directions per side D (0 = no grid) */
+  vec4 cellSize;     /* index units per visibility cell */
+  uvec4 bricks;      /* majorant bricks (xyz), w: clip planes in use */
+  vec4 clipPlanes[6];/* index space: kept where dot(n, x) + w >= 0 */
+};
+
+VS_NAMESPACE_END
+
+#endif

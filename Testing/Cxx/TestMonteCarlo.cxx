@@ -1,0 +1,135 @@
+// The Monte Carlo renderer on the device: every strategy against a deterministic
+// quadrature of the single-scattering integral (homogeneous box, constant and
+// two-tone skies), the strategies against each other (unbiasedness), and
+// reproducibility with a fixed seed.
+#include "vsRenderTestScene.h"
+
+#include "shared/strategies.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace vs::shared;
+using vstest::RenderScene;
+
+namespace
+{
+const char* kNames[] = { "Uniform", "Environment", "Visibility", "Combined", "TwoStep" };
+
+double ExitDistance(glm::dvec3 p, glm::dvec3 w, double lo, double hi)
+{
+  double t = 1e300;
+  for (int i = 0; i < 3; ++i)
+  {
+    if (w[i] > 0)
+      t = std::min(t, (hi - p[i]) / w[i]);
+    else if (w[i] < 0)
+      t = std::min(t, (lo - p[i]) / w[i]);
+  }
+  return std::max(0.0, t);
+}
+
+// Radiance along the ray (x, y, -inf) -> +z through the homogeneous box [0, n]^3 (world = index):
+// L = int_0^L T(t) sigma_s int (1/4pi) exp(-sigma exit(x_t, w)) Le(w) dw dt (+ T(L) Le(+z) if visible).
+glm::dvec3 Quadrature(double x, double y, double n, double sigma, glm::dvec3 albedo,
+  const std::function<glm::dvec3(glm::dvec3)>& Le, bool visible)
+{
+  const int nt = 64, nth = 48, nph = 96;
+  glm::dvec3 sum(0.0);
+  for (int i = 0; i < nt; ++i)
+  {
+    double t = (i + 0.5) * n / nt;
+    glm::dvec3 p(x, y, t);
+    glm::dvec3 inner(0.0);
+    for (int a = 0; a < nth; ++a)
+    {
+      double th = (a + 0.5) * M_PI / nth;
+      for (int b = 0; b < nph; ++b)
+      {
+        double ph = (b + 0.5) * 2.0 * M_PI / nph;
+        glm::dvec3 w(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
+        double dw = std::sin(th) * (M_PI / nth) * (2.0 * M_PI / nph);
+        inner += Le(w) * std::exp(-sigma * ExitDistance(p, w, 0.0, n)) * dw;
+      }
+    }
+    sum += std::exp(-sigma * t) * sigma * albedo * inner / (4.0 * M_PI) * (n / nt);
+  }
+  if (visible)
+    sum += std::exp(-sigma * n) * Le(glm::dvec3(0, 0, 1));
+  return sum;
+}
+}
+
+// A homogeneous box lit by a constant sky, and by a two-tone sky (bright above, dim below):
+// every strategy agrees with the quadrature within 3 standard errors at every pixel.
+TEST(MonteCarlo, HomogeneousBoxMatchesQuadrature)
+{
+  const uint32_t n = 16;
+  const double sigma = 0.12;
+  const glm::vec3 albedo(0.9f, 0.6f, 0.3f);
+  struct Sky
+  {
+    vs::EnvironmentMap map;
+    std::function<glm::dvec3(glm::dvec3)> Le;
+  };
+  Sky skies[] = { { vs::EnvironmentMap::Constant(32, glm::vec3(1.0f)), [](glm::dvec3) { return glm::dvec3(1.0); } },
+    { vs::EnvironmentMap::TwoToneSky(32, glm::vec3(2.0f, 1.5f, 1.0f), glm::vec3(0.1f, 0.2f, 0.3f)),
+      [](glm::dvec3 w) { return w.z > 0 ? glm::dvec3(2.0, 1.5, 1.0) : glm::dvec3(0.1, 0.2, 0.3); } } };
+  const uint32_t W = 4, H = 4;
+  const float lo = 1.0f, hi = 14.0f;
+  for (const Sky& sky : skies)
+  {
+    RenderScene scene({ { n + 1, n + 1, n + 1 } }, [](int, int, int) { return 1.0f; }, sigma, albedo, sky.map);
+    for (uint32_t strategy = 0; strategy < 5; ++strategy)
+    {
+      auto p = scene.Params(W, H, lo, hi, strategy, 512, 11u, true);
+      auto [mean, var] = scene.Render(p, 4);
+      // Per channel, sum of z^2 over the 16 pixels ~ chi-square(16): reject beyond its 1e-4 quantile (45.1).
+      double chi2[3] = { 0, 0, 0 };
+      for (uint32_t y = 0; y < H; ++y)
+      {
+        for (uint32_t x = 0; x < W; ++x)
+        {
+          // The pixel integrates its footprint (box filter); the integrand is smooth across it: use the centre.
+          double wx = lo + (hi - lo) * (x + 0.5) / W, wy = lo + (hi - lo) * (y + 0.5) / H;
+          glm::dvec3 ref = Quadrature(wx, wy, n, sigma, glm::dvec3(albedo), sky.Le, true);
+          for (int c = 0; c < 3; ++c)
+          {
+            size_t i = 4 * (y * W + x) + c;
+            double se = std::sqrt(var[i] / scene.LastSamples) + 1e-3 * ref[c]; // + the quadrature's error
+            double z = (mean[i] - ref[c]) / se;
+            chi2[c] += z * z;
+          }
+        }
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_LT(chi2[c], 45.1) << kNames[strategy] << " channel " << c;
+      }
+    }
+  }
+}
+
+// The same samples whatever the split into frames and dispatches: a fixed seed gives the same
+// image bit for bit (counter-based random numbers), with 1 or 256 samples per Render().
+TEST(MonteCarlo, ReproducibleWhateverTheFrameSplit)
+{
+  RenderScene scene({ { 12, 10, 9 } }, [](int x, int y, int z) { return float((x + 2 * y + 3 * z) % 5) / 4.0f; }, 0.5,
+    glm::vec3(0.8f), vs::EnvironmentMap::SunDisk(64, glm::normalize(glm::vec3(1, 1, 2)), 5.0, glm::vec3(50.0f),
+      glm::vec3(0.2f)));
+  for (uint32_t strategy : { VS_STRATEGY_UNIFORM, VS_STRATEGY_TWO_STEP })
+  {
+    auto p = scene.Params(8, 8, -2.0f, 12.0f, strategy, 256, 5u, true);
+    auto [a, va] = scene.Render(p, 1);
+    p.sampling.y = 32;
+    auto [b, vb] = scene.Render(p, 8);
+    ASSERT_EQ(a.size(), b.size());
+    size_t differ = 0;
+    for (size_t i = 0; i < a.size(); ++i)
+      differ += std::abs(a[i] - b[i]) > 1e-6f * std::max(1.0f, std::abs(a[i]));
+    EXPECT_EQ(differ, 0u) << kNames[strategy];
+    auto [c, vc] = scene.Render(p, 8);
+    EXPECT_EQ(b, c) << kNames[strategy] << ": the same seed must give the same image";
+  }
+}

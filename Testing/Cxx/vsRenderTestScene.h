@@ -1,0 +1,87 @@
+// A small scene for core-level Monte Carlo tests: a volume, a transfer function with
+// sigma_t = scalar * sigmaAtOne and a constant albedo, an environment, the visibility
+// grid, and an orthographic camera looking along +z.
+#ifndef vsRenderTestScene_h
+#define vsRenderTestScene_h
+
+#include "vsVisibilityTestScene.h"
+
+#include "vsDeviceEnvironment.h"
+#include "vsEnvironmentMap.h"
+#include "vsMonteCarloPass.h"
+
+namespace vstest
+{
+struct RenderScene : VisibilityScene
+{
+  std::unique_ptr<vs::DeviceEnvironment> Environment;
+  std::unique_ptr<vs::VisibilityGrid> Grid;
+  glm::vec3 Albedo;
+
+  RenderScene(std::array<uint32_t, 3> dims, const std::function<float(int, int, int)>& scalar, double sigmaAtOne,
+    glm::vec3 albedo, const vs::EnvironmentMap& env)
+    : VisibilityScene(dims, scalar, sigmaAtOne)
+    , Albedo(albedo)
+  {
+    auto samples = vs::TransferFunctionSamples::FromFunctions(0.0f, 1.0f, 1025,
+      [&](double s) { return 1.0 - std::exp(-s * sigmaAtOne); },
+      [&](double, double c[3]) {
+        c[0] = albedo.x;
+        c[1] = albedo.y;
+        c[2] = albedo.z;
+      },
+      1.0, 1.0);
+    this->TF = std::make_unique<vs::TransferFunctionTable>(this->Context, samples);
+    this->Environment = std::make_unique<vs::DeviceEnvironment>(this->Context, env);
+    this->Grid = std::make_unique<vs::VisibilityGrid>(this->Context);
+    vs::VisibilityGridParameters p;
+    this->Grid->Compute(*this->Volume, *this->TF, *this->Majorants, this->Geometry, {}, p);
+  }
+
+  /** Orthographic camera along +z covering world x, y in [lo, hi]; `visibleEnvironment` for escaping rays. */
+  vs::shared::VsRenderParams Params(uint32_t w, uint32_t h, float lo, float hi, uint32_t strategy,
+    uint32_t spp, uint32_t seed, bool visibleEnvironment = false) const
+  {
+    vs::shared::VsRenderParams p{};
+    glm::mat4 m(1.0f);
+    m[0][0] = 0.5f * (hi - lo);
+    m[1][1] = 0.5f * (hi - lo);
+    m[2][2] = 100.0f;
+    m[3] = glm::vec4(0.5f * (hi + lo), 0.5f * (hi + lo), 0.0f, 1.0f);
+    p.invViewProj = m;
+    p.worldToIndex = glm::mat4(this->Geometry.WorldToIndex);
+    p.boxMin = glm::vec4(this->Geometry.BoxMin, 0.0f);
+    p.boxMax = glm::vec4(this->Geometry.BoxMax, 0.0f);
+    auto d = this->Volume->Dims();
+    p.dims = glm::vec4(d[0], d[1], d[2], 0);
+    auto t = this->TF->Params();
+    p.tf = glm::vec4(t[0], t[1], t[2], t[3]);
+    p.background = glm::vec4(0.0f, 0.0f, 0.0f, visibleEnvironment ? 1.0f : 0.0f);
+    p.viewport = glm::uvec4(w, h, 0u, seed);
+    p.sampling = glm::uvec4(strategy, spp, vs::shared::VS_CELL_STOCHASTIC, uint32_t(this->Environment->FinestLevel()));
+    p.sampling2 = glm::vec4(0.01f, 1.0f, float(this->Majorants->BrickSize()), 0.0f);
+    auto c = this->Grid->Cells();
+    p.grid = glm::uvec4(c[0], c[1], c[2], this->Grid->Side());
+    p.cellSize = glm::vec4(this->Grid->CellSize(), 0.0f);
+    auto b = this->Majorants->Bricks();
+    p.bricks = glm::uvec4(b[0], b[1], b[2], 0u);
+    return p;
+  }
+
+  /** Renders `frames` x params.sampling.y samples; returns (mean, variance) per pixel and channel. */
+  std::pair<std::vector<float>, std::vector<float>> Render(vs::shared::VsRenderParams p, int frames)
+  {
+    vs::MonteCarloPass pass(this->Context);
+    pass.Reset(p.viewport.x, p.viewport.y);
+    for (int f = 0; f < frames; ++f)
+    {
+      pass.Render(*this->Volume, *this->TF, *this->Majorants, this->Grid.get(), *this->Environment, p, {});
+    }
+    this->LastSamples = pass.Samples();
+    return { pass.Mean(), pass.Variance() };
+  }
+  uint32_t LastSamples = 0;
+};
+}
+
+#endif
