@@ -1,5 +1,6 @@
 // vissweep — the command-line tool: `vissweep info` prints the Vulkan device and its limits.
 #include "vsBenchSweeps.h"
+#include "vsRenderCommand.h"
 #include "vsContext.h"
 #include "vsError.h"
 
@@ -17,6 +18,7 @@ int main(int argc, char** argv)
   auto* bench = app.add_subcommand("bench", "benchmarks that print what they measure");
   bench->require_subcommand(1);
   vstool::AddBenchSweeps(*bench);
+  vstool::AddRender(app);
   try
   {
     app.parse(argc, argv);

@@ -1,5 +1,5 @@
 // vsToolVolume.h — reading volumes for the command-line tool by file type
-// (.vti, .mha/.mhd, .nrrd/.nhdr, .nii/.nii.gz, a DICOM folder), and the fixed
+// (.vti, .mha/.mhd, .nrrd/.nhdr, .nii/.nii.gz, a DICOM folder, .vdb), and the fixed
 // transfer functions the benchmarks use.
 #ifndef vsToolVolume_h
 #define vsToolVolume_h
@@ -7,14 +7,20 @@
 #include "vtkSmartPointer.h"
 
 #include <string>
+#include <vector>
 
 class vtkImageData;
 class vtkVolumeProperty;
 
 namespace vstool
 {
-/** Reads a volume; throws std::runtime_error naming the file and the reason. */
+/** Reads a volume; throws std::runtime_error naming the file and the reason. For .vdb, `grid`
+ *  is the float grid to read. */
 vtkSmartPointer<vtkImageData> ReadVolume(const std::string& path, const std::string& grid = "density");
+
+/** Reads time step `step` of a .vdb sequence (one file per step, a fixed extent for all steps). */
+vtkSmartPointer<vtkImageData> ReadVolumeSequence(
+  const std::vector<std::string>& files, const std::string& grid = "density", int step = 0);
 
 /** The skin transfer function of the benchmarks for the Colin27 MRI (scalars 0..255). */
 vtkSmartPointer<vtkVolumeProperty> SkinProperty();

@@ -1,0 +1,662 @@
+#include "vsRenderCommand.h"
+#include "vsToolVolume.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkEnvironmentMapReader.h"
+#include "vtkEnvironmentMapSource.h"
+#include "vtkExecutive.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkVisibilitySweepVolumeMapper.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <CLI/CLI.hpp>
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfOutputFile.h>
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+namespace vstool
+{
+namespace fs = std::filesystem;
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::time_point a, Clock::time_point b)
+{
+  return std::chrono::duration<double>(b - a).count();
+}
+
+// Turns an algorithm's vtkErrorMacro messages into the text of an exception.
+class ErrorCollector
+{
+public:
+  explicit ErrorCollector(vtkObject* object)
+    : Object(object)
+  {
+    this->Observer->SetCallback(&ErrorCollector::Collect);
+    this->Observer->SetClientData(&this->Messages);
+    this->Tag = object->AddObserver(vtkCommand::ErrorEvent, this->Observer);
+  }
+  ~ErrorCollector() { this->Object->RemoveObserver(this->Tag); }
+  const std::string& Text() const { return this->Messages; }
+
+private:
+  static void Collect(vtkObject*, unsigned long, void* clientData, void* callData)
+  {
+    auto* messages = static_cast<std::string*>(clientData);
+    if (!callData)
+    {
+      return;
+    }
+    std::string m(static_cast<const char*>(callData));
+    const auto colon = m.find("): ");
+    if (colon != std::string::npos)
+    {
+      m = m.substr(colon + 3);
+    }
+    while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
+    {
+      m.pop_back();
+    }
+    *messages += (messages->empty() ? "" : "; ") + m;
+  }
+
+  vtkObject* Object;
+  vtkNew<vtkCallbackCommand> Observer;
+  std::string Messages;
+  unsigned long Tag = 0;
+};
+
+std::string Lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(), ::tolower);
+  return s;
+}
+
+std::string Extension(const std::string& path)
+{
+  return Lower(fs::path(path).extension().string());
+}
+
+// A file written under a temporary name in the destination folder, renamed on Commit();
+// removed if never committed (so an error never leaves a partial output behind).
+class PendingFile
+{
+public:
+  explicit PendingFile(const std::string& destination)
+    : Destination(destination)
+  {
+    fs::path d(destination);
+    fs::path dir = d.has_parent_path() ? d.parent_path() : fs::path(".");
+    this->Temporary =
+      (dir / ("." + d.filename().string() + ".partial-" + std::to_string(::getpid()) + d.extension().string()))
+        .string();
+  }
+  PendingFile(const PendingFile&) = delete;
+  PendingFile& operator=(const PendingFile&) = delete;
+  ~PendingFile()
+  {
+    if (!this->Committed)
+    {
+      std::error_code ec;
+      fs::remove(this->Temporary, ec);
+    }
+  }
+  const std::string& Path() const { return this->Temporary; }
+  void Commit()
+  {
+    std::error_code ec;
+    fs::rename(this->Temporary, this->Destination, ec);
+    if (ec)
+    {
+      throw std::runtime_error("cannot rename '" + this->Temporary + "' to '" + this->Destination + "': " + ec.message());
+    }
+    this->Committed = true;
+  }
+
+private:
+  std::string Destination;
+  std::string Temporary;
+  bool Committed = false;
+};
+
+void WriteExr(vtkImageData* radiance, const std::string& path)
+{
+  if (!radiance)
+  {
+    throw std::runtime_error("the renderer produced no radiance image");
+  }
+  vtkDataArray* rgb = radiance->GetPointData()->GetArray("Radiance");
+  vtkDataArray* alpha = radiance->GetPointData()->GetArray("Alpha");
+  if (!rgb || rgb->GetNumberOfComponents() != 3)
+  {
+    throw std::runtime_error("the renderer's radiance image has no 3-component 'Radiance' array");
+  }
+  int dims[3];
+  radiance->GetDimensions(dims);
+  const int w = dims[0], h = dims[1];
+  std::vector<float> pixels(size_t(w) * size_t(h) * 4);
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const vtkIdType src = vtkIdType(y) * w + x;        // VTK: rows bottom-up
+      const size_t dst = (size_t(h - 1 - y) * w + x) * 4; // EXR: rows top-down
+      for (int c = 0; c < 3; ++c)
+      {
+        pixels[dst + c] = static_cast<float>(rgb->GetComponent(src, c));
+      }
+      pixels[dst + 3] = alpha ? static_cast<float>(alpha->GetComponent(src, 0)) : 1.0f;
+    }
+  }
+  try
+  {
+    Imf::Header header(w, h);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    const char* names[4] = { "R", "G", "B", "A" };
+    Imf::FrameBuffer frame;
+    for (int c = 0; c < 4; ++c)
+    {
+      header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+      frame.insert(names[c],
+        Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(pixels.data() + c), sizeof(float) * 4, sizeof(float) * 4 * w));
+    }
+    Imf::OutputFile file(path.c_str(), header);
+    file.setFrameBuffer(frame);
+    file.writePixels(h);
+  }
+  catch (const std::exception& e)
+  {
+    throw std::runtime_error("cannot write EXR '" + path + "': " + e.what());
+  }
+}
+
+void WritePng(vtkRenderWindow* window, const std::string& path)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ShouldRerenderOff(); // a re-render would add samples
+  grab->SetInputBufferTypeToRGB();
+  grab->Update();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    throw std::runtime_error("cannot write PNG '" + path + "'");
+  }
+}
+
+struct RenderOptions
+{
+  std::string SceneFile;
+  std::vector<std::string> Outputs;
+  int Width = 0;
+  int Height = 0;
+  int Spp = 0;
+  double TimeBudget = 0.0;
+  std::string Strategy;
+  int Seed = -1;
+  int SamplesPerFrame = 1;
+  std::string Json;
+  bool Quiet = false;
+};
+
+void Progress(int spp, int target, double elapsed, double budget, bool done)
+{
+  const int width = 30;
+  const double f = budget > 0.0 ? std::min(1.0, elapsed / budget) : std::min(1.0, double(spp) / std::max(target, 1));
+  const int filled = int(std::round(f * width));
+  std::string bar(size_t(filled), '#');
+  bar += std::string(size_t(width - filled), '.');
+  if (budget > 0.0)
+  {
+    std::fprintf(stderr, "\r[%s] %6d spp  %6.1f / %.1f s", bar.c_str(), spp, elapsed, budget);
+  }
+  else
+  {
+    std::fprintf(stderr, "\r[%s] %6d / %d spp  %6.1f s", bar.c_str(), spp, target, elapsed);
+  }
+  if (done)
+  {
+    std::fprintf(stderr, "\n");
+  }
+  std::fflush(stderr);
+}
+
+int Run(const RenderOptions& o)
+{
+  const auto start = Clock::now();
+  // Everything that can be checked before the (slow) render is checked first.
+  for (const auto& out : o.Outputs)
+  {
+    const std::string ext = Extension(out);
+    if (ext != ".exr" && ext != ".png")
+    {
+      throw std::runtime_error("-o " + out + ": unknown output format '" + ext + "' (expected .exr or .png)");
+    }
+    fs::path dir = fs::path(out).has_parent_path() ? fs::path(out).parent_path() : fs::path(".");
+    if (!fs::is_directory(dir))
+    {
+      throw std::runtime_error("-o " + out + ": folder '" + dir.string() + "' does not exist");
+    }
+  }
+  Scene scene = ReadSceneFile(o.SceneFile);
+  if (o.Width > 0)
+  {
+    scene.Render.Width = o.Width;
+  }
+  if (o.Height > 0)
+  {
+    scene.Render.Height = o.Height;
+  }
+  if (o.Spp > 0)
+  {
+    scene.Render.Spp = o.Spp;
+  }
+  if (!o.Strategy.empty())
+  {
+    StrategyIndex(o.Strategy, "--strategy");
+    scene.Render.Strategy = o.Strategy;
+  }
+  if (o.Seed >= 0)
+  {
+    scene.Render.Seed = o.Seed;
+  }
+  const bool timed = o.TimeBudget > 0.0;
+  const int target = timed ? (1 << 30) : scene.Render.Spp;
+
+  SceneObjects objects = BuildScene(scene);
+  auto* mapper = objects.Mapper.Get();
+  mapper->SetMaximumSamples(target);
+  mapper->SetSamplesPerFrame(std::min(o.SamplesPerFrame, target));
+  const double setupSeconds = Seconds(start, Clock::now());
+
+  const bool bar = !o.Quiet && ::isatty(STDERR_FILENO);
+  const auto loopStart = Clock::now();
+  double deviceSeconds = 0.0, sweepSeconds = 0.0, firstFrameSeconds = 0.0;
+  int frames = 0, reached = 0, stalled = 0;
+  while (true)
+  {
+    const auto f0 = Clock::now();
+    objects.Window->Render();
+    const double frameSeconds = Seconds(f0, Clock::now());
+    ++frames;
+    if (frames == 1)
+    {
+      firstFrameSeconds = frameSeconds;
+    }
+    const char* error = mapper->GetLastError();
+    if (error && *error)
+    {
+      throw std::runtime_error(std::string("render failed: ") + error);
+    }
+    deviceSeconds += mapper->GetLastDeviceSeconds();
+    sweepSeconds = std::max(sweepSeconds, mapper->GetLastSweepSeconds());
+    const int acc = mapper->GetAccumulatedSamples();
+    stalled = acc > reached ? 0 : stalled + 1;
+    reached = acc;
+    if (stalled >= 3)
+    {
+      throw std::runtime_error("the renderer accumulates no samples (" + std::to_string(reached) + " spp after " +
+        std::to_string(frames) + " frames)");
+    }
+    const double elapsed = Seconds(loopStart, Clock::now());
+    const bool done = reached >= target || (timed && elapsed + frameSeconds > o.TimeBudget);
+    if (bar)
+    {
+      Progress(reached, target, elapsed, timed ? o.TimeBudget : 0.0, done);
+    }
+    if (done)
+    {
+      break;
+    }
+  }
+  const double renderSeconds = Seconds(loopStart, Clock::now());
+
+  // Outputs: temporary names first, renamed only when all are written.
+  std::vector<std::unique_ptr<PendingFile>> pending;
+  for (const auto& out : o.Outputs)
+  {
+    pending.push_back(std::make_unique<PendingFile>(out));
+    if (Extension(out) == ".exr")
+    {
+      vtkImageData* radiance = mapper->GetRadiance();
+      if (radiance)
+      {
+        int dims[3];
+        radiance->GetDimensions(dims);
+        if (dims[0] != scene.Render.Width || dims[1] != scene.Render.Height)
+        {
+          throw std::runtime_error("the radiance image is " + std::to_string(dims[0]) + "x" +
+            std::to_string(dims[1]) + ", not the requested " + std::to_string(scene.Render.Width) + "x" +
+            std::to_string(scene.Render.Height));
+        }
+      }
+      WriteExr(radiance, pending.back()->Path());
+    }
+    else
+    {
+      WritePng(objects.Window, pending.back()->Path());
+    }
+  }
+
+  const double pixels = double(scene.Render.Width) * scene.Render.Height;
+  nlohmann::json stats;
+  stats["scene"] = o.SceneFile;
+  stats["outputs"] = o.Outputs;
+  stats["width"] = scene.Render.Width;
+  stats["height"] = scene.Render.Height;
+  stats["strategy"] = scene.Render.Strategy;
+  stats["seed"] = scene.Render.Seed;
+  stats["spp"] = reached;
+  if (timed)
+  {
+    stats["time_budget_seconds"] = o.TimeBudget;
+  }
+  else
+  {
+    stats["spp_requested"] = scene.Render.Spp;
+  }
+  stats["frames"] = frames;
+  stats["samples_per_frame"] = mapper->GetSamplesPerFrame();
+  stats["setup_seconds"] = setupSeconds;       // reading the volume and the environment
+  stats["render_seconds"] = renderSeconds;     // the progressive loop, first frame's sweeps included
+  stats["first_frame_seconds"] = firstFrameSeconds;
+  stats["device_seconds"] = { { "sweeps", sweepSeconds }, { "render", deviceSeconds } };
+  stats["paths_per_second"] = renderSeconds > 0.0 ? pixels * reached / renderSeconds : 0.0;
+  stats["paths_per_device_second"] = deviceSeconds > 0.0 ? pixels * reached / deviceSeconds : 0.0;
+  stats["visibility_updates"] = mapper->GetVisibilityUpdateCount();
+  stats["accumulation_resets"] = mapper->GetAccumulationResetCount();
+
+  std::unique_ptr<PendingFile> jsonFile;
+  if (!o.Json.empty() && o.Json != "-")
+  {
+    jsonFile = std::make_unique<PendingFile>(o.Json);
+    std::ofstream out(jsonFile->Path());
+    out << stats.dump(2) << "\n";
+    if (!out)
+    {
+      throw std::runtime_error("--json " + o.Json + ": cannot write");
+    }
+  }
+  for (auto& p : pending)
+  {
+    p->Commit();
+  }
+  if (jsonFile)
+  {
+    jsonFile->Commit();
+  }
+  stats["wall_seconds"] = Seconds(start, Clock::now());
+  if (o.Json == "-")
+  {
+    std::cout << stats.dump(2) << std::endl;
+  }
+  else
+  {
+    std::printf("%d x %d, %s, %d spp in %.2f s (setup %.2f s, sweeps %.3f s device, render %.3f s device): "
+                "%.3g paths/s\n",
+      scene.Render.Width, scene.Render.Height, scene.Render.Strategy.c_str(), reached, renderSeconds, setupSeconds,
+      sweepSeconds, deviceSeconds, stats["paths_per_second"].get<double>());
+    for (const auto& out : o.Outputs)
+    {
+      std::printf("wrote %s\n", out.c_str());
+    }
+  }
+  return 0;
+}
+}
+
+vtkSmartPointer<vtkVolumeProperty> MakeVolumeProperty(const Scene& scene)
+{
+  const auto& tf = scene.TransferFunction;
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  vtkNew<vtkPiecewiseFunction> opacity;
+  for (const auto& p : tf.Opacity)
+  {
+    opacity->AddPoint(p[0], p[1]);
+  }
+  vtkNew<vtkColorTransferFunction> color;
+  if (tf.Color.empty())
+  {
+    color->AddRGBPoint(tf.Opacity.empty() ? 0.0 : tf.Opacity.front()[0], 1.0, 1.0, 1.0);
+  }
+  for (const auto& p : tf.Color)
+  {
+    color->AddRGBPoint(p[0], p[1], p[2], p[3]);
+  }
+  property->SetScalarOpacity(opacity);
+  property->SetColor(color);
+  property->SetScalarOpacityUnitDistance(tf.UnitDistance);
+  property->SetInterpolationTypeToLinear();
+  property->ShadeOff();
+  return property;
+}
+
+vtkSmartPointer<vtkAlgorithm> MakeEnvironment(const Scene& scene)
+{
+  const auto& e = scene.Environment;
+  using Kind = Scene::EnvironmentSection::Kind;
+  vtkSmartPointer<vtkAlgorithm> algorithm;
+  std::string what;
+  if (e.Type == Kind::File)
+  {
+    auto reader = vtkSmartPointer<vtkEnvironmentMapReader>::New();
+    reader->SetFileName(e.File.c_str());
+    reader->SetRotationDegrees(e.RotationDeg);
+    reader->SetOctahedralSize(e.OctahedralSize);
+    algorithm = reader;
+    what = "environment.file '" + e.File + "'";
+  }
+  else
+  {
+    auto source = vtkSmartPointer<vtkEnvironmentMapSource>::New();
+    switch (e.Type)
+    {
+      case Kind::Constant:
+        source->SetTypeToConstant();
+        source->SetColor(e.Constant.data());
+        break;
+      case Kind::Sun:
+        source->SetTypeToSunDisk();
+        source->SetSunDirection(e.SunDirection.data());
+        source->SetSunAngularRadius(e.SunRadiusDeg);
+        source->SetSunRadiance(e.SunRadiance.data());
+        source->SetSkyColor(e.SunSky.data());
+        break;
+      default:
+        source->SetTypeToTwoToneSky();
+        source->SetUpperColor(e.Upper.data());
+        source->SetLowerColor(e.Lower.data());
+        break;
+    }
+    if (e.OctahedralSize > 0)
+    {
+      source->SetOctahedralSize(e.OctahedralSize);
+    }
+    algorithm = source;
+    what = "environment";
+  }
+  ErrorCollector errors(algorithm);
+  ErrorCollector executiveErrors(algorithm->GetExecutive());
+  algorithm->Update();
+  auto* image = vtkImageData::SafeDownCast(algorithm->GetOutputDataObject(0));
+  if (!errors.Text().empty() || !executiveErrors.Text().empty() || !image || image->GetNumberOfPoints() == 0)
+  {
+    std::string reason = errors.Text().empty() ? executiveErrors.Text() : errors.Text();
+    throw std::runtime_error(what + ": cannot build the environment map" + (reason.empty() ? "" : ": " + reason));
+  }
+  return algorithm;
+}
+
+void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
+{
+  mapper->SetRenderModeToMonteCarlo();
+  mapper->SetSamplingStrategy(StrategyIndex(scene.Render.Strategy));
+  mapper->SetSeed(scene.Render.Seed);
+  mapper->SetMaximumSamples(scene.Render.Spp);
+  mapper->SetDensityScale(scene.TransferFunction.DensityScale);
+  mapper->SetEnvironmentIntensity(scene.Environment.Intensity);
+  mapper->SetEnvironmentVisible(scene.Environment.VisibleBackground);
+  mapper->SetExposure(scene.Render.Exposure);
+  mapper->SetToneMapping(scene.Render.ToneMapping);
+  const auto& v = scene.Visibility;
+  if (v.DirectionResolution)
+  {
+    mapper->SetDirectionResolution(*v.DirectionResolution);
+  }
+  if (v.VoxelsPerCell)
+  {
+    mapper->SetVoxelsPerCell(*v.VoxelsPerCell);
+  }
+  if (v.KernelResolution)
+  {
+    mapper->SetKernelResolution(*v.KernelResolution);
+  }
+  if (v.Filtering)
+  {
+    mapper->SetFiltering(*v.Filtering);
+  }
+  if (v.FilterAngleFraction)
+  {
+    mapper->SetFilterAngleFraction(*v.FilterAngleFraction);
+  }
+  if (v.Epsilon)
+  {
+    mapper->SetVisibilityEpsilon(*v.Epsilon);
+  }
+  if (v.CellMode)
+  {
+    mapper->SetCellMode(*v.CellMode == "trilinear" ? vtkVisibilitySweepVolumeMapper::TrilinearCells
+                                                   : vtkVisibilitySweepVolumeMapper::StochasticCell);
+  }
+  mapper->RemoveAllClippingPlanes();
+  for (const auto& p : scene.ClipPlanes)
+  {
+    vtkNew<vtkPlane> plane; // VTK keeps the half-space the normal points into
+    plane->SetOrigin(p.Origin.data());
+    plane->SetNormal(p.Normal.data());
+    mapper->AddClippingPlane(plane);
+  }
+}
+
+SceneObjects BuildScene(const Scene& scene)
+{
+  SceneObjects o;
+  try
+  {
+    o.Image = scene.Volume.Files.empty()
+      ? ReadVolume(scene.Volume.File, scene.Volume.Grid)
+      : ReadVolumeSequence(scene.Volume.Files, scene.Volume.Grid, scene.Volume.TimeStep);
+  }
+  catch (const std::exception& e)
+  {
+    throw std::runtime_error(std::string(scene.Volume.Files.empty() ? "volume.file: " : "volume.files: ") + e.what());
+  }
+  vtkDataArray* scalars = o.Image->GetPointData()->GetScalars();
+  if (scalars->GetNumberOfComponents() != 1)
+  {
+    throw std::runtime_error("volume: the scalars have " + std::to_string(scalars->GetNumberOfComponents()) +
+      " components (expected 1)");
+  }
+  o.Property = MakeVolumeProperty(scene);
+  o.Environment = MakeEnvironment(scene);
+
+  o.Mapper = vtkSmartPointer<vtkVisibilitySweepVolumeMapper>::New();
+  o.Mapper->SetInputData(o.Image);
+  o.Mapper->SetEnvironmentConnection(o.Environment->GetOutputPort());
+  ConfigureMapper(o.Mapper, scene);
+
+  o.Volume = vtkSmartPointer<vtkVolume>::New();
+  o.Volume->SetMapper(o.Mapper);
+  o.Volume->SetProperty(o.Property);
+
+  o.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  const auto& bg = scene.Environment.Background;
+  o.Renderer->SetBackground(bg[0], bg[1], bg[2]);
+  o.Renderer->AddVolume(o.Volume);
+  vtkCamera* camera = o.Renderer->GetActiveCamera();
+  camera->SetPosition(scene.Camera.Position.data());
+  camera->SetFocalPoint(scene.Camera.FocalPoint.data());
+  camera->SetViewUp(scene.Camera.ViewUp.data());
+  camera->SetViewAngle(scene.Camera.ViewAngle);
+  if (scene.Camera.ParallelScale)
+  {
+    camera->ParallelProjectionOn();
+    camera->SetParallelScale(*scene.Camera.ParallelScale);
+  }
+  camera->OrthogonalizeViewUp();
+  o.Renderer->ResetCameraClippingRange();
+
+  o.Window = vtkSmartPointer<vtkRenderWindow>::New();
+  o.Window->SetOffScreenRendering(1);
+  o.Window->SetMultiSamples(0);
+  o.Window->SetSize(scene.Render.Width, scene.Render.Height);
+  o.Window->AddRenderer(o.Renderer);
+  return o;
+}
+
+void AddRender(CLI::App& app)
+{
+  auto o = std::make_shared<RenderOptions>();
+  auto* cmd = app.add_subcommand("render", "render a scene file (Monte Carlo, progressive) to EXR and/or PNG");
+  cmd->add_option("scene", o->SceneFile, "the scene file (JSON, see DESIGN.md)")->required();
+  cmd->add_option("-o,--output", o->Outputs, "output image: .exr (linear float RGBA) or .png (tone mapped); repeat for both")
+    ->required();
+  cmd->add_option("--width", o->Width, "image width (overrides the scene)")->check(CLI::Range(1, 16384));
+  cmd->add_option("--height", o->Height, "image height (overrides the scene)")->check(CLI::Range(1, 16384));
+  auto* spp = cmd->add_option("--spp", o->Spp, "samples per pixel (overrides the scene)")->check(CLI::Range(1, 1 << 30));
+  auto* budget = cmd->add_option("--time-budget", o->TimeBudget, "render for this many seconds instead of a fixed spp")
+                   ->check(CLI::PositiveNumber);
+  spp->excludes(budget);
+  cmd->add_option("--strategy", o->Strategy, "uniform, environment, visibility, combined or two-step (overrides the scene)");
+  cmd->add_option("--seed", o->Seed, "random seed (overrides the scene)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--samples-per-frame", o->SamplesPerFrame, "samples per pixel added by each progressive frame")
+    ->check(CLI::Range(1, 1 << 16));
+  cmd->add_option("--json", o->Json, "write the statistics as JSON to this file ('-' = stdout)");
+  cmd->add_flag("-q,--quiet", o->Quiet, "no progress bar");
+  cmd->callback([o]() {
+    int status = 2;
+    try
+    {
+      status = Run(*o);
+    }
+    catch (const std::exception& e)
+    {
+      std::cerr << (::isatty(STDERR_FILENO) ? "\n" : "") << "vissweep render: error: " << e.what() << std::endl;
+      status = 2;
+    }
+    throw CLI::RuntimeError(status);
+  });
+}
+}

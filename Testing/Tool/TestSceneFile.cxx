@@ -1,0 +1,359 @@
+// The scene file of DESIGN.md: round trips, relative paths, and an error naming the key
+// for each kind of bad value.
+#include "vsSceneFile.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include <unistd.h>
+
+using vstool::ParseScene;
+using vstool::ParseSceneText;
+using vstool::Scene;
+using vstool::ToJson;
+using json = nlohmann::json;
+
+namespace
+{
+// A complete, valid scene (every section, a procedural sun).
+json FullScene()
+{
+  return json::parse(R"({
+    "description": "test",
+    "volume": {"file": "vol/ch2.nii.gz", "grid": "density"},
+    "transfer_function": {
+      "opacity": [[0, 0.0], [60, 0.0], [120, 0.8]],
+      "color": [[0, 1, 1, 1], [255, 0.9, 0.7, 0.6]],
+      "unit_distance": 1.5, "density_scale": 2.0
+    },
+    "environment": {"sun": {"direction": [1, 0, 1], "radius_deg": 3, "radiance": [100, 90, 80], "sky": [0.1, 0.2, 0.3]},
+                    "intensity": 0.5, "visible_background": false, "background": [0.1, 0.1, 0.1],
+                    "octahedral_size": 64},
+    "camera": {"position": [0, -400, 0], "focal_point": [90, 108, 90], "view_up": [0, 0, 1], "view_angle": 30,
+               "parallel_scale": 120.25},
+    "render": {"width": 320, "height": 200, "spp": 64, "strategy": "combined", "seed": 7, "exposure": 1.5,
+               "tone_mapping": false},
+    "visibility": {"direction_resolution": 16, "voxels_per_cell": 8, "kernel_resolution": 64, "filtering": false,
+                   "filter_angle_fraction": 0.25, "epsilon": 0.02, "cell_mode": "trilinear"},
+    "clip_planes": [{"origin": [90, 108, 90], "normal": [1, 0, 0]}, {"origin": [0, 0, 0], "normal": [0, 0, -1]}]
+  })");
+}
+
+// The message of the error a scene gives ("" if it parses).
+std::string ErrorOf(const json& j)
+{
+  try
+  {
+    ParseScene(j, "/scenes");
+  }
+  catch (const std::runtime_error& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
+// Applies an edit to the full scene and returns the error message.
+std::string ErrorAfter(const std::function<void(json&)>& edit)
+{
+  json j = FullScene();
+  edit(j);
+  return ErrorOf(j);
+}
+
+#define EXPECT_ERROR_STARTS(message, prefix)                                                                      \
+  do                                                                                                              \
+  {                                                                                                               \
+    const std::string m_ = (message);                                                                             \
+    EXPECT_EQ(m_.rfind(prefix, 0), 0u) << "expected an error starting with '" << (prefix) << "', got '" << m_ << "'"; \
+  } while (0)
+}
+
+TEST(SceneFile, ParsesEverySection)
+{
+  Scene s = ParseScene(FullScene(), "/scenes");
+  EXPECT_EQ(s.Volume.File, "/scenes/vol/ch2.nii.gz");
+  EXPECT_EQ(s.TransferFunction.Opacity.size(), 3u);
+  EXPECT_EQ(s.TransferFunction.Color[1][3], 0.6);
+  EXPECT_EQ(s.TransferFunction.UnitDistance, 1.5);
+  EXPECT_EQ(s.Environment.Type, Scene::EnvironmentSection::Kind::Sun);
+  EXPECT_EQ(s.Environment.SunRadiusDeg, 3.0);
+  EXPECT_FALSE(s.Environment.VisibleBackground);
+  EXPECT_EQ(s.Camera.ParallelScale.value(), 120.25);
+  EXPECT_EQ(s.Render.Width, 320);
+  EXPECT_EQ(s.Render.Strategy, "combined");
+  EXPECT_EQ(vstool::StrategyIndex(s.Render.Strategy), 3);
+  EXPECT_EQ(s.Visibility.DirectionResolution.value(), 16);
+  EXPECT_EQ(s.Visibility.CellMode.value(), "trilinear");
+  ASSERT_EQ(s.ClipPlanes.size(), 2u);
+  EXPECT_EQ(s.ClipPlanes[1].Normal[2], -1.0);
+}
+
+TEST(SceneFile, DefaultsOfOptionalSections)
+{
+  Scene s = ParseScene(json::parse(R"({
+    "volume": {"file": "/data/v.vti"},
+    "transfer_function": {"opacity": [[0, 0], [1, 1]]},
+    "camera": {"position": [0, -10, 0], "focal_point": [0, 0, 0]}
+  })"),
+    "/x");
+  EXPECT_EQ(s.Volume.File, "/data/v.vti");
+  EXPECT_EQ(s.Volume.Grid, "density");
+  EXPECT_TRUE(s.TransferFunction.Color.empty());
+  EXPECT_EQ(s.Environment.Type, Scene::EnvironmentSection::Kind::Constant);
+  EXPECT_EQ(s.Camera.ViewUp, (vstool::Vec3{ 0, 0, 1 }));
+  EXPECT_EQ(s.Camera.ViewAngle, 30.0);
+  EXPECT_FALSE(s.Camera.ParallelScale.has_value());
+  EXPECT_EQ(s.Render.Width, 512);
+  EXPECT_EQ(s.Render.Spp, 64);
+  EXPECT_EQ(s.Render.Strategy, "two-step");
+  EXPECT_FALSE(s.Visibility.DirectionResolution.has_value());
+  EXPECT_TRUE(s.ClipPlanes.empty());
+}
+
+TEST(SceneFile, RoundTrip)
+{
+  // Every environment kind, and with/without the optional sections.
+  std::vector<json> scenes;
+  scenes.push_back(FullScene());
+  json file = FullScene();
+  file["environment"] = json::parse(R"({"file": "../env/sunrise.exr", "rotation_deg": 90.5, "intensity": 2})");
+  file.erase("visibility");
+  file.erase("clip_planes");
+  file["camera"].erase("parallel_scale");
+  scenes.push_back(file);
+  json constant = FullScene();
+  constant["environment"] = json::parse(R"({"constant": [0.5, 0.25, 1e-3]})");
+  constant["transfer_function"].erase("color");
+  scenes.push_back(constant);
+  json twoTone = FullScene();
+  twoTone["environment"] = json::parse(R"({"two_tone": {"upper": [1, 1, 1], "lower": [0.1, 0.2, 0.3]}})");
+  twoTone["volume"] = json::parse(R"({"files": ["a_0001.vdb", "a_0002.vdb"], "grid": "smoke", "time_step": 1})");
+  twoTone["visibility"] = json::parse(R"({"epsilon": 0.1})");
+  scenes.push_back(twoTone);
+  // Values that do not print exactly in few digits.
+  json awkward = FullScene();
+  awkward["camera"]["position"] = { 0.1, -1.0 / 3.0, 1e-17 };
+  awkward["transfer_function"]["opacity"] = { { -1024.5, 0.0 }, { 0.1, 1.0 / 7.0 }, { 3071, 1.0 } };
+  scenes.push_back(awkward);
+
+  for (const auto& j : scenes)
+  {
+    Scene s = ParseScene(j, "/scenes/a");
+    const json out = ToJson(s);
+    Scene back = ParseScene(out, "/somewhere/else"); // paths are absolute after parsing
+    EXPECT_TRUE(back == s) << out.dump(2);
+    EXPECT_EQ(ToJson(back), out);
+    // and through text
+    Scene text = ParseSceneText(out.dump(), "/elsewhere");
+    EXPECT_TRUE(text == s);
+  }
+}
+
+TEST(SceneFile, EqualityNoticesChanges)
+{
+  Scene a = ParseScene(FullScene(), "/s");
+  Scene b = a;
+  EXPECT_TRUE(a == b);
+  b.Render.Seed = 8;
+  EXPECT_FALSE(a == b);
+  b = a;
+  b.Visibility.Epsilon.reset();
+  EXPECT_FALSE(a == b);
+  b = a;
+  b.Environment.SunSky[1] = 0.0;
+  EXPECT_FALSE(a == b);
+}
+
+TEST(SceneFile, RelativePathsResolveAgainstTheSceneFolder)
+{
+  Scene s = ParseScene(json::parse(R"({
+    "volume": {"file": "../volumes/./head.nii.gz"},
+    "transfer_function": {"opacity": [[0, 0], [1, 1]]},
+    "environment": {"file": "env/forest.exr"},
+    "camera": {"position": [0, -10, 0], "focal_point": [0, 0, 0]}
+  })"),
+    "/data/scenes");
+  EXPECT_EQ(s.Volume.File, "/data/volumes/head.nii.gz");
+  EXPECT_EQ(s.Environment.File, "/data/scenes/env/forest.exr");
+
+  // ReadSceneFile uses the file's own folder, even when given a relative name.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("vissweep_scene_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir / "sub");
+  const fs::path file = dir / "sub" / "scene.json";
+  {
+    std::ofstream out(file);
+    out << R"({"volume": {"files": ["f1.vdb", "/abs/f2.vdb"]}, "transfer_function": {"opacity": [[0, 0]]},
+              "camera": {"position": [0, -10, 0], "focal_point": [0, 0, 0]}})";
+  }
+  const fs::path cwd = fs::current_path();
+  fs::current_path(dir);
+  Scene r = vstool::ReadSceneFile("sub/scene.json");
+  fs::current_path(cwd);
+  ASSERT_EQ(r.Volume.Files.size(), 2u);
+  EXPECT_EQ(r.Volume.Files[0], (fs::absolute(dir) / "sub" / "f1.vdb").lexically_normal().string());
+  EXPECT_EQ(r.Volume.Files[1], "/abs/f2.vdb");
+  fs::remove_all(dir);
+}
+
+TEST(SceneFile, FileErrorsNameTheFile)
+{
+  try
+  {
+    vstool::ReadSceneFile("/nonexistent/scene.json");
+    FAIL() << "no error";
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/scene.json"), std::string::npos) << e.what();
+  }
+  try
+  {
+    ParseSceneText("{\"volume\": {\"file\": \"a.vti\"},\n \"camera\": [1, 2,,]}", "/");
+    FAIL() << "no error";
+  }
+  catch (const std::runtime_error& e)
+  {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("invalid JSON"), std::string::npos) << m;
+    EXPECT_NE(m.find("line 2"), std::string::npos) << m;
+  }
+}
+
+TEST(SceneFile, UnknownKeysNameTheKey)
+{
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["rendr"] = json::object(); }), "rendr: unknown key (expected ");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["sample"] = 4; }), "render.sample: unknown key");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["environment"]["sun"]["power"] = 4; }),
+    "environment.sun.power: unknown key");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["clip_planes"][1]["offset"] = 4; }),
+    "clip_planes[1].offset: unknown key");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["visibility"]["resolution"] = 8; }),
+    "visibility.resolution: unknown key");
+  // the message lists what is allowed
+  const std::string m = ErrorAfter([](json& j) { j["camera"]["fov"] = 30; });
+  EXPECT_NE(m.find("view_angle"), std::string::npos) << m;
+}
+
+TEST(SceneFile, MissingRequiredKeys)
+{
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j.erase("volume"); }), "volume: missing required key");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["volume"].erase("file"); }), "volume.file: missing required key");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j.erase("transfer_function"); }), "transfer_function: missing");
+  EXPECT_ERROR_STARTS(
+    ErrorAfter([](json& j) { j["transfer_function"].erase("opacity"); }), "transfer_function.opacity: missing");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j.erase("camera"); }), "camera: missing required key");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["camera"].erase("position"); }), "camera.position: missing");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["camera"].erase("focal_point"); }), "camera.focal_point: missing");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["environment"]["sun"].erase("direction"); }),
+    "environment.sun.direction: missing");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["environment"] = json::parse(R"({"intensity": 1})"); }),
+    "environment: missing a source");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["clip_planes"][0].erase("normal"); }),
+    "clip_planes[0].normal: missing");
+}
+
+TEST(SceneFile, WrongTypes)
+{
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["width"] = "512"; }),
+    "render.width: expected an integer, got string");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["spp"] = 2.5; }), "render.spp: expected an integer");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["strategy"] = 4; }),
+    "render.strategy: expected a string, got number");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["environment"]["visible_background"] = 1; }),
+    "environment.visible_background: expected true or false");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["camera"]["view_angle"] = json::array({ 30 }); }),
+    "camera.view_angle: expected a number, got array");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["camera"] = 3; }), "camera: expected an object, got number");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["camera"]["position"][1] = "x"; }),
+    "camera.position[1]: expected a number, got string");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["volume"]["file"] = nullptr; }),
+    "volume.file: expected a string, got null");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["clip_planes"] = json::object(); }), "clip_planes: expected an array");
+  EXPECT_ERROR_STARTS(ErrorOf(json::array()), "scene: expected an object");
+  // an integral float is accepted as an integer
+  EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["width"] = 256.0; }), "");
+}
+
+TEST(SceneFile, BadValues)
+{
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["width"] = -5; }), "render.width: width -5 not in [1, ");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["height"] = 0; }), "render.height: height 0 not in");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["spp"] = 0; }), "render.spp: samples per pixel 0");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["seed"] = -1; }), "render.seed: seed -1 not in");
+  EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["strategy"] = "foo"; }),
+    "render.strategy: unknown strategy 'foo' (expected uniform, environment, visibility, combined, two-step)");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["opacity"][2][1] = 1.5; }),
+    "transfer_function.opacity[2][1]: opacity 1.5 not in [0, 1]");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["opacity"][0][1] = -0.1; }),
+    "transfer_function.opacity[0][1]: opacity -0.1 not in [0, 1]");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["color"][1][2] = 2; }),
+    "transfer_function.color[1][2]: albedo 2 not in [0, 1]");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["unit_distance"] = 0; }),
+    "transfer_function.unit_distance: the unit distance must be positive");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["density_scale"] = -1; }),
+    "transfer_function.density_scale: the density scale must not be negative");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["environment"]["intensity"] = -2; }),
+    "environment.intensity: the intensity must not be negative");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["environment"]["background"][0] = -1; }),
+    "environment.background[0]: colour must not be negative");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["environment"]["sun"]["radius_deg"] = 200; }),
+    "environment.sun.radius_deg: radius 200 not in [0, 180]");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["environment"]["sun"]["direction"] = { 0, 0, 0 }; }),
+    "environment.sun.direction: the direction must not be zero");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["environment"]["octahedral_size"] = 48; }),
+    "environment.octahedral_size: size 48 is not a power of two");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["environment"]["rotation_deg"] = 10; }),
+    "environment.rotation_deg: only for an environment 'file'");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["environment"]["file"] = "x.exr"; }),
+    "environment: give only one of");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["camera"]["view_angle"] = 180; }),
+    "camera.view_angle: angle 180 not in (0, 180)");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["camera"]["focal_point"] = j["camera"]["position"]; }),
+    "camera.focal_point: the focal point equals the position");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["camera"]["view_up"] = { 90, 508, 90 }; }),
+    "camera.view_up: parallel to the view direction");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["camera"]["parallel_scale"] = -1; }),
+    "camera.parallel_scale: the parallel scale must be positive");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["visibility"]["direction_resolution"] = 6; }),
+    "visibility.direction_resolution: resolution 6 is not 4, 8 or 16");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["visibility"]["filter_angle_fraction"] = 1.2; }),
+    "visibility.filter_angle_fraction: fraction 1.2 not in [0, 1]");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["visibility"]["cell_mode"] = "nearest"; }),
+    "visibility.cell_mode: unknown cell mode 'nearest'");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["clip_planes"][0]["normal"] = { 0, 0, 0 }; }),
+    "clip_planes[0].normal: the direction must not be zero");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["volume"]["file"] = ""; }), "volume.file: empty file name");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["volume"]["files"] = json::array({ "a.vdb" }); }),
+    "volume: give either 'file' or 'files'");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["volume"]["time_step"] = 0; }),
+    "volume.time_step: only for a sequence");
+}
+
+TEST(SceneFile, UnsortedTransferFunctions)
+{
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["opacity"] = { { 0, 0 }, { 80, 0.3 }, { 40, 0.1 } }; }),
+    "transfer_function.opacity[2][0]: scalar 40 does not follow 80 (points must be sorted");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["color"] = { { 5, 1, 1, 1 }, { 5, 0, 0, 0 } }; }),
+    "transfer_function.color[1][0]: scalar 5 does not follow 5");
+}
+
+TEST(SceneFile, WrongArrayLengths)
+{
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["camera"]["position"] = { 0, 1 }; }),
+    "camera.position: expected an array of 3 numbers, got 2 elements");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["environment"]["background"] = { 0, 0, 0, 1 }; }),
+    "environment.background: expected an array of 3 numbers, got 4 elements");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["opacity"][1] = { 60, 0.0, 1 }; }),
+    "transfer_function.opacity[1]: expected an array of 2 numbers, got 3 elements");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["color"][0] = { 0, 1, 1 }; }),
+    "transfer_function.color[0]: expected an array of 4 numbers, got 3 elements");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["opacity"] = json::array(); }),
+    "transfer_function.opacity: expected a non-empty array");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["volume"] = json::parse(R"({"files": []})"); }),
+    "volume.files: expected a non-empty array");
+}
