@@ -26,6 +26,12 @@ std::vector<float> WindowCompositor::ReadDepth(vtkRenderer* ren, const Viewport&
 
 bool WindowCompositor::Draw(vtkRenderer* ren, const Viewport& vp, const std::vector<float>& rgba)
 {
+  return DrawScaled(ren, vp, rgba, vp.Width, vp.Height);
+}
+
+bool WindowCompositor::DrawScaled(
+  vtkRenderer* ren, const Viewport& vp, const std::vector<float>& rgba, int width, int height)
+{
   auto* win = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   if (!win || vp.Width <= 0 || vp.Height <= 0)
   {
@@ -40,8 +46,16 @@ bool WindowCompositor::Draw(vtkRenderer* ren, const Viewport& vp, const std::vec
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_FALSE);
-  win->DrawPixels(vp.X, vp.Y, vp.X + vp.Width - 1, vp.Y + vp.Height - 1, 4, VTK_FLOAT,
-    const_cast<float*>(rgba.data()));
+  if (width == vp.Width && height == vp.Height)
+  {
+    win->DrawPixels(vp.X, vp.Y, vp.X + vp.Width - 1, vp.Y + vp.Height - 1, 4, VTK_FLOAT,
+      const_cast<float*>(rgba.data()));
+  }
+  else
+  {
+    win->DrawPixels(vp.X, vp.Y, vp.X + vp.Width - 1, vp.Y + vp.Height - 1, 0, 0, width - 1, height - 1, width,
+      height, 4, VTK_FLOAT, const_cast<float*>(rgba.data()));
+  }
   return true;
 }
 }

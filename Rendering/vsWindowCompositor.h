@@ -24,6 +24,9 @@ public:
   static std::vector<float> ReadDepth(vtkRenderer* ren, const Viewport& vp);
   /** Draws `rgba` (premultiplied, vp.Width x vp.Height, rows bottom-up) over the viewport. */
   static bool Draw(vtkRenderer* ren, const Viewport& vp, const std::vector<float>& rgba);
+  /** Draws a smaller `rgba` (width x height) stretched over the viewport (interactive frames). */
+  static bool DrawScaled(
+    vtkRenderer* ren, const Viewport& vp, const std::vector<float>& rgba, int width, int height);
 };
 }
 

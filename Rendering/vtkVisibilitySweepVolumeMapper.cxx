@@ -1,15 +1,28 @@
 #include "vtkVisibilitySweepVolumeMapper.h"
 
 #include "vsContext.h"
+#include "vsDeviceEnvironment.h"
 #include "vsDeviceVolume.h"
 #include "vsEmissionAbsorptionPass.h"
+#include "vsEnvironmentMap.h"
+#include "vsMajorantGrid.h"
+#include "vsMonteCarloPass.h"
+#include "vsVisibilityGrid.h"
+#include "vsVisibilityImage.h"
 #include "vsError.h"
 #include "vsTransferFunctionTable.h"
 #include "vsVolumeInput.h"
 #include "vsVolumeScene.h"
 #include "vsWindowCompositor.h"
 
+#include "vtkAlgorithmOutput.h"
 #include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkEnvironmentMapAlgorithm.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkMatrix4x4.h"
@@ -29,13 +42,49 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::shared_ptr<vs::Context> Context;
   std::unique_ptr<vs::VolumeScene> Scene;
   std::unique_ptr<vs::EmissionAbsorptionPass> EA;
+  std::unique_ptr<vs::MonteCarloPass> MC, Interactive;
+  std::unique_ptr<vs::VisibilityGrid> Grid;
+  std::unique_ptr<vs::DeviceEnvironment> Environment;
+  vtkMTimeType EnvironmentTime = 0;
+  bool DefaultEnvironment = false;
+  std::vector<double> GridSignature;  // what the grid was computed for (besides extinction)
+  std::vector<double> ImageSignature; // what the accumulated image was rendered for
+  vtkSmartPointer<vtkImageData> Radiance;
+  vtkSmartPointer<vtkImageData> VisibilityImage;
+  bool VisibilityImageStale = true;
   std::string LastError;
   uint32_t Frame = 0;
 };
 
-vtkVisibilitySweepVolumeMapper::vtkVisibilitySweepVolumeMapper()
-  : Impl(new Internals)
+namespace
 {
+// Filmic tone curve (Narkowicz's fit of ACES) and the sRGB transfer function.
+float Filmic(float x)
+{
+  return std::clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
+}
+
+float ToSRGB(float x)
+{
+  x = std::clamp(x, 0.0f, 1.0f);
+  return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+}
+
+glm::dmat4 ToGlm(vtkMatrix4x4* m)
+{
+  glm::dmat4 g;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c)
+      g[c][r] = m->GetElement(r, c);
+  return g;
+}
+}
+
+vtkVisibilitySweepVolumeMapper::vtkVisibilitySweepVolumeMapper()
+  : FilterAngleFraction(vs::VisibilityGridParameters().FilterAngleFraction)
+  , Impl(new Internals)
+{
+  this->SetNumberOfInputPorts(2);
 }
 
 vtkVisibilitySweepVolumeMapper::~vtkVisibilitySweepVolumeMapper() = default;
@@ -70,17 +119,6 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     this->ReportError("the input volume's scalars are cell data; VisSweep renders point scalars");
     return;
   }
-  std::string problem = vs::CheckImage(input, scalars);
-  if (problem.empty())
-  {
-    problem = vs::CheckProperty(vol ? vol->GetProperty() : nullptr);
-  }
-  if (!problem.empty())
-  {
-    this->ReportError(problem);
-    return;
-  }
-
   try
   {
     if (!I.Context)
@@ -92,7 +130,8 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       I.Scene = std::make_unique<vs::VolumeScene>(I.Context);
     }
     vs::VolumeScene::Changes changes =
-      I.Scene->Update(input, scalars, vol->GetProperty(), vol->GetMatrix(), this->DensityScale);
+      I.Scene->Update(input, scalars, vol ? vol->GetProperty() : nullptr, vol ? vol->GetMatrix() : nullptr,
+        this->DensityScale);
     if (changes.Data)
     {
       ++this->VolumeUploadCount;
@@ -102,62 +141,18 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
                         << " voxels are NaN or infinite; they are rendered as empty space");
       }
     }
-    const vs::VolumeGeometry& geometry = I.Scene->Geometry();
-
-    vs::Viewport vp = vs::WindowCompositor::GetViewport(ren);
-    if (vp.Width <= 0 || vp.Height <= 0)
+    if (changes.Extinction || changes.Geometry)
     {
-      return;
+      I.VisibilityImageStale = true;
     }
-    std::vector<float> depth = vs::WindowCompositor::ReadDepth(ren, vp);
-
-    vs::shared::VsFrameParams p{};
-    double aspect = double(vp.Width) / double(vp.Height);
-    vtkMatrix4x4* viewProj = ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1);
-    glm::dmat4 vpm;
-    for (int r = 0; r < 4; ++r)
+    if (this->RenderMode == EmissionAbsorption)
     {
-      for (int c = 0; c < 4; ++c)
-      {
-        vpm[c][r] = viewProj->GetElement(r, c);
-      }
+      this->RenderEmissionAbsorption(ren, vol);
     }
-    p.invViewProj = glm::mat4(glm::inverse(vpm));
-    p.worldToIndex = glm::mat4(geometry.WorldToIndex);
-    p.indexToWorld = glm::mat4(geometry.IndexToWorld);
-    p.boxMin = glm::vec4(geometry.BoxMin, 0.0f);
-    p.boxMax = glm::vec4(geometry.BoxMax, 0.0f);
-    p.dims = glm::vec4(geometry.Dims[0], geometry.Dims[1], geometry.Dims[2], 0.0f);
-    auto tf = I.Scene->TF().Params();
-    p.tf = glm::vec4(tf[0], tf[1], tf[2], tf[3]);
-    p.viewport = glm::uvec4(vp.Width, vp.Height, I.Frame++, static_cast<uint32_t>(this->Seed));
-    double step = this->SampleDistance > 0.0 ? this->SampleDistance : 0.5 * geometry.MinSpacing;
-    p.march = glm::vec4(float(step), 0.995f, 0.0f, 0.0f);
-    if (this->ClippingPlanes)
+    else
     {
-      int n = std::min(6, this->ClippingPlanes->GetNumberOfItems());
-      if (this->ClippingPlanes->GetNumberOfItems() > 6)
-      {
-        vtkWarningMacro(<< "only the first 6 clipping planes are used");
-      }
-      for (int i = 0; i < n; ++i)
-      {
-        vtkPlane* plane = this->ClippingPlanes->GetItem(i);
-        double nrm[3], o[3];
-        plane->GetNormal(nrm);
-        plane->GetOrigin(o);
-        p.clipPlanes[i] = glm::vec4(nrm[0], nrm[1], nrm[2], -(nrm[0] * o[0] + nrm[1] * o[1] + nrm[2] * o[2]));
-      }
-      p.counts.x = static_cast<uint32_t>(n);
+      this->RenderMonteCarlo(ren, vol);
     }
-
-    if (!I.EA)
-    {
-      I.EA = std::make_unique<vs::EmissionAbsorptionPass>(I.Context);
-    }
-    std::vector<float> rgba = I.EA->Render(I.Scene->Volume(), I.Scene->TF(), p, depth);
-    this->LastDeviceSeconds = I.EA->LastSeconds();
-    vs::WindowCompositor::Draw(ren, vp, rgba);
     I.LastError.clear();
   }
   catch (const std::exception& e)
@@ -166,10 +161,394 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 }
 
+namespace
+{
+// The camera and volume placement as the shaders want them.
+struct View
+{
+  vs::Viewport Port;
+  glm::mat4 InvViewProj;
+};
+
+View MakeView(vtkRenderer* ren)
+{
+  View v;
+  v.Port = vs::WindowCompositor::GetViewport(ren);
+  double aspect = v.Port.Height > 0 ? double(v.Port.Width) / double(v.Port.Height) : 1.0;
+  v.InvViewProj =
+    glm::mat4(glm::inverse(ToGlm(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1))));
+  return v;
+}
+
+// World clipping planes (n, w): kept where dot(n, x) + w >= 0.
+std::vector<glm::dvec4> WorldPlanes(vtkPlaneCollection* planes)
+{
+  std::vector<glm::dvec4> out;
+  if (!planes)
+  {
+    return out;
+  }
+  vtkPlane* plane;
+  vtkCollectionSimpleIterator it;
+  for (planes->InitTraversal(it); (plane = planes->GetNextPlane(it));)
+  {
+    double n[3], o[3];
+    plane->GetNormal(n);
+    plane->GetOrigin(o);
+    out.emplace_back(n[0], n[1], n[2], -(n[0] * o[0] + n[1] * o[1] + n[2] * o[2]));
+  }
+  if (out.size() > 6)
+  {
+    throw vs::InputError("at most 6 clipping planes are supported, got " + std::to_string(out.size()));
+  }
+  return out;
+}
+}
+
+void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume*)
+{
+  Internals& I = *this->Impl;
+  const vs::VolumeGeometry& geometry = I.Scene->Geometry();
+  View view = MakeView(ren);
+  vs::Viewport vp = view.Port;
+  if (vp.Width <= 0 || vp.Height <= 0)
+  {
+    return;
+  }
+  std::vector<float> depth = vs::WindowCompositor::ReadDepth(ren, vp);
+  vs::shared::VsFrameParams p{};
+  p.invViewProj = view.InvViewProj;
+  p.worldToIndex = glm::mat4(geometry.WorldToIndex);
+  p.indexToWorld = glm::mat4(geometry.IndexToWorld);
+  p.boxMin = glm::vec4(geometry.BoxMin, 0.0f);
+  p.boxMax = glm::vec4(geometry.BoxMax, 0.0f);
+  p.dims = glm::vec4(geometry.Dims[0], geometry.Dims[1], geometry.Dims[2], 0.0f);
+  auto tf = I.Scene->TF().Params();
+  p.tf = glm::vec4(tf[0], tf[1], tf[2], tf[3]);
+  p.viewport = glm::uvec4(vp.Width, vp.Height, I.Frame++, static_cast<uint32_t>(this->Seed));
+  double step = this->SampleDistance > 0.0 ? this->SampleDistance : 0.5 * geometry.MinSpacing;
+  p.march = glm::vec4(float(step), 0.995f, 0.0f, 0.0f);
+  auto planes = WorldPlanes(this->ClippingPlanes);
+  for (size_t i = 0; i < planes.size(); ++i)
+  {
+    p.clipPlanes[i] = glm::vec4(planes[i]);
+  }
+  p.counts.x = uint32_t(planes.size());
+  if (!I.EA)
+  {
+    I.EA = std::make_unique<vs::EmissionAbsorptionPass>(I.Context);
+  }
+  std::vector<float> rgba = I.EA->Render(I.Scene->Volume(), I.Scene->TF(), p, depth);
+  this->LastDeviceSeconds = I.EA->LastSeconds();
+  vs::WindowCompositor::Draw(ren, vp, rgba);
+}
+
+void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol)
+{
+  Internals& I = *this->Impl;
+  const vs::VolumeGeometry& geometry = I.Scene->Geometry();
+
+  // The environment: port 1, or a constant white sky.
+  vtkImageData* envImage = nullptr;
+  if (this->GetNumberOfInputConnections(1) > 0)
+  {
+    this->GetInputAlgorithm(1, 0)->Update();
+    envImage = vtkImageData::SafeDownCast(this->GetInputDataObject(1, 0));
+    if (!envImage || envImage->GetNumberOfPoints() == 0)
+    {
+      throw vs::InputError("the environment input (port 1) has no map; check its reader for errors");
+    }
+  }
+  if (!I.Environment || (envImage && envImage->GetMTime() != I.EnvironmentTime) || (!envImage && !I.DefaultEnvironment))
+  {
+    std::shared_ptr<const vs::EnvironmentMap> map;
+    if (envImage)
+    {
+      std::string error;
+      map = vtkEnvironmentMapAlgorithm::EnvironmentMapFromImage(envImage, &error);
+      if (!map)
+      {
+        throw vs::InputError("the environment input is not an environment map: " + error);
+      }
+    }
+    else
+    {
+      map = std::make_shared<vs::EnvironmentMap>(vs::EnvironmentMap::Constant(16, glm::vec3(1.0f)));
+    }
+    I.Environment.reset();
+    I.Environment = std::make_unique<vs::DeviceEnvironment>(I.Context, *map, std::max(8, this->DirectionResolution));
+    I.EnvironmentTime = envImage ? envImage->GetMTime() : 0;
+    I.DefaultEnvironment = envImage == nullptr;
+    ++this->EnvironmentUploadCount;
+  }
+
+  // The visibility grid, only for the strategies that use it and only when something that
+  // changes extinction (or the grid's own parameters) changed.
+  const std::vector<glm::dvec4> planes = WorldPlanes(this->ClippingPlanes);
+  const bool emptyVolume = I.Scene->Majorants().MaxMajorant() <= 0.0f;
+  const bool needGrid = this->SamplingStrategy >= Visibility && !emptyVolume;
+  vs::VisibilityGridParameters gp;
+  gp.DirectionResolution = uint32_t(std::max(0, this->DirectionResolution));
+  gp.VoxelsPerCell = this->VoxelsPerCell;
+  gp.KernelResolution = uint32_t(this->KernelResolution);
+  gp.Filtering = this->Filtering;
+  gp.FilterAngleFraction = this->FilterAngleFraction;
+  std::vector<double> gridSignature = { double(gp.DirectionResolution), gp.VoxelsPerCell,
+    double(gp.KernelResolution), double(gp.Filtering), gp.FilterAngleFraction,
+    double(I.Scene->Uploads()) };
+  for (const auto& pl : planes)
+  {
+    gridSignature.insert(gridSignature.end(), { pl.x, pl.y, pl.z, pl.w });
+  }
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      gridSignature.push_back(geometry.WorldToIndex[c][r]);
+  if (!I.Grid)
+  {
+    I.Grid = std::make_unique<vs::VisibilityGrid>(I.Context);
+  }
+  const bool extinctionChanged = I.VisibilityImageStale;
+  if (needGrid && (!I.Grid->Valid() || extinctionChanged || gridSignature != I.GridSignature))
+  {
+    vs::VisibilityGrid::CheckFits(*I.Context, geometry, gp);
+    this->InvokeEvent(vtkCommand::StartEvent);
+    I.Grid->Compute(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), geometry, planes, gp, {},
+      [this](double f) { this->UpdateProgress(f); });
+    this->LastSweepSeconds = I.Grid->LastSeconds();
+    this->InvokeEvent(vtkCommand::EndEvent);
+    I.GridSignature = gridSignature;
+    ++this->VisibilityUpdateCount;
+    I.VisibilityImage = nullptr;
+  }
+  I.VisibilityImageStale = false;
+
+  // Parameters of this frame.
+  View view = MakeView(ren);
+  vtkRenderWindow* win = ren->GetRenderWindow();
+  const bool interactive = this->InteractiveUpdateRate > 0.0 && win &&
+    win->GetDesiredUpdateRate() >= this->InteractiveUpdateRate;
+  const int sub = interactive ? this->InteractiveSubsampling : 1;
+  vs::Viewport vp = view.Port;
+  if (vp.Width <= 0 || vp.Height <= 0)
+  {
+    return;
+  }
+  const uint32_t w = uint32_t(std::max(1, vp.Width / sub)), h = uint32_t(std::max(1, vp.Height / sub));
+  std::vector<float> fullDepth = vs::WindowCompositor::ReadDepth(ren, vp);
+  std::vector<float> depth(size_t(w) * h);
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x)
+      depth[size_t(y) * w + x] = fullDepth[size_t(std::min<uint32_t>(y * sub, vp.Height - 1)) * vp.Width +
+        std::min<uint32_t>(x * sub, vp.Width - 1)];
+
+  vs::shared::VsRenderParams p{};
+  p.invViewProj = view.InvViewProj;
+  p.worldToIndex = glm::mat4(geometry.WorldToIndex);
+  p.boxMin = glm::vec4(geometry.BoxMin, 0.0f);
+  p.boxMax = glm::vec4(geometry.BoxMax, 0.0f);
+  p.dims = glm::vec4(geometry.Dims[0], geometry.Dims[1], geometry.Dims[2], 0.0f);
+  auto tf = I.Scene->TF().Params();
+  p.tf = glm::vec4(tf[0], tf[1], tf[2], tf[3]);
+  p.background = glm::vec4(0.0f, 0.0f, 0.0f, this->EnvironmentVisible ? 1.0f : 0.0f);
+  p.viewport = glm::uvec4(w, h, 0u, static_cast<uint32_t>(this->Seed));
+  uint32_t strategy = emptyVolume ? uint32_t(Uniform) : uint32_t(this->SamplingStrategy);
+  p.sampling = glm::uvec4(strategy, 1u, uint32_t(this->CellMode), uint32_t(I.Environment->FinestLevel()));
+  p.sampling2 = glm::vec4(float(this->VisibilityEpsilon), float(this->EnvironmentIntensity),
+    float(I.Scene->Majorants().BrickSize()), 0.0f);
+  if (needGrid)
+  {
+    auto c = I.Grid->Cells();
+    p.grid = glm::uvec4(c[0], c[1], c[2], I.Grid->Side());
+    p.cellSize = glm::vec4(I.Grid->CellSize(), 0.0f);
+  }
+  auto b = I.Scene->Majorants().Bricks();
+  p.bricks = glm::uvec4(b[0], b[1], b[2], uint32_t(planes.size()));
+  const glm::dmat3 m(geometry.IndexToWorld);
+  const glm::dvec3 o(geometry.IndexToWorld[3]);
+  for (size_t i = 0; i < planes.size(); ++i)
+  {
+    glm::dvec3 n(planes[i]);
+    p.clipPlanes[i] = glm::vec4(glm::vec3(glm::transpose(m) * n), float(glm::dot(n, o) + planes[i].w));
+  }
+
+  vs::MonteCarloPass* pass = nullptr;
+  if (interactive)
+  {
+    if (!I.Interactive)
+    {
+      I.Interactive = std::make_unique<vs::MonteCarloPass>(I.Context);
+    }
+    pass = I.Interactive.get();
+    pass->Reset(w, h);
+    I.ImageSignature.clear(); // refine from scratch once the view is still
+  }
+  else
+  {
+    if (!I.MC)
+    {
+      I.MC = std::make_unique<vs::MonteCarloPass>(I.Context);
+    }
+    pass = I.MC.get();
+    // Everything the accumulated image depends on; any difference restarts accumulation.
+    std::vector<double> signature(reinterpret_cast<const float*>(&p),
+      reinterpret_cast<const float*>(&p) + sizeof(p) / sizeof(float));
+    signature.push_back(double(I.Scene->TableBuilds()));
+    signature.push_back(double(I.Scene->Uploads()));
+    signature.push_back(double(this->EnvironmentUploadCount));
+    signature.push_back(double(this->VisibilityUpdateCount));
+    signature.insert(signature.end(), depth.begin(), depth.end());
+    if (signature != I.ImageSignature || pass->Width() != w || pass->Height() != h)
+    {
+      pass->Reset(w, h);
+      I.ImageSignature = signature;
+      ++this->AccumulationResetCount;
+    }
+  }
+  const uint32_t remaining = uint32_t(std::max(0, this->MaximumSamples - int(pass->Samples())));
+  const uint32_t spp = interactive ? 1u : std::min<uint32_t>(uint32_t(this->SamplesPerFrame), remaining);
+  if (spp > 0)
+  {
+    p.sampling.y = spp;
+    pass->Render(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), needGrid ? I.Grid.get() : nullptr,
+      *I.Environment, p, depth);
+    this->LastDeviceSeconds = pass->LastSeconds();
+  }
+  this->AccumulatedSamples = interactive ? 0 : int(pass->Samples());
+
+  // Keep the linear radiance; show it tone mapped.
+  std::vector<float> mean = pass->Mean();
+  if (!interactive)
+  {
+    if (!I.Radiance)
+    {
+      I.Radiance = vtkSmartPointer<vtkImageData>::New();
+    }
+    I.Radiance->Initialize();
+    I.Radiance->SetDimensions(int(w), int(h), 1);
+    vtkNew<vtkFloatArray> rgb;
+    rgb->SetName("Radiance");
+    rgb->SetNumberOfComponents(3);
+    rgb->SetNumberOfTuples(vtkIdType(w) * h);
+    vtkNew<vtkFloatArray> alpha;
+    alpha->SetName("Alpha");
+    alpha->SetNumberOfTuples(vtkIdType(w) * h);
+    for (vtkIdType i = 0; i < vtkIdType(w) * h; ++i)
+    {
+      rgb->SetTuple3(i, mean[4 * i], mean[4 * i + 1], mean[4 * i + 2]);
+      alpha->SetValue(i, mean[4 * i + 3]);
+    }
+    I.Radiance->GetPointData()->SetScalars(rgb);
+    I.Radiance->GetPointData()->AddArray(alpha);
+  }
+  std::vector<float> display(mean.size());
+  const float exposure = float(this->Exposure);
+  for (size_t i = 0; i < mean.size(); i += 4)
+  {
+    float a = std::clamp(mean[i + 3], 0.0f, 1.0f);
+    for (int c = 0; c < 3; ++c)
+    {
+      // Premultiplied: tone map the radiance of the covered part, then weigh by coverage.
+      float l = a > 0.0f ? exposure * mean[i + c] / a : 0.0f;
+      display[i + c] = a * ToSRGB(this->ToneMapping ? Filmic(l) : std::min(l, 1.0f));
+    }
+    display[i + 3] = a;
+  }
+  if (sub == 1)
+  {
+    vs::WindowCompositor::Draw(ren, vp, display);
+  }
+  else
+  {
+    vs::WindowCompositor::DrawScaled(ren, vp, display, int(w), int(h));
+  }
+  (void)vol;
+}
+
+vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)
+{
+  Internals& I = *this->Impl;
+  if (!I.Radiance || !I.MC)
+  {
+    return nullptr;
+  }
+  if (variance)
+  {
+    std::vector<float> var = I.MC->Variance();
+    vtkNew<vtkFloatArray> v;
+    v->SetName("Variance");
+    v->SetNumberOfComponents(4);
+    v->SetNumberOfTuples(vtkIdType(var.size() / 4));
+    std::copy(var.begin(), var.end(), v->GetPointer(0));
+    I.Radiance->GetPointData()->AddArray(v);
+  }
+  return I.Radiance;
+}
+
+vtkImageData* vtkVisibilitySweepVolumeMapper::GetVisibilityGrid()
+{
+  Internals& I = *this->Impl;
+  if (!I.Grid || !I.Grid->Valid() || !I.Scene)
+  {
+    return nullptr;
+  }
+  if (!I.VisibilityImage)
+  {
+    I.VisibilityImage = vtkSmartPointer<vtkImageData>::New();
+    vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
+    vs::VisibilityGridToImage(*I.Grid, vs::ComputeGeometry(input, nullptr), I.VisibilityImage);
+  }
+  return I.VisibilityImage;
+}
+
+int vtkVisibilitySweepVolumeMapper::GetMajorantUpdateCount()
+{
+  return this->Impl->Scene && this->Impl->Scene->Ready()
+    ? int(this->Impl->Scene->Majorants().MajorantUpdates())
+    : 0;
+}
+
+void vtkVisibilitySweepVolumeMapper::SetEnvironmentConnection(vtkAlgorithmOutput* port)
+{
+  this->SetInputConnection(1, port);
+}
+
+void vtkVisibilitySweepVolumeMapper::SetEnvironmentData(vtkImageData* environment)
+{
+  this->SetInputDataInternal(1, environment);
+}
+
+int vtkVisibilitySweepVolumeMapper::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
 void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "RenderMode: " << this->RenderMode << "\n";
+  os << indent << "RenderMode: " << (this->RenderMode == MonteCarlo ? "MonteCarlo" : "EmissionAbsorption") << "\n";
+  os << indent << "SamplingStrategy: " << this->SamplingStrategy << "\n";
+  os << indent << "CellMode: " << this->CellMode << "\n";
+  os << indent << "SamplesPerFrame: " << this->SamplesPerFrame << "\n";
+  os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
+  os << indent << "AccumulatedSamples: " << this->AccumulatedSamples << "\n";
+  os << indent << "VisibilityEpsilon: " << this->VisibilityEpsilon << "\n";
+  os << indent << "DirectionResolution: " << this->DirectionResolution << "\n";
+  os << indent << "VoxelsPerCell: " << this->VoxelsPerCell << "\n";
+  os << indent << "KernelResolution: " << this->KernelResolution << "\n";
+  os << indent << "Filtering: " << this->Filtering << "\n";
+  os << indent << "FilterAngleFraction: " << this->FilterAngleFraction << "\n";
+  os << indent << "EnvironmentIntensity: " << this->EnvironmentIntensity << "\n";
+  os << indent << "EnvironmentVisible: " << this->EnvironmentVisible << "\n";
+  os << indent << "Exposure: " << this->Exposure << "\n";
+  os << indent << "ToneMapping: " << this->ToneMapping << "\n";
+  os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
+  os << indent << "InteractiveSubsampling: " << this->InteractiveSubsampling << "\n";
   os << indent << "SampleDistance: " << this->SampleDistance << "\n";
   os << indent << "DensityScale: " << this->DensityScale << "\n";
   os << indent << "Seed: " << this->Seed << "\n";

@@ -8,8 +8,19 @@
  * at the opaque depth, so volumes and polydata actors mix correctly.
  *
  * Render modes:
+ * - MonteCarlo (default): unbiased progressive single scattering under an HDR
+ *   environment (seed 000): delta tracking, a light direction from the sampling
+ *   strategy (TwoStep: environment x visibility, then the environment's own quadtree),
+ *   ratio-tracked shadow rays. Each Render() adds SamplesPerFrame samples per pixel
+ *   until MaximumSamples; any change that alters the image restarts accumulation,
+ *   while the visibility grid is recomputed only when extinction changes (data,
+ *   opacity, unit distance, density scale, clipping).
  * - EmissionAbsorption: ray casting of VTK's transfer functions (opacity per
  *   ScalarOpacityUnitDistance, colour as emission), a jittered sample per step.
+ *
+ * The environment is input port 1: SetEnvironmentConnection(reader->GetOutputPort())
+ * with a vtkEnvironmentMapReader or vtkEnvironmentMapSource; without one, a constant
+ * white sky of radiance 1.
  *
  * Conventions (DESIGN.md): world units are those of the image data (origin,
  * spacing, direction matrix) under the vtkVolume's matrix; extinction is
@@ -28,6 +39,9 @@
 #include <memory>
 #include <string>
 
+class vtkAlgorithmOutput;
+class vtkImageData;
+
 class VISSWEEPRENDERING_EXPORT vtkVisibilitySweepVolumeMapper : public vtkVolumeMapper
 {
 public:
@@ -37,14 +51,142 @@ public:
 
   enum RenderModes
   {
-    EmissionAbsorption = 0
+    EmissionAbsorption = 0,
+    MonteCarlo = 1
+  };
+  enum SamplingStrategies
+  {
+    Uniform = 0,
+    Environment = 1,
+    Visibility = 2,
+    Combined = 3,
+    TwoStep = 4
+  };
+  enum CellModes
+  {
+    TrilinearCells = 0,  // interpolate the 8 neighbouring cells' maps (the paper)
+    StochasticCell = 1   // pick one cell with its trilinear weight (cheaper, also unbiased)
   };
 
   ///@{
-  /** The render path. Default EmissionAbsorption. */
-  vtkSetClampMacro(RenderMode, int, EmissionAbsorption, EmissionAbsorption);
+  /** The render path. Default MonteCarlo. */
+  vtkSetClampMacro(RenderMode, int, EmissionAbsorption, MonteCarlo);
   vtkGetMacro(RenderMode, int);
+  void SetRenderModeToEmissionAbsorption() { this->SetRenderMode(EmissionAbsorption); }
+  void SetRenderModeToMonteCarlo() { this->SetRenderMode(MonteCarlo); }
   ///@}
+
+  ///@{
+  /** The light-direction strategy at scatter events. Default TwoStep. */
+  vtkSetClampMacro(SamplingStrategy, int, Uniform, TwoStep);
+  vtkGetMacro(SamplingStrategy, int);
+  void SetSamplingStrategyToUniform() { this->SetSamplingStrategy(Uniform); }
+  void SetSamplingStrategyToEnvironment() { this->SetSamplingStrategy(Environment); }
+  void SetSamplingStrategyToVisibility() { this->SetSamplingStrategy(Visibility); }
+  void SetSamplingStrategyToCombined() { this->SetSamplingStrategy(Combined); }
+  void SetSamplingStrategyToTwoStep() { this->SetSamplingStrategy(TwoStep); }
+  ///@}
+
+  ///@{
+  /** How the visibility cells around a scatter point form its map. Default StochasticCell (measured faster at equal error). */
+  vtkSetClampMacro(CellMode, int, TrilinearCells, StochasticCell);
+  vtkGetMacro(CellMode, int);
+  ///@}
+
+  ///@{
+  /** Samples per pixel added by each Render() (default 1) and the total to stop at (default 4096). */
+  vtkSetClampMacro(SamplesPerFrame, int, 1, 1 << 16);
+  vtkGetMacro(SamplesPerFrame, int);
+  vtkSetClampMacro(MaximumSamples, int, 1, 1 << 30);
+  vtkGetMacro(MaximumSamples, int);
+  ///@}
+
+  ///@{
+  /** Added to the visibility before it shapes the pdf (seed 000: 0.01). */
+  vtkSetClampMacro(VisibilityEpsilon, double, 1e-6, 1.0);
+  vtkGetMacro(VisibilityEpsilon, double);
+  ///@}
+
+  ///@{
+  /** Visibility grid: directions per side (4, 8, 16; default 8), voxels per cell (default 4),
+   *  kernel rays (0 = automatic), sweep-space filtering (default on) and its beta/alpha. */
+  vtkSetMacro(DirectionResolution, int);
+  vtkGetMacro(DirectionResolution, int);
+  vtkSetMacro(VoxelsPerCell, double);
+  vtkGetMacro(VoxelsPerCell, double);
+  vtkSetClampMacro(KernelResolution, int, 0, 1 << 14);
+  vtkGetMacro(KernelResolution, int);
+  vtkSetMacro(Filtering, bool);
+  vtkGetMacro(Filtering, bool);
+  vtkBooleanMacro(Filtering, bool);
+  vtkSetClampMacro(FilterAngleFraction, double, 0.0, 1.0);
+  vtkGetMacro(FilterAngleFraction, double);
+  ///@}
+
+  ///@{
+  /** The environment (input port 1): a vtkEnvironmentMapReader / vtkEnvironmentMapSource output. */
+  void SetEnvironmentConnection(vtkAlgorithmOutput* port);
+  void SetEnvironmentData(vtkImageData* environment);
+  ///@}
+
+  ///@{
+  /** Scales the environment's radiance. Default 1. */
+  vtkSetClampMacro(EnvironmentIntensity, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(EnvironmentIntensity, double);
+  ///@}
+
+  ///@{
+  /** Whether camera rays that leave the volume see the environment (default on); off, they are
+   *  transparent and the renderer's background shows (the environment still lights the volume). */
+  vtkSetMacro(EnvironmentVisible, bool);
+  vtkGetMacro(EnvironmentVisible, bool);
+  vtkBooleanMacro(EnvironmentVisible, bool);
+  ///@}
+
+  ///@{
+  /** Display: exposure (a multiplier on radiance, default 1) and the filmic tone curve (default on;
+   *  off = clamp). The radiance itself (GetRadiance) is never tone mapped. Output is sRGB. */
+  vtkSetClampMacro(Exposure, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Exposure, double);
+  vtkSetMacro(ToneMapping, bool);
+  vtkGetMacro(ToneMapping, bool);
+  vtkBooleanMacro(ToneMapping, bool);
+  ///@}
+
+  ///@{
+  /** Interaction: while the render window's desired update rate is at least this (VTK raises it
+   *  while the user drags), render 1 sample per pixel at 1/InteractiveSubsampling resolution
+   *  without accumulating; refine at full resolution once the view is still. */
+  vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(InteractiveUpdateRate, double);
+  vtkSetClampMacro(InteractiveSubsampling, int, 1, 16);
+  vtkGetMacro(InteractiveSubsampling, int);
+  ///@}
+
+  /** Samples per pixel accumulated so far (Monte Carlo). */
+  vtkGetMacro(AccumulatedSamples, int);
+  /** True when MaximumSamples are reached: further Render() calls only redraw. */
+  bool IsConverged() { return this->AccumulatedSamples >= this->MaximumSamples; }
+
+  /** The linear HDR radiance of the last render as image data (width x height, point array
+   *  "Radiance" with 3 floats and "Alpha"), rows bottom-up; nullptr before the first render.
+   *  With `variance`, also "Variance" (per-sample variance of each channel). */
+  vtkImageData* GetRadiance(bool variance = false);
+
+  /** The visibility grid the renderer uses, as vtkVisibilityGridFilter outputs it (nullptr before
+   *  the first Monte Carlo render with a visibility-based strategy). */
+  vtkImageData* GetVisibilityGrid();
+
+  ///@{
+  /** Counters of the work done, to check that a change costs only what it must. */
+  vtkGetMacro(VisibilityUpdateCount, int);
+  vtkGetMacro(AccumulationResetCount, int);
+  vtkGetMacro(EnvironmentUploadCount, int);
+  int GetMajorantUpdateCount();
+  ///@}
+
+  /** Device seconds of the last sweeps (visibility grid computation). */
+  vtkGetMacro(LastSweepSeconds, double);
 
   ///@{
   /** Ray-marching step in world units; 0 (default) = half the smallest voxel edge. */
@@ -79,7 +221,30 @@ protected:
   vtkVisibilitySweepVolumeMapper();
   ~vtkVisibilitySweepVolumeMapper() override;
 
-  int RenderMode = EmissionAbsorption;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  int RenderMode = MonteCarlo;
+  int SamplingStrategy = TwoStep;
+  int CellMode = StochasticCell;
+  int SamplesPerFrame = 1;
+  int MaximumSamples = 4096;
+  double VisibilityEpsilon = 0.01;
+  int DirectionResolution = 8;
+  double VoxelsPerCell = 4.0;
+  int KernelResolution = 0;
+  bool Filtering = true;
+  double FilterAngleFraction;
+  double EnvironmentIntensity = 1.0;
+  bool EnvironmentVisible = true;
+  double Exposure = 1.0;
+  bool ToneMapping = true;
+  double InteractiveUpdateRate = 1.0;
+  int InteractiveSubsampling = 4;
+  int AccumulatedSamples = 0;
+  int VisibilityUpdateCount = 0;
+  int AccumulationResetCount = 0;
+  int EnvironmentUploadCount = 0;
+  double LastSweepSeconds = 0.0;
   double SampleDistance = 0.0;
   double DensityScale = 1.0;
   int Seed = 1;
@@ -91,6 +256,8 @@ private:
   void operator=(const vtkVisibilitySweepVolumeMapper&) = delete;
 
   void ReportError(const std::string& message);
+  void RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol);
+  void RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol);
 
   struct Internals;
   std::unique_ptr<Internals> Impl;

@@ -32,7 +32,7 @@ struct VISSWEEPCORE_EXPORT VisibilityGridParameters
   uint32_t DirectionResolution = 8;
   /** Voxels per visibility cell along each axis (>= 1). */
   double VoxelsPerCell = 4.0;
-  /** Kernel rays along the longer side of the projected box; 0 = the largest voxel count. */
+  /** Kernel rays along the longer side of the projected box; 0 = the largest voxel count, at most 128. */
   uint32_t KernelResolution = 0;
   /** Ray-marching step in world units; 0 = one voxel (the smallest spacing). */
   double StepSize = 0.0;

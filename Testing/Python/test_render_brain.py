@@ -15,6 +15,7 @@ def render(path):
     mapper = vissweep.vtkVisibilitySweepVolumeMapper()
     mapper.SetInputConnection(reader.GetOutputPort())
     mapper.SetSeed(3)
+    mapper.SetRenderModeToEmissionAbsorption()
     prop = vtk.vtkVolumeProperty()
     opacity = vtk.vtkPiecewiseFunction()
     for s, a in ((0, 0.0), (40, 0.0), (90, 0.05), (255, 0.3)):

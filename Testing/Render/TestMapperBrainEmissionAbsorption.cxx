@@ -22,6 +22,7 @@ int TestMapperBrainEmissionAbsorption(int argc, char* argv[])
   vtkNew<vtkVisibilitySweepVolumeMapper> mapper;
   mapper->SetInputData(image);
   mapper->SetSeed(7);
+  mapper->SetRenderModeToEmissionAbsorption();
   vtkNew<vtkVolume> volume;
   volume->SetMapper(mapper);
   volume->SetProperty(vstest::BrainProperty());

@@ -46,6 +46,7 @@ int TestMapperCubeAnalytic(int, char*[])
 
   vtkNew<vtkVisibilitySweepVolumeMapper> mapper;
   mapper->SetInputData(image);
+  mapper->SetRenderModeToEmissionAbsorption();
   vtkNew<vtkVolume> volume;
   volume->SetMapper(mapper);
   volume->SetProperty(property);

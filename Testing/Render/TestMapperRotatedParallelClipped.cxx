@@ -18,6 +18,7 @@ int TestMapperRotatedParallelClipped(int argc, char* argv[])
   auto image = vstest::ReadBrain(vstest::Argument(argc, argv, "-D"));
   vtkNew<vtkVisibilitySweepVolumeMapper> mapper;
   mapper->SetInputData(image);
+  mapper->SetRenderModeToEmissionAbsorption();
   vtkNew<vtkPlane> plane;
   double c[3];
   image->GetCenter(c);

@@ -1,0 +1,139 @@
+// DESIGN.md's skip rules, through the counters of the mapper: each change does the work it
+// needs and no more (camera/colour: restart accumulation only; opacity, data, unit distance,
+// density scale, clipping: recompute majorants and visibility; environment: the light's pdf
+// only), and a volume empty under the transfer function skips the sweeps entirely.
+#include "vtkVisibilitySweepVolumeMapper.h"
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkEnvironmentMapSource.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <iostream>
+
+namespace
+{
+int failures = 0;
+void Check(bool ok, const char* what)
+{
+  if (!ok)
+  {
+    std::cerr << "FAILED: " << what << "\n";
+    ++failures;
+  }
+}
+}
+
+int TestMapperSkipRules(int, char*[])
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(20, 18, 16);
+  vtkNew<vtkFloatArray> values;
+  values->SetNumberOfTuples(20 * 18 * 16);
+  for (vtkIdType i = 0; i < values->GetNumberOfTuples(); ++i)
+    values->SetValue(i, float(i % 7) / 6.0f);
+  image->GetPointData()->SetScalars(values);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(1.0, 0.3);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0.0, 1, 1, 1);
+  color->AddRGBPoint(1.0, 1, 0.5, 0.2);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetScalarOpacity(opacity);
+  property->SetColor(color);
+  vtkNew<vtkEnvironmentMapSource> env;
+  env->SetOctahedralSize(16);
+
+  vtkNew<vtkVisibilitySweepVolumeMapper> m;
+  m->SetInputData(image);
+  m->SetEnvironmentConnection(env->GetOutputPort());
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(m);
+  volume->SetProperty(property);
+  vtkNew<vtkRenderer> ren;
+  ren->AddVolume(volume);
+  vtkNew<vtkRenderWindow> win;
+  win->AddRenderer(ren);
+  win->SetSize(24, 24);
+  ren->ResetCamera();
+
+  win->Render();
+  Check(std::string(m->GetLastError()).empty(), m->GetLastError());
+  Check(m->GetVisibilityUpdateCount() == 1, "first render computes the visibility grid");
+  Check(m->GetAccumulationResetCount() == 1, "first render starts accumulation");
+  Check(m->GetEnvironmentUploadCount() == 1, "first render uploads the environment");
+  const int majorants = m->GetMajorantUpdateCount();
+
+  win->Render();
+  Check(m->GetAccumulatedSamples() == 2, "an unchanged view accumulates");
+  Check(m->GetAccumulationResetCount() == 1, "an unchanged view does not restart");
+
+  ren->GetActiveCamera()->Azimuth(10);
+  win->Render();
+  Check(m->GetAccumulationResetCount() == 2, "a camera move restarts accumulation");
+  Check(m->GetVisibilityUpdateCount() == 1, "a camera move keeps the visibility grid");
+
+  color->AddRGBPoint(0.5, 0.2, 0.9, 0.2);
+  win->Render();
+  Check(m->GetAccumulationResetCount() == 3, "a colour change restarts accumulation");
+  Check(m->GetVisibilityUpdateCount() == 1, "a colour change keeps the visibility grid");
+  Check(m->GetMajorantUpdateCount() == majorants, "a colour change keeps the majorants");
+
+  env->SetColor(2.0, 2.0, 2.0);
+  win->Render();
+  Check(m->GetEnvironmentUploadCount() == 2, "an environment change uploads the environment");
+  Check(m->GetVisibilityUpdateCount() == 1, "an environment change keeps the visibility grid");
+  Check(m->GetAccumulationResetCount() == 4, "an environment change restarts accumulation");
+
+  opacity->AddPoint(0.5, 0.6);
+  win->Render();
+  Check(m->GetVisibilityUpdateCount() == 2, "an opacity change recomputes the visibility grid");
+  Check(m->GetMajorantUpdateCount() == majorants + 1, "an opacity change recomputes the majorants");
+
+  property->SetScalarOpacityUnitDistance(2.0);
+  win->Render();
+  Check(m->GetVisibilityUpdateCount() == 3, "a unit distance change recomputes the visibility grid");
+
+  m->SetDensityScale(0.5);
+  win->Render();
+  Check(m->GetVisibilityUpdateCount() == 4, "a density scale change recomputes the visibility grid");
+
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(10, 9, 8);
+  plane->SetNormal(1, 0, 0);
+  m->AddClippingPlane(plane);
+  win->Render();
+  Check(m->GetVisibilityUpdateCount() == 5, "a clipping plane recomputes the visibility grid");
+
+  values->SetValue(5, 0.9f);
+  values->Modified();
+  win->Render();
+  Check(m->GetVolumeUploadCount() == 2, "modified data is uploaded again");
+  Check(m->GetVisibilityUpdateCount() == 6, "modified data recomputes the visibility grid");
+
+  m->SetSamplingStrategyToEnvironment();
+  opacity->AddPoint(0.7, 0.1);
+  win->Render();
+  Check(m->GetVisibilityUpdateCount() == 6, "strategies without visibility never sweep");
+
+  // A volume that is empty under the transfer function: background only, no sweeps.
+  vtkNew<vtkPiecewiseFunction> none;
+  none->AddPoint(0.0, 0.0);
+  none->AddPoint(1.0, 0.0);
+  property->SetScalarOpacity(none);
+  m->SetSamplingStrategyToTwoStep();
+  win->Render();
+  Check(std::string(m->GetLastError()).empty(), m->GetLastError());
+  Check(m->GetVisibilityUpdateCount() == 6, "an empty volume skips the sweeps");
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
