@@ -357,3 +357,27 @@ TEST(SceneFile, WrongArrayLengths)
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["volume"] = json::parse(R"({"files": []})"); }),
     "volume.files: expected a non-empty array");
 }
+
+TEST(SceneFile, ExampleScenesParse)
+{
+  namespace fs = std::filesystem;
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(VISSWEEP_EXAMPLE_SCENES))
+  {
+    if (entry.path().extension() != ".json")
+    {
+      continue;
+    }
+    ++count;
+    SCOPED_TRACE(entry.path().string());
+    Scene s;
+    ASSERT_NO_THROW(s = vstool::ReadSceneFile(entry.path().string()));
+    EXPECT_TRUE(fs::exists(s.Volume.File)) << s.Volume.File;
+    if (s.Environment.Type == Scene::EnvironmentSection::Kind::File)
+    {
+      EXPECT_TRUE(fs::exists(s.Environment.File)) << s.Environment.File;
+    }
+    EXPECT_TRUE(vstool::ParseScene(ToJson(s), "/") == s);
+  }
+  EXPECT_GE(count, 3);
+}
