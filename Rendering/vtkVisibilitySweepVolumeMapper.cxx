@@ -70,6 +70,24 @@ float ToSRGB(float x)
   return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
 }
 
+// Equal up to rounding: VTK recomputes the camera matrices on some passes (e.g. while
+// vtkWindowToImageFilter grabs the window) with last-bit differences that are no change.
+bool NearlyEqual(const std::vector<double>& a, const std::vector<double>& b)
+{
+  if (a.size() != b.size())
+  {
+    return false;
+  }
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    if (std::abs(a[i] - b[i]) > 1e-6 * std::max({ 1.0, std::abs(a[i]), std::abs(b[i]) }))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 glm::dmat4 ToGlm(vtkMatrix4x4* m)
 {
   glm::dmat4 g;
@@ -334,7 +352,10 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     return;
   }
   const uint32_t w = uint32_t(std::max(1, vp.Width / sub)), h = uint32_t(std::max(1, vp.Height / sub));
-  std::vector<float> fullDepth = vs::WindowCompositor::ReadDepth(ren, vp);
+  // Without opaque actors the depth buffer holds nothing of ours to respect; not reading it also
+  // keeps passes that re-render the window (vtkWindowToImageFilter) from restarting accumulation.
+  std::vector<float> fullDepth = ren->VisibleActorCount() > 0 ? vs::WindowCompositor::ReadDepth(ren, vp)
+                                                             : std::vector<float>(size_t(vp.Width) * vp.Height, 1.0f);
   std::vector<float> depth(size_t(w) * h);
   for (uint32_t y = 0; y < h; ++y)
     for (uint32_t x = 0; x < w; ++x)
@@ -397,7 +418,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     signature.push_back(double(this->EnvironmentUploadCount));
     signature.push_back(double(this->VisibilityUpdateCount));
     signature.insert(signature.end(), depth.begin(), depth.end());
-    if (signature != I.ImageSignature || pass->Width() != w || pass->Height() != h)
+    if (!NearlyEqual(signature, I.ImageSignature) || pass->Width() != w || pass->Height() != h)
     {
       pass->Reset(w, h);
       I.ImageSignature = signature;

@@ -27,6 +27,7 @@ int RenderMonteCarloBrain(int argc, char* argv[], bool clip)
   shrink->SetInputData(full);
   shrink->SetShrinkFactors(2, 2, 2);
   shrink->AveragingOn();
+  shrink->Update(); // so that ResetCamera sees the volume's bounds
   vtkNew<vtkEnvironmentMapReader> env;
   env->SetFileName((std::string(VISSWEEP_DATA) + "/envmaps/sunrise.exr").c_str());
   env->SetOctahedralSize(128);
