@@ -33,6 +33,8 @@ struct Options
   int Repeats = 3;
   int ReferenceSamples = 16;
   bool Quick = false;
+  std::vector<double> Cells;
+  std::vector<uint32_t> Kernels;
 };
 
 struct Diff
@@ -84,8 +86,12 @@ int Run(const Options& o)
     return Median(seconds);
   };
 
-  const std::vector<double> cellSizes = o.Quick ? std::vector<double>{ 8 } : std::vector<double>{ 2, 4, 8, 16 };
-  const std::vector<uint32_t> kernels = o.Quick ? std::vector<uint32_t>{ 64 } : std::vector<uint32_t>{ 32, 64, 128, 256, 0 };
+  const std::vector<double> cellSizes = !o.Cells.empty() ? o.Cells
+    : o.Quick                                              ? std::vector<double>{ 8 }
+                                                           : std::vector<double>{ 2, 4, 8, 16 };
+  const std::vector<uint32_t> kernels = !o.Kernels.empty() ? o.Kernels
+    : o.Quick                                                ? std::vector<uint32_t>{ 64 }
+                                                             : std::vector<uint32_t>{ 32, 64, 128, 256, 0 };
   nlohmann::json report;
   report["device"] = ctx->Info().Name;
   report["volume"] = o.Volume;
@@ -150,7 +156,7 @@ int Run(const Options& o)
     o.ReferenceSamples);
 
   // The defaults: 4^3 voxels per cell, auto kernel, filtering on, 8-bit storage.
-  const double defaultCell = o.Quick ? 8 : 4;
+  const double defaultCell = std::find(cellSizes.begin(), cellSizes.end(), 4.0) != cellSizes.end() ? 4.0 : cellSizes[0];
   vs::VisibilityGridParameters p;
   p.VoxelsPerCell = defaultCell;
   vs::VisibilityGrid sweep(ctx);
@@ -214,6 +220,9 @@ void AddBenchSweeps(CLI::App& bench)
   cmd->add_option("--reference-samples", o->ReferenceSamples, "rays per cell and direction of the reference")
     ->check(CLI::PositiveNumber);
   cmd->add_flag("--quick", o->Quick, "one configuration only (seconds)");
+  cmd->add_option("--cells", o->Cells, "voxels per cell to tabulate (default 2,4,8,16)")->delimiter(',');
+  cmd->add_option("--kernels", o->Kernels, "kernel rays to tabulate, 0 = automatic (default 32,64,128,256,0)")
+    ->delimiter(',');
   cmd->callback([o]() { throw CLI::RuntimeError(Run(*o)); });
 }
 }

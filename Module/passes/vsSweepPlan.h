@@ -37,8 +37,12 @@ struct VISSWEEPCORE_EXPORT VisibilityGridParameters
   /** Ray-marching step in world units; 0 = one voxel (the smallest spacing). */
   double StepSize = 0.0;
   bool Filtering = true;
-  /** beta / alpha of Eq. 9: widening angle as a fraction of a direction cell's opening angle. */
-  double FilterAngleFraction = 0.5;
+  /** beta / alpha of Eq. 9: widening angle as a fraction of a direction cell's opening angle
+   *  (alpha = the full angle of the cone with the cell's solid angle, 28.7 deg at 8 x 8).
+   *  Default 0, by measurement: on the MRI (skin TF) against the supersampled brute force,
+   *  mean |dV| 0.027 at 0, 0.032 at 1/16, 0.069 at 1/4 and 0.127 at the paper's 1/2; 0.031
+   *  unfiltered. The cell-footprint box filter (Sec. 8's base size) is what helps here. */
+  double FilterAngleFraction = 0.0;
   Method Algorithm = Method::Sweep;
   /** Brute force: rays per cell and direction (random points of the cell, random directions of the texel). */
   uint32_t BruteForceSamples = 1;

@@ -5,6 +5,15 @@
 #include "vsError.h"
 #include "vsImage.h"
 #include "vsSweepPlan.h"
+#include "vsVolumeScene.h"
+
+#include "vtkImageData.h"
+#include "vtkImageShrink3D.h"
+#include "vtkNIFTIImageReader.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkVolumeProperty.h"
 
 #include <gtest/gtest.h>
 
@@ -305,4 +314,53 @@ TEST(VisibilityGrid, FilteringReducesAliasingOnThinOccluders)
   for (double f : { 0.0, 0.125, 0.25, 0.5, 1.0 })
     std::printf("  beta/alpha = %.3f: %.5f\n", f, error(true, f));
   EXPECT_LT(on, 0.8 * off);
+}
+
+// Sweep against brute force on real data: the Colin27 MRI (halved) with the skin transfer
+// function of the benchmarks. Mean and largest difference, reported and bounded.
+TEST(VisibilityGrid, SweepAgreesWithBruteForceOnTheMRI)
+{
+  auto ctx = vs::Context::Default();
+  vtkNew<vtkNIFTIImageReader> reader;
+  reader->SetFileName(VISSWEEP_CH2);
+  vtkNew<vtkImageShrink3D> shrink;
+  shrink->SetInputConnection(reader->GetOutputPort());
+  shrink->SetShrinkFactors(2, 2, 2);
+  shrink->AveragingOn();
+  shrink->Update();
+  vtkImageData* image = shrink->GetOutput();
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0, 0.0);
+  opacity->AddPoint(40, 0.0);
+  opacity->AddPoint(80, 0.3);
+  opacity->AddPoint(255, 0.6);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetScalarOpacity(opacity);
+  vs::VolumeScene scene(ctx);
+  scene.Update(image, image->GetPointData()->GetScalars(), property, nullptr, 1.0);
+
+  VisibilityGridParameters p;
+  p.StorageFormat = VisibilityGridParameters::Format::Float32;
+  vs::VisibilityGrid sweep(ctx), brute(ctx);
+  sweep.Compute(scene.Volume(), scene.TF(), scene.Majorants(), scene.Geometry(), {}, p);
+  p.Algorithm = VisibilityGridParameters::Method::BruteForce;
+  p.BruteForceSamples = 8;
+  brute.Compute(scene.Volume(), scene.TF(), scene.Majorants(), scene.Geometry(), {}, p);
+  auto a = sweep.Download(), b = brute.Download();
+  double mean = 0.0, worst = 0.0;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    double e = std::abs(double(a[i]) - double(b[i]));
+    mean += e;
+    worst = std::max(worst, e);
+  }
+  mean /= double(a.size());
+  std::printf("MRI (91x109x91, 4^3 voxels per cell, 8x8 directions): sweep %.3f s, brute force (8 rays) %.3f s, "
+              "mean |dV| %.4f, max |dV| %.3f\n",
+    sweep.LastSeconds(), brute.LastSeconds(), mean, worst);
+  // Measured: mean 0.027 (filtered, beta = 0). The sweep reads one filtered kernel position per
+  // cell where the reference averages 8 random rays over the cell and the direction's solid
+  // angle; single cells at the skin's edge can differ by almost 1 (one sees through, one not).
+  EXPECT_LT(mean, 0.035);
+  EXPECT_LE(worst, 1.0);
 }
