@@ -152,25 +152,7 @@ float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng)
 /* The ray interval inside the (cropped) box and the kept side of every clip plane. */
 vec2 ray_interval(vec3 o, vec3 d)
 {
-  vec2 t = vs_intersect_box(o, d, P.boxMin.xyz, P.boxMax.xyz);
-  for (uint i = 0u; i < gClipCount; ++i)
-  {
-    vec4 pl = P.clipPlanes[i];
-    float dn = dot(pl.xyz, d);
-    float on = dot(pl.xyz, o) + pl.w;
-    if (abs(dn) < 1e-20)
-    {
-      if (on < 0.0)
-        return vec2(1.0, 0.0);
-      continue;
-    }
-    float th = -on / dn;
-    if (dn > 0.0)
-      t.x = max(t.x, th);
-    else
-      t.y = min(t.y, th);
-  }
-  return t;
+  return vs_clip_planes(o, d, vs_intersect_box(o, d, P.boxMin.xyz, P.boxMax.xyz), P.clipPlanes, gClipCount);
 }
 
 float visibility_texel(uvec3 cell, uint n, uint D)
