@@ -1,4 +1,5 @@
 #include "vsRenderCommand.h"
+#include "vsDisplayCheck.h"
 #include "vsToolVolume.h"
 
 #include "vtkCallbackCommand.h"
@@ -618,6 +619,7 @@ SceneObjects BuildScene(const Scene& scene)
   camera->OrthogonalizeViewUp();
   o.Renderer->ResetCameraClippingRange();
 
+  vs::RequireDisplay();
   o.Window = vtkSmartPointer<vtkRenderWindow>::New();
   o.Window->SetOffScreenRendering(1);
   o.Window->SetMultiSamples(0);
