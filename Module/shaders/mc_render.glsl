@@ -47,11 +47,14 @@ float gBrickSize;
 vec4 gTF;
 uint gEnvSize;
 uint gClipCount;
-/* The per-sample direction maps live at module scope: a function-local array inside the
- * sample loop became a stack allocation per iteration in lavapipe and overflowed after
- * ~100 samples per dispatch (measured: wrong images at 256 samples per frame). */
+/* The direction map of this sample (D x D <= 256 values), which the strategies read through
+ * vs_map_value (vs_prelude.h): one module-scope array, never copied into calls. */
 float gValues[256];
-float gValues64[64];
+
+float vs_map_value(uint n)
+{
+  return gValues[n];
+}
 
 vec3 env_radiance(vec3 w)
 {
@@ -211,14 +214,7 @@ vec3 sample_direction(vec3 x, uint strategy, inout VsRng rng, out float pdf)
   if (strategy == VS_STRATEGY_UNIFORM || D == 0u)
     return vs_sample_uniform(vs_rng_vec2(rng), pdf);
   direction_values(x, strategy, D, rng);
-  vec2 u = vs_rng_vec2(rng);
-  if (D == 8u)
-  {
-    for (uint n = 0u; n < 64u; ++n)
-      gValues64[n] = gValues[n];
-    return vs_sample_direction_8x8(strategy, gValues64, K, u, pdf);
-  }
-  return vs_sample_direction(strategy, gValues, D, K, u, pdf);
+  return vs_sample_direction(strategy, D, K, vs_rng_vec2(rng), pdf);
 }
 
 void accumulate(uint idx, vec4 v)

@@ -182,8 +182,7 @@ Map ValuesFor(uint strategy, const Scene& s)
   return strategy == VS_STRATEGY_VISIBILITY ? s.visibility : s.product;
 }
 
-// sample() and pdf() of a strategy through the dispatchers; D = 8 goes through
-// the float[64] (*_8x8) functions, the rest through the float[256] ones.
+// sample() and pdf() of a strategy through the dispatchers.
 struct Sampler
 {
   uint strategy;
@@ -192,13 +191,11 @@ struct Sampler
 
   vec3 Sample(vec2 u, float& pdf)
   {
-    return D == 8 ? vs_sample_direction_8x8(strategy, values.data(), K, u, pdf)
-                  : vs_sample_direction(strategy, values.data(), D, K, u, pdf);
+    return vs_sample_direction(strategy, values.data(), D, K, u, pdf);
   }
   float Pdf(vec3 dir)
   {
-    return D == 8 ? vs_pdf_direction_8x8(strategy, values.data(), K, dir)
-                  : vs_pdf_direction(strategy, values.data(), D, K, dir);
+    return vs_pdf_direction(strategy, values.data(), D, K, dir);
   }
 };
 
@@ -342,28 +339,6 @@ TEST(SamplingStrategies, SampledPdfIsPdfOfDirection)
   }
 }
 
-TEST(SamplingStrategies, EightByEightMatchesAnySizeAt8)
-{
-  Scene s = MakeScene(kVisibilityMaps[0], kEnvironments[3], 8, 6);
-  vstest::ScopedEnvMips scope(s.mips);
-  VsRng rng = vs_rng_init(uvec2(1u, 5u), 5u, 5u);
-  for (uint strategy = 0; strategy < 5; ++strategy)
-  {
-    Map values = ValuesFor(strategy, s);
-    for (int i = 0; i < 2000; ++i)
-    {
-      vec2 u = vs_rng_vec2(rng);
-      float pdfA, pdfB;
-      vec3 a = vs_sample_direction_8x8(strategy, values.data(), 6u, u, pdfA);
-      vec3 b = vs_sample_direction(strategy, values.data(), 8u, 6u, u, pdfB);
-      ASSERT_EQ(a, b) << StrategyName(strategy);
-      ASSERT_EQ(pdfA, pdfB);
-      ASSERT_EQ(vs_pdf_direction_8x8(strategy, values.data(), 6u, a),
-        vs_pdf_direction(strategy, values.data(), 8u, 6u, a));
-    }
-  }
-}
-
 TEST(SamplingStrategies, DispatchMatchesNamedFunctions)
 {
   Scene s = MakeScene(kVisibilityMaps[2], kEnvironments[1], 8, 6);
@@ -378,30 +353,27 @@ TEST(SamplingStrategies, DispatchMatchesNamedFunctions)
     float namedPdf[5], dispatchedPdf[5];
     named[0] = vs_sample_uniform(u, namedPdf[0]);
     named[1] = vs_sample_environment(6u, u, namedPdf[1]);
-    named[2] = vs_sample_visibility_8x8(vis.data(), u, namedPdf[2]);
-    named[3] = vs_sample_combined_8x8(prod.data(), u, namedPdf[3]);
-    named[4] = vs_sample_two_step_8x8(prod.data(), 6u, u, namedPdf[4]);
+    named[2] = vs_sample_tabulated(vis.data(), 8u, u, namedPdf[2]);
+    named[3] = vs_sample_tabulated(prod.data(), 8u, u, namedPdf[3]);
+    named[4] = vs_sample_two_step(prod.data(), 8u, 6u, u, namedPdf[4]);
     for (uint st = 0; st < 5; ++st)
     {
       Map values = ValuesFor(st, s);
-      dispatched[st] = vs_sample_direction_8x8(st, values.data(), 6u, u, dispatchedPdf[st]);
+      dispatched[st] = vs_sample_direction(st, values.data(), 8u, 6u, u, dispatchedPdf[st]);
       ASSERT_EQ(named[st], dispatched[st]) << StrategyName(st);
       ASSERT_EQ(namedPdf[st], dispatchedPdf[st]) << StrategyName(st);
     }
     vec3 d = named[4];
-    EXPECT_EQ(vs_pdf_uniform(d), vs_pdf_direction_8x8(0u, vis.data(), 6u, d));
-    EXPECT_EQ(vs_pdf_environment(6u, d), vs_pdf_direction_8x8(1u, vis.data(), 6u, d));
-    EXPECT_EQ(vs_pdf_visibility_8x8(vis.data(), d), vs_pdf_direction_8x8(2u, vis.data(), 6u, d));
-    EXPECT_EQ(vs_pdf_combined_8x8(prod.data(), d), vs_pdf_direction_8x8(3u, prod.data(), 6u, d));
-    EXPECT_EQ(
-      vs_pdf_two_step_8x8(prod.data(), 6u, d), vs_pdf_direction_8x8(4u, prod.data(), 6u, d));
-    // The generic named functions at D = 16 agree with the generic dispatcher too.
+    EXPECT_EQ(vs_pdf_uniform(d), vs_pdf_direction(0u, vis.data(), 8u, 6u, d));
+    EXPECT_EQ(vs_pdf_environment(6u, d), vs_pdf_direction(1u, vis.data(), 8u, 6u, d));
+    EXPECT_EQ(vs_pdf_tabulated(vis.data(), 8u, d), vs_pdf_direction(2u, vis.data(), 8u, 6u, d));
+    EXPECT_EQ(vs_pdf_tabulated(prod.data(), 8u, d), vs_pdf_direction(3u, prod.data(), 8u, 6u, d));
+    EXPECT_EQ(vs_pdf_two_step(prod.data(), 8u, 6u, d), vs_pdf_direction(4u, prod.data(), 8u, 6u, d));
+    // The same at D = 16.
     Map vis16 = RandomVisibility(16);
-    EXPECT_EQ(vs_sample_visibility(vis16.data(), 16u, u, p0),
+    EXPECT_EQ(vs_sample_tabulated(vis16.data(), 16u, u, p0),
       vs_sample_direction(2u, vis16.data(), 16u, 6u, u, p1));
     EXPECT_EQ(p0, p1);
-    EXPECT_EQ(vs_sample_combined(vis16.data(), 16u, u, p0),
-      vs_sample_direction(3u, vis16.data(), 16u, 6u, u, p1));
     EXPECT_EQ(vs_sample_two_step(vis16.data(), 16u, 6u, u, p0),
       vs_sample_direction(4u, vis16.data(), 16u, 6u, u, p1));
     EXPECT_EQ(p0, p1);
@@ -422,12 +394,12 @@ TEST(SamplingStrategies, NothingToSampleGivesPdfZero)
     for (vec2 u : { vec2(0.0f), vec2(0.5f, 0.2f), vec2(VS_ONE_MINUS_EPSILON) })
     {
       float pdf8 = -1.0f, pdf16 = -1.0f;
-      vec3 a = vs_sample_direction_8x8(strategy, zero.data(), K, u, pdf8);
+      vec3 a = vs_sample_direction(strategy, zero.data(), 8u, K, u, pdf8);
       vec3 b = vs_sample_direction(strategy, zero.data(), 16u, K, u, pdf16);
       EXPECT_EQ(pdf8, 0.0f) << StrategyName(strategy);
       EXPECT_EQ(pdf16, 0.0f) << StrategyName(strategy);
       EXPECT_TRUE(std::isfinite(glm::length(a)) && std::isfinite(glm::length(b)));
-      EXPECT_EQ(vs_pdf_direction_8x8(strategy, zero.data(), K, a), 0.0f);
+      EXPECT_EQ(vs_pdf_direction(strategy, zero.data(), 8u, K, a), 0.0f);
     }
   }
 }
@@ -523,7 +495,7 @@ TEST(SamplingStrategies, EstimatorsAreUnbiased)
       for (int i = 0; i < samples; ++i)
       {
         float pdf;
-        vec3 d = vs_sample_direction_8x8(strategy, values.data(), K, vs_rng_vec2(rng), pdf);
+        vec3 d = vs_sample_direction(strategy, values.data(), 8u, K, vs_rng_vec2(rng), pdf);
         uvec2 leaf = vs_dir_to_texel(d, N);
         double f = pdf > 0.0f ? leaves[leaf.y * N + leaf.x] * TrueVisibility(d) / pdf : 0.0;
         sum += f;

@@ -1,5 +1,5 @@
 // Hierarchical sample warping (shared/warp.h), exactly as the shaders compile
-// it: the tabulated 8x8 and n x n warps, and the descent of the environment
+// it: the tabulated n x n warp, and the descent of the environment
 // importance quadtree. Chi-square tests of the warped sample against the
 // probabilities the warp reports, plus the numerical edge cases.
 #include "shared/rng.h"
@@ -38,12 +38,13 @@ struct WarpResult
 
 using WarpFn = std::function<WarpResult(const Map&, vec2)>;
 
+// The default direction resolution, from a copy in a plain float[64].
 WarpResult Warp8x8(const Map& m, vec2 u)
 {
   float values[64];
   std::copy(m.begin(), m.begin() + 64, values);
   WarpResult r;
-  vs_warp_8x8(values, u, r.texel, r.prob, r.uRemapped);
+  vs_warp(values, 8u, u, r.texel, r.prob, r.uRemapped);
   return r;
 }
 
@@ -173,26 +174,6 @@ TEST(SamplingWarp, WarpAnySizeMatchesMaps)
   ExpectWarpMatchesMap(WarpN(16), OneHotMap(16, uvec2(15, 0)), 16, "one-hot");
 }
 
-TEST(SamplingWarp, AnySizeAt8IsBitIdenticalTo8x8)
-{
-  for (const Map& m : { RandomMap(8, 3), NearZeroMap(8), EpsilonFloorMap(8) })
-  {
-    VsRng rng = vs_rng_init(uvec2(4u, 4u), 0u, 1u);
-    for (int i = 0; i < 10000; ++i)
-    {
-      vec2 u = vs_rng_vec2(rng);
-      WarpResult a = Warp8x8(m, u), b = WarpN(8)(m, u);
-      ASSERT_EQ(a.texel, b.texel);
-      ASSERT_EQ(a.prob, b.prob);
-      ASSERT_EQ(a.uRemapped, b.uRemapped);
-    }
-    float values[64];
-    std::copy(m.begin(), m.begin() + 64, values);
-    Map copy = m;
-    EXPECT_EQ(vs_warp_total_8x8(values), vs_warp_total(copy.data(), 8u));
-  }
-}
-
 TEST(SamplingWarp, ProbFunctionsAgreeWithWarp)
 {
   Map m = NearZeroMap(8);
@@ -202,7 +183,7 @@ TEST(SamplingWarp, ProbFunctionsAgreeWithWarp)
   for (int i = 0; i < 1000; ++i)
   {
     WarpResult r = Warp8x8(m, vs_rng_vec2(rng));
-    EXPECT_EQ(r.prob, vs_warp_prob_8x8(values, r.texel));
+    EXPECT_EQ(r.prob, vs_warp_prob(values, 8u, r.texel));
     EXPECT_EQ(r.prob, vs_warp_prob(m.data(), 8u, r.texel));
   }
   double sum = 0.0;
@@ -210,7 +191,7 @@ TEST(SamplingWarp, ProbFunctionsAgreeWithWarp)
   {
     for (uint x = 0; x < 8; ++x)
     {
-      sum += vs_warp_prob_8x8(values, uvec2(x, y));
+      sum += vs_warp_prob(values, 8u, uvec2(x, y));
     }
   }
   EXPECT_NEAR(sum, 1.0, 1e-6);
@@ -269,8 +250,8 @@ TEST(SamplingWarp, AllZeroMapGivesProbZero)
       EXPECT_TRUE(std::isfinite(g.uRemapped.x) && std::isfinite(g.uRemapped.y));
     }
   }
-  EXPECT_EQ(vs_warp_total_8x8(values), 0.0f);
-  EXPECT_EQ(vs_warp_prob_8x8(values, uvec2(3u)), 0.0f);
+  EXPECT_EQ(vs_warp_total(values, 8u), 0.0f);
+  EXPECT_EQ(vs_warp_prob(values, 8u, uvec2(3u)), 0.0f);
 }
 
 // Probabilities of 1e-30 (and a lone 1e-30 among zeros) must not produce NaN or

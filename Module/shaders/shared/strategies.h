@@ -21,10 +21,9 @@
  *                from level log2(D) to K:  pdf = P(texel) P(leaf|texel) N²/(4π).
  *                A texel whose env node is 0 has product 0 and is never picked.
  *
- * "values" below is the visibility map for Visibility and the product map for
- * Combined and TwoStep; Uniform and Environment ignore it. Maps come as float[64]
- * (D = 8, the default; functions named *_8x8) or compactly in float[256] with
- * D in {2,4,8,16}. K >= log2(D) for TwoStep. A returned pdf of 0 means "no
+ * The tabulated map (VS_MAP, see vs_prelude.h) is the visibility map for Visibility
+ * and the product map for Combined and TwoStep; Uniform and Environment ignore it.
+ * D x D values, row-major, D in {2,4,8,16} (8 by default). K >= log2(D) for TwoStep. A returned pdf of 0 means "no
  * sample" (all-zero map or environment): the caller must skip the sample.
  */
 #ifndef VS_STRATEGIES_H
@@ -103,75 +102,19 @@ VS_FUNC float vs_pdf_environment(uint finestLevel, vec3 dir)
 
 /* ------------------------------------ tabulated D x D maps (Visibility, Combined) */
 
-VS_FUNC vec3 vs_sample_tabulated_8x8(float values[64], vec2 u, VS_OUT(float) pdf)
+VS_FUNC vec3 vs_sample_tabulated(VS_MAP_PARAM uint D, vec2 u, VS_OUT(float) pdf)
 {
   uvec2 t;
   float prob;
   vec2 uTexel;
-  vs_warp_8x8(values, u, t, prob, uTexel);
-  pdf = vs_texel_pdf(prob, 8u);
-  return vs_dir_in_texel(t, uTexel, 8u);
-}
-
-VS_FUNC float vs_pdf_tabulated_8x8(float values[64], vec3 dir)
-{
-  return vs_texel_pdf(vs_warp_prob_8x8(values, vs_dir_to_texel(dir, 8u)), 8u);
-}
-
-VS_FUNC vec3 vs_sample_tabulated(float values[256], uint D, vec2 u, VS_OUT(float) pdf)
-{
-  uvec2 t;
-  float prob;
-  vec2 uTexel;
-  vs_warp(values, D, u, t, prob, uTexel);
+  vs_warp(VS_MAP_ARG D, u, t, prob, uTexel);
   pdf = vs_texel_pdf(prob, D);
   return vs_dir_in_texel(t, uTexel, D);
 }
 
-VS_FUNC float vs_pdf_tabulated(float values[256], uint D, vec3 dir)
+VS_FUNC float vs_pdf_tabulated(VS_MAP_PARAM uint D, vec3 dir)
 {
-  return vs_texel_pdf(vs_warp_prob(values, D, vs_dir_to_texel(dir, D)), D);
-}
-
-/* Visibility and Combined differ only in what the caller puts into the map. */
-VS_FUNC vec3 vs_sample_visibility_8x8(float visibility[64], vec2 u, VS_OUT(float) pdf)
-{
-  return vs_sample_tabulated_8x8(visibility, u, pdf);
-}
-
-VS_FUNC float vs_pdf_visibility_8x8(float visibility[64], vec3 dir)
-{
-  return vs_pdf_tabulated_8x8(visibility, dir);
-}
-
-VS_FUNC vec3 vs_sample_visibility(float visibility[256], uint D, vec2 u, VS_OUT(float) pdf)
-{
-  return vs_sample_tabulated(visibility, D, u, pdf);
-}
-
-VS_FUNC float vs_pdf_visibility(float visibility[256], uint D, vec3 dir)
-{
-  return vs_pdf_tabulated(visibility, D, dir);
-}
-
-VS_FUNC vec3 vs_sample_combined_8x8(float product[64], vec2 u, VS_OUT(float) pdf)
-{
-  return vs_sample_tabulated_8x8(product, u, pdf);
-}
-
-VS_FUNC float vs_pdf_combined_8x8(float product[64], vec3 dir)
-{
-  return vs_pdf_tabulated_8x8(product, dir);
-}
-
-VS_FUNC vec3 vs_sample_combined(float product[256], uint D, vec2 u, VS_OUT(float) pdf)
-{
-  return vs_sample_tabulated(product, D, u, pdf);
-}
-
-VS_FUNC float vs_pdf_combined(float product[256], uint D, vec3 dir)
-{
-  return vs_pdf_tabulated(product, D, dir);
+  return vs_texel_pdf(vs_warp_prob(VS_MAP_ARG D, vs_dir_to_texel(dir, D)), D);
 }
 
 /* ------------------------------------------------------------- two-step */
@@ -200,79 +143,28 @@ VS_FUNC float vs_two_step_pdf_given_texel_prob(
   return vs_texel_pdf(probTexel * probLeaf, 1u << finestLevel);
 }
 
-VS_FUNC vec3 vs_sample_two_step_8x8(float product[64], uint finestLevel, vec2 u, VS_OUT(float) pdf)
+VS_FUNC vec3 vs_sample_two_step(VS_MAP_PARAM uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
 {
   uvec2 t;
   float prob;
   vec2 uTexel;
-  vs_warp_8x8(product, u, t, prob, uTexel);
-  return vs_two_step_descend(t, prob, uTexel, 8u, finestLevel, pdf);
-}
-
-VS_FUNC float vs_pdf_two_step_8x8(float product[64], uint finestLevel, vec3 dir)
-{
-  uvec2 leaf = vs_dir_to_texel(dir, 1u << finestLevel);
-  float probTexel = vs_warp_prob_8x8(product, leaf >> (finestLevel - 3u));
-  return vs_two_step_pdf_given_texel_prob(probTexel, leaf, 8u, finestLevel);
-}
-
-VS_FUNC vec3 vs_sample_two_step(
-  float product[256], uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
-{
-  uvec2 t;
-  float prob;
-  vec2 uTexel;
-  vs_warp(product, D, u, t, prob, uTexel);
+  vs_warp(VS_MAP_ARG D, u, t, prob, uTexel);
   return vs_two_step_descend(t, prob, uTexel, D, finestLevel, pdf);
 }
 
-VS_FUNC float vs_pdf_two_step(float product[256], uint D, uint finestLevel, vec3 dir)
+VS_FUNC float vs_pdf_two_step(VS_MAP_PARAM uint D, uint finestLevel, vec3 dir)
 {
   uvec2 leaf = vs_dir_to_texel(dir, 1u << finestLevel);
-  float probTexel = vs_warp_prob(product, D, leaf >> (finestLevel - vs_log2(D)));
+  float probTexel = vs_warp_prob(VS_MAP_ARG D, leaf >> (finestLevel - vs_log2(D)));
   return vs_two_step_pdf_given_texel_prob(probTexel, leaf, D, finestLevel);
 }
 
 /* ------------------------------------------------------------ dispatch */
 
-/* Any strategy by its VS_STRATEGY_* id; values = visibility or product map. */
-VS_FUNC vec3 vs_sample_direction_8x8(
-  uint strategy, float values[64], uint finestLevel, vec2 u, VS_OUT(float) pdf)
-{
-  if (strategy == VS_STRATEGY_ENVIRONMENT)
-  {
-    return vs_sample_environment(finestLevel, u, pdf);
-  }
-  if (strategy == VS_STRATEGY_VISIBILITY || strategy == VS_STRATEGY_COMBINED)
-  {
-    return vs_sample_tabulated_8x8(values, u, pdf);
-  }
-  if (strategy == VS_STRATEGY_TWO_STEP)
-  {
-    return vs_sample_two_step_8x8(values, finestLevel, u, pdf);
-  }
-  return vs_sample_uniform(u, pdf);
-}
-
-VS_FUNC float vs_pdf_direction_8x8(uint strategy, float values[64], uint finestLevel, vec3 dir)
-{
-  if (strategy == VS_STRATEGY_ENVIRONMENT)
-  {
-    return vs_pdf_environment(finestLevel, dir);
-  }
-  if (strategy == VS_STRATEGY_VISIBILITY || strategy == VS_STRATEGY_COMBINED)
-  {
-    return vs_pdf_tabulated_8x8(values, dir);
-  }
-  if (strategy == VS_STRATEGY_TWO_STEP)
-  {
-    return vs_pdf_two_step_8x8(values, finestLevel, dir);
-  }
-  return vs_pdf_uniform(dir);
-}
-
+/* Any strategy by its VS_STRATEGY_* id; the map = visibility or product map
+ * (Visibility and Combined differ only in what the caller puts into it). */
 VS_FUNC vec3 vs_sample_direction(
-  uint strategy, float values[256], uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
+  uint strategy, VS_MAP_PARAM uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
 {
   if (strategy == VS_STRATEGY_ENVIRONMENT)
   {
@@ -280,16 +172,16 @@ VS_FUNC vec3 vs_sample_direction(
   }
   if (strategy == VS_STRATEGY_VISIBILITY || strategy == VS_STRATEGY_COMBINED)
   {
-    return vs_sample_tabulated(values, D, u, pdf);
+    return vs_sample_tabulated(VS_MAP_ARG D, u, pdf);
   }
   if (strategy == VS_STRATEGY_TWO_STEP)
   {
-    return vs_sample_two_step(values, D, finestLevel, u, pdf);
+    return vs_sample_two_step(VS_MAP_ARG D, finestLevel, u, pdf);
   }
   return vs_sample_uniform(u, pdf);
 }
 
-VS_FUNC float vs_pdf_direction(uint strategy, float values[256], uint D, uint finestLevel, vec3 dir)
+VS_FUNC float vs_pdf_direction(uint strategy, VS_MAP_PARAM uint D, uint finestLevel, vec3 dir)
 {
   if (strategy == VS_STRATEGY_ENVIRONMENT)
   {
@@ -297,11 +189,11 @@ VS_FUNC float vs_pdf_direction(uint strategy, float values[256], uint D, uint fi
   }
   if (strategy == VS_STRATEGY_VISIBILITY || strategy == VS_STRATEGY_COMBINED)
   {
-    return vs_pdf_tabulated(values, D, dir);
+    return vs_pdf_tabulated(VS_MAP_ARG D, dir);
   }
   if (strategy == VS_STRATEGY_TWO_STEP)
   {
-    return vs_pdf_two_step(values, D, finestLevel, dir);
+    return vs_pdf_two_step(VS_MAP_ARG D, finestLevel, dir);
   }
   return vs_pdf_uniform(dir);
 }

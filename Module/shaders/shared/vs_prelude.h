@@ -29,6 +29,9 @@
 #define VS_INOUT(T) T&
 #define VS_OUT(T) T&
 #define VS_CONST constexpr
+#define VS_MAP_PARAM const float *values,
+#define VS_MAP_ARG values,
+#define VS_MAP(i) values[i]
 #else
 #define VS_NAMESPACE_BEGIN
 #define VS_NAMESPACE_END
@@ -36,7 +39,17 @@
 #define VS_INOUT(T) inout T
 #define VS_OUT(T) out T
 #define VS_CONST const
+#define VS_MAP_PARAM
+#define VS_MAP_ARG
+#define VS_MAP(i) vs_map_value(i)
 #endif
+
+/* The small tabulated direction maps (visibility or product, D x D <= 256 values)
+ * the strategies warp: in C++ a `const float* values` argument (VS_MAP_PARAM /
+ * VS_MAP_ARG); in GLSL the one map of the invocation, which the shader keeps in a
+ * module-scope array and exposes as `float vs_map_value(uint n)`. GLSL passes arrays
+ * by value, and copying a 256-float map into every call made lavapipe spend minutes
+ * compiling the render shader. VS_MAP(i) reads entry i either way. */
 
 VS_NAMESPACE_BEGIN
 

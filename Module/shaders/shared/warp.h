@@ -22,7 +22,8 @@
  * leaf); strategies.h turns them into solid-angle pdfs (x texels / 4π).
  *
  * Two kinds of trees:
- *  - Small tabulated maps (n x n, n in {2,4,8,16}, row-major, index y*n + x):
+ *  - Small tabulated maps (n x n, n in {2,4,8,16}, row-major, index y*n + x,
+ *    read through VS_MAP, see vs_prelude.h):
  *    the per-scatter-event visibility or visibility x light product. The tree
  *    is built on the fly, lazily: at each level only the four children of the
  *    current node are summed from the texels. prob = value / total.
@@ -91,111 +92,62 @@ VS_FUNC uvec2 vs_warp_choose_child(vec4 w, VS_INOUT(vec2) u)
   return uvec2(cx, cy);
 }
 
-/* ------------------------------------------- tabulated 8 x 8 (64 values) */
+/* ---------------------------------- tabulated n x n, n in {2,4,8,16} */
 
-/* Sum of the size x size block of texels at origin of an 8 x 8 map. */
-VS_FUNC float vs_block_sum_8x8(float values[64], uvec2 origin, uint size)
+#ifndef __cplusplus
+/* Defined by the includer: entry n of the invocation's tabulated map (vs_prelude.h). */
+float vs_map_value(uint n);
+#endif
+
+/* Sum of the size x size block of texels at origin of the n x n map (index y*n + x). */
+VS_FUNC float vs_block_sum(VS_MAP_PARAM uint n, uvec2 origin, uint size)
 {
   float s = 0.0f;
   for (uint y = origin.y; y < origin.y + size; ++y)
   {
     for (uint x = origin.x; x < origin.x + size; ++x)
     {
-      s += values[y * 8u + x];
+      s += VS_MAP(y * n + x);
     }
   }
   return s;
 }
 
 /* Weights of the four children (each size x size texels) of node. */
-VS_FUNC vec4 vs_children_8x8(float values[64], uvec2 node, uint size)
+VS_FUNC vec4 vs_children(VS_MAP_PARAM uint n, uvec2 node, uint size)
 {
   uvec2 o = node * (2u * size);
-  return vec4(vs_block_sum_8x8(values, o, size),
-    vs_block_sum_8x8(values, o + uvec2(size, 0u), size),
-    vs_block_sum_8x8(values, o + uvec2(0u, size), size),
-    vs_block_sum_8x8(values, o + uvec2(size), size));
+  return vec4(vs_block_sum(VS_MAP_ARG n, o, size), vs_block_sum(VS_MAP_ARG n, o + uvec2(size, 0u), size),
+    vs_block_sum(VS_MAP_ARG n, o + uvec2(0u, size), size), vs_block_sum(VS_MAP_ARG n, o + uvec2(size), size));
 }
 
-/* The total weight, summed exactly as vs_warp_8x8 sums it. */
-VS_FUNC float vs_warp_total_8x8(float values[64])
+/* The total weight, summed exactly as vs_warp sums it. */
+VS_FUNC float vs_warp_total(VS_MAP_PARAM uint n)
 {
-  return vs_quad_sum(vs_children_8x8(values, uvec2(0u), 4u));
+  return vs_quad_sum(vs_children(VS_MAP_ARG n, uvec2(0u), n / 2u));
 }
 
-/* The discrete probability vs_warp_8x8 gives texel t. */
-VS_FUNC float vs_warp_prob_8x8(float values[64], uvec2 t)
+/* The discrete probability vs_warp gives texel t. */
+VS_FUNC float vs_warp_prob(VS_MAP_PARAM uint n, uvec2 t)
 {
-  float total = vs_warp_total_8x8(values);
-  return total > 0.0f ? values[t.y * 8u + t.x] / total : 0.0f;
+  float total = vs_warp_total(VS_MAP_ARG n);
+  return total > 0.0f ? VS_MAP(t.y * n + t.x) / total : 0.0f;
 }
 
-/* Warp u down the quadtree of the 8 x 8 map `values` (64 -> 16 -> 4 -> 1).
- * texel: the chosen texel; prob: its discrete probability value/total (0 if
- * the map is all zero); uRemapped: uniform in [0,1)^2 within the texel. */
-VS_FUNC void vs_warp_8x8(
-  float values[64], vec2 u, VS_OUT(uvec2) texel, VS_OUT(float) prob, VS_OUT(vec2) uRemapped)
+/* Warp u down the quadtree of the n x n map (n*n -> ... -> 1). texel: the chosen
+ * texel; prob: its discrete probability value/total (0 if the map is all zero);
+ * uRemapped: uniform in [0,1)^2 within the texel. */
+VS_FUNC void vs_warp(VS_MAP_PARAM uint n, vec2 u, VS_OUT(uvec2) texel, VS_OUT(float) prob, VS_OUT(vec2) uRemapped)
 {
-  vec4 w = vs_children_8x8(values, uvec2(0u), 4u);
-  float total = vs_quad_sum(w);
-  uvec2 node = vs_warp_choose_child(w, u);
-  for (uint size = 2u; size > 0u; size /= 2u)
-  {
-    node = 2u * node + vs_warp_choose_child(vs_children_8x8(values, node, size), u);
-  }
-  texel = node;
-  prob = total > 0.0f ? values[node.y * 8u + node.x] / total : 0.0f;
-  uRemapped = u;
-}
-
-/* ---------------------------------- tabulated n x n, n in {2,4,8,16} */
-
-/* The same for an n x n map stored compactly (index y*n + x) in an array of
- * 256: one function for every direction resolution the product supports. */
-VS_FUNC float vs_block_sum(float values[256], uint n, uvec2 origin, uint size)
-{
-  float s = 0.0f;
-  for (uint y = origin.y; y < origin.y + size; ++y)
-  {
-    for (uint x = origin.x; x < origin.x + size; ++x)
-    {
-      s += values[y * n + x];
-    }
-  }
-  return s;
-}
-
-VS_FUNC vec4 vs_children(float values[256], uint n, uvec2 node, uint size)
-{
-  uvec2 o = node * (2u * size);
-  return vec4(vs_block_sum(values, n, o, size), vs_block_sum(values, n, o + uvec2(size, 0u), size),
-    vs_block_sum(values, n, o + uvec2(0u, size), size),
-    vs_block_sum(values, n, o + uvec2(size), size));
-}
-
-VS_FUNC float vs_warp_total(float values[256], uint n)
-{
-  return vs_quad_sum(vs_children(values, n, uvec2(0u), n / 2u));
-}
-
-VS_FUNC float vs_warp_prob(float values[256], uint n, uvec2 t)
-{
-  float total = vs_warp_total(values, n);
-  return total > 0.0f ? values[t.y * n + t.x] / total : 0.0f;
-}
-
-VS_FUNC void vs_warp(float values[256], uint n, vec2 u, VS_OUT(uvec2) texel, VS_OUT(float) prob,
-  VS_OUT(vec2) uRemapped)
-{
-  vec4 w = vs_children(values, n, uvec2(0u), n / 2u);
+  vec4 w = vs_children(VS_MAP_ARG n, uvec2(0u), n / 2u);
   float total = vs_quad_sum(w);
   uvec2 node = vs_warp_choose_child(w, u);
   for (uint size = n / 4u; size > 0u; size /= 2u)
   {
-    node = 2u * node + vs_warp_choose_child(vs_children(values, n, node, size), u);
+    node = 2u * node + vs_warp_choose_child(vs_children(VS_MAP_ARG n, node, size), u);
   }
   texel = node;
-  prob = total > 0.0f ? values[node.y * n + node.x] / total : 0.0f;
+  prob = total > 0.0f ? VS_MAP(node.y * n + node.x) / total : 0.0f;
   uRemapped = u;
 }
 
