@@ -145,6 +145,26 @@ VolumeGeometry ComputeGeometry(vtkImageData* image, vtkMatrix4x4* volumeMatrix)
   return g;
 }
 
+VolumeGeometry CropGeometry(const VolumeGeometry& geometry, vtkImageData* image, const double planes[6])
+{
+  const glm::dmat4 physicalToIndex = ComputeGeometry(image, nullptr).WorldToIndex;
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (int c = 0; c < 8; ++c)
+  {
+    glm::dvec4 p(planes[(c & 1) ? 1 : 0], planes[(c & 2) ? 3 : 2], planes[(c & 4) ? 5 : 4], 1.0);
+    glm::dvec3 i(physicalToIndex * p);
+    lo = glm::min(lo, i);
+    hi = glm::max(hi, i);
+  }
+  VolumeGeometry g = geometry;
+  for (int i = 0; i < 3; ++i)
+  {
+    g.BoxMin[i] = float(std::max(double(g.BoxMin[i]), lo[i]));
+    g.BoxMax[i] = float(std::min(double(g.BoxMax[i]), hi[i]));
+  }
+  return g;
+}
+
 std::vector<float> ScalarsAsFloat(vtkDataArray* scalars)
 {
   const vtkIdType n = scalars->GetNumberOfTuples();

@@ -34,6 +34,13 @@ VISSWEEPFILTERS_EXPORT std::string CheckProperty(vtkVolumeProperty* property);
 /** Voxel centres at array indices; `volumeMatrix` (may be null) is the prop's model matrix. */
 VISSWEEPFILTERS_EXPORT VolumeGeometry ComputeGeometry(vtkImageData* image, vtkMatrix4x4* volumeMatrix);
 
+/** The geometry with its index box cut down to VTK's cropping subvolume: `planes` =
+ *  (xmin, xmax, ymin, ymax, zmin, zmax) in data coordinates (vtkVolumeMapper's
+ *  CroppingRegionPlanes). For an image with a rotated direction matrix the box is the
+ *  index-space bounds of the cropping box. May return an empty box (BoxMin > BoxMax). */
+VISSWEEPFILTERS_EXPORT VolumeGeometry CropGeometry(const VolumeGeometry& geometry, vtkImageData* image,
+  const double planes[6]);
+
 /** The scalars as floats, x fastest (component 0). */
 VISSWEEPFILTERS_EXPORT std::vector<float> ScalarsAsFloat(vtkDataArray* scalars);
 

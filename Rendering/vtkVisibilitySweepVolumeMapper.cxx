@@ -88,6 +88,34 @@ bool NearlyEqual(const std::vector<double>& a, const std::vector<double>& b)
   return true;
 }
 
+// Every value of the render parameters, integers by value: reinterpreting them as floats
+// made small integers (the strategy, the cell mode) denormals that NearlyEqual took for 0,
+// so switching Uniform -> Environment kept accumulating into the old image.
+std::vector<double> RenderSignature(const vs::shared::VsRenderParams& p)
+{
+  static_assert(sizeof(vs::shared::VsRenderParams) == 2 * 64 + 17 * 16,
+    "a member was added to VsRenderParams: add it to the signature");
+  std::vector<double> s;
+  auto addMat = [&s](const glm::mat4& m) { s.insert(s.end(), &m[0][0], &m[0][0] + 16); };
+  auto addVec = [&s](const glm::vec4& v) { s.insert(s.end(), { v.x, v.y, v.z, v.w }); };
+  auto addUint = [&s](const glm::uvec4& v) { s.insert(s.end(), { double(v.x), double(v.y), double(v.z), double(v.w) }); };
+  addMat(p.invViewProj);
+  addMat(p.worldToIndex);
+  for (const auto& v : { p.boxMin, p.boxMax, p.dims, p.tf, p.background, p.sampling2, p.cellSize })
+  {
+    addVec(v);
+  }
+  for (const auto& v : { p.viewport, p.sampling, p.grid, p.bricks })
+  {
+    addUint(v);
+  }
+  for (const auto& v : p.clipPlanes)
+  {
+    addVec(v);
+  }
+  return s;
+}
+
 glm::dmat4 ToGlm(vtkMatrix4x4* m)
 {
   glm::dmat4 g;
@@ -153,6 +181,7 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     if (changes.Data)
     {
       ++this->VolumeUploadCount;
+      this->LastMajorantSeconds = I.Scene->Majorants().LastSeconds();
       if (I.Scene->Volume().NonFiniteCount())
       {
         vtkWarningMacro(<< I.Scene->Volume().NonFiniteCount()
@@ -223,10 +252,28 @@ std::vector<glm::dvec4> WorldPlanes(vtkPlaneCollection* planes)
 }
 }
 
+namespace
+{
+// The volume's geometry with VTK's cropping subvolume applied to its index box.
+vs::VolumeGeometry CroppedGeometry(vtkVolumeMapper* mapper, const vs::VolumeGeometry& full)
+{
+  if (!mapper->GetCropping())
+  {
+    return full;
+  }
+  if (mapper->GetCroppingRegionFlags() != VTK_CROP_SUBVOLUME)
+  {
+    throw vs::InputError("only the cropping subvolume (CroppingRegionFlags = VTK_CROP_SUBVOLUME) is supported, got "
+                         "flags " + std::to_string(mapper->GetCroppingRegionFlags()));
+  }
+  return vs::CropGeometry(full, vtkImageData::SafeDownCast(mapper->GetInput()), mapper->GetCroppingRegionPlanes());
+}
+}
+
 void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume*)
 {
   Internals& I = *this->Impl;
-  const vs::VolumeGeometry& geometry = I.Scene->Geometry();
+  const vs::VolumeGeometry geometry = CroppedGeometry(this, I.Scene->Geometry());
   View view = MakeView(ren);
   vs::Viewport vp = view.Port;
   if (vp.Width <= 0 || vp.Height <= 0)
@@ -264,7 +311,8 @@ void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, 
 void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
-  const vs::VolumeGeometry& geometry = I.Scene->Geometry();
+  const vs::VolumeGeometry geometry = CroppedGeometry(this, I.Scene->Geometry());
+  const bool croppedAway = glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax));
 
   // The environment: port 1, or a constant white sky.
   vtkImageData* envImage = nullptr;
@@ -303,7 +351,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   // The visibility grid, only for the strategies that use it and only when something that
   // changes extinction (or the grid's own parameters) changed.
   const std::vector<glm::dvec4> planes = WorldPlanes(this->ClippingPlanes);
-  const bool emptyVolume = I.Scene->Majorants().MaxMajorant() <= 0.0f;
+  const bool emptyVolume = I.Scene->Majorants().MaxMajorant() <= 0.0f || croppedAway;
   const bool needGrid = this->SamplingStrategy >= Visibility && !emptyVolume;
   vs::VisibilityGridParameters gp;
   gp.DirectionResolution = uint32_t(std::max(0, this->DirectionResolution));
@@ -321,6 +369,10 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r)
       gridSignature.push_back(geometry.WorldToIndex[c][r]);
+  for (int i = 0; i < 3; ++i)
+  {
+    gridSignature.insert(gridSignature.end(), { geometry.BoxMin[i], geometry.BoxMax[i] });
+  }
   if (!I.Grid)
   {
     I.Grid = std::make_unique<vs::VisibilityGrid>(I.Context);
@@ -411,8 +463,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     }
     pass = I.MC.get();
     // Everything the accumulated image depends on; any difference restarts accumulation.
-    std::vector<double> signature(reinterpret_cast<const float*>(&p),
-      reinterpret_cast<const float*>(&p) + sizeof(p) / sizeof(float));
+    std::vector<double> signature = RenderSignature(p);
     signature.push_back(double(I.Scene->TableBuilds()));
     signature.push_back(double(I.Scene->Uploads()));
     signature.push_back(double(this->EnvironmentUploadCount));
@@ -430,9 +481,17 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   if (spp > 0)
   {
     p.sampling.y = spp;
+    pass->SetCountLookups(this->CountLookups);
     pass->Render(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), needGrid ? I.Grid.get() : nullptr,
       *I.Environment, p, depth);
     this->LastDeviceSeconds = pass->LastSeconds();
+    if (this->CountLookups)
+    {
+      auto n = pass->LastLookups();
+      this->LastLookupCounts[0] = double(n[0]);
+      this->LastLookupCounts[1] = double(n[1]);
+      this->LastLookupCounts[2] = double(n[2]);
+    }
   }
   this->AccumulatedSamples = interactive ? 0 : int(pass->Samples());
 
@@ -574,4 +633,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DensityScale: " << this->DensityScale << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "VolumeUploadCount: " << this->VolumeUploadCount << "\n";
+  os << indent << "LastDeviceSeconds: " << this->LastDeviceSeconds << "\n";
+  os << indent << "LastMajorantSeconds: " << this->LastMajorantSeconds << "\n";
+  os << indent << "CountLookups: " << this->CountLookups << "\n";
 }

@@ -91,6 +91,8 @@ public:
   /** How the visibility cells around a scatter point form its map. Default StochasticCell (measured faster at equal error). */
   vtkSetClampMacro(CellMode, int, TrilinearCells, StochasticCell);
   vtkGetMacro(CellMode, int);
+  void SetCellModeToTrilinear() { this->SetCellMode(TrilinearCells); }
+  void SetCellModeToStochastic() { this->SetCellMode(StochasticCell); }
   ///@}
 
   ///@{
@@ -212,6 +214,19 @@ public:
 
   /** Device seconds of the last render pass (0 if the device has no timestamps). */
   vtkGetMacro(LastDeviceSeconds, double);
+  /** Device seconds of the last majorant update (brick ranges; runs when the data changes). */
+  vtkGetMacro(LastMajorantSeconds, double);
+
+  ///@{
+  /** Benchmarks: render Monte Carlo frames with an instrumented kernel that counts its reads
+   *  (same samples, slower; r8 visibility grids only; 32-bit counters, so count frames of a
+   *  few samples per pixel). LastLookupCounts = (trilinear volume samples, majorant-brick
+   *  loads, visibility-texel loads) of the last frame. Off by default. */
+  vtkSetMacro(CountLookups, bool);
+  vtkGetMacro(CountLookups, bool);
+  vtkBooleanMacro(CountLookups, bool);
+  vtkGetVector3Macro(LastLookupCounts, double);
+  ///@}
   /** Times the volume was uploaded to the device (changes only when the input changes). */
   vtkGetMacro(VolumeUploadCount, int);
   /** The last error reported with vtkErrorMacro, or "" after a successful render. */
@@ -249,6 +264,9 @@ protected:
   double DensityScale = 1.0;
   int Seed = 1;
   double LastDeviceSeconds = 0.0;
+  double LastMajorantSeconds = 0.0;
+  bool CountLookups = false;
+  double LastLookupCounts[3] = { 0.0, 0.0, 0.0 };
   int VolumeUploadCount = 0;
 
 private:

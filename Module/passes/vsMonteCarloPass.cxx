@@ -11,6 +11,7 @@
 #include "vsTransferFunctionTable.h"
 #include "vsVisibilityGrid.h"
 
+#include "vs_spirv_mc_render_count.h"
 #include "vs_spirv_mc_render_r16.h"
 #include "vs_spirv_mc_render_r32f.h"
 #include "vs_spirv_mc_render_r8.h"
@@ -28,12 +29,26 @@ const ComputePipeline& MonteCarloPass::PipelineFor(const VisibilityGrid* grid)
 {
   vk::Format f = grid && grid->Valid() ? grid->Image().Format() : vk::Format::eR8Unorm;
   int i = f == vk::Format::eR8Unorm ? 0 : f == vk::Format::eR16Unorm ? 1 : 2;
+  if (this->CountLookups_)
+  {
+    if (i != 0)
+    {
+      throw InputError("counting reads needs the r8 visibility grid (the default storage format)");
+    }
+    i = 3;
+  }
   if (!this->Pipelines_[i])
   {
     using B = BindingType;
     std::vector<B> bindings{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageImage, B::StorageBuffer,
       B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer };
-    if (i == 0)
+    if (i == 3)
+    {
+      bindings.push_back(B::StorageBuffer);
+      this->Pipelines_[i] = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_mc_render_count), bindings,
+        sizeof(uint32_t), "monte carlo (r8 visibility, counting reads)");
+    }
+    else if (i == 0)
       this->Pipelines_[i] = SharedPipeline(
         this->Context_, VS_SPIRV(vs_spirv_mc_render_r8), bindings, sizeof(uint32_t), "monte carlo (r8 visibility)");
     else if (i == 1)
@@ -122,6 +137,15 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     .Bind(8, *this->Sum_)
     .Bind(9, *this->Comp_)
     .Bind(10, *this->Squares_);
+  if (this->CountLookups_)
+  {
+    if (!this->Lookups_)
+    {
+      this->Lookups_ = std::make_unique<Buffer>(this->Context_, 4 * sizeof(uint32_t), "read counters");
+    }
+    this->Lookups_->Fill(0u);
+    set.Bind(11, *this->Lookups_);
+  }
   Batch batch(this->Context_);
   batch.BeginTimer("render");
   // One sample per pixel per dispatch (see mc_render.glsl).
@@ -135,6 +159,12 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   this->LastSeconds_ = batch.Seconds("render");
   this->TotalSeconds_ += this->LastSeconds_;
   this->Samples_ += params.sampling.y;
+  if (this->CountLookups_)
+  {
+    uint32_t counts[3];
+    this->Lookups_->Download(counts, sizeof(counts));
+    this->LastLookups_ = { counts[0], counts[1], counts[2] };
+  }
 }
 
 std::vector<float> MonteCarloPass::Mean() const

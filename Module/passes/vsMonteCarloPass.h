@@ -8,6 +8,7 @@
 #include "vissweepCoreModule.h"
 #include "shared/render_params.h"
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -47,6 +48,12 @@ public:
   uint32_t Samples() const { return this->Samples_; }
   uint32_t Width() const { return this->Width_; }
   uint32_t Height() const { return this->Height_; }
+  /** Benchmarks: render with the instrumented kernel (mc_render_count.comp, r8 grids or none),
+   *  which counts reads; same samples, slower. */
+  void SetCountLookups(bool on) { this->CountLookups_ = on; }
+  /** Reads of the last counted Render: trilinear volume samples, majorant-brick loads, visibility texels. */
+  std::array<uint64_t, 3> LastLookups() const { return this->LastLookups_; }
+
   /** Device seconds of the last Render and of all Renders since the last Reset. */
   double LastSeconds() const { return this->LastSeconds_; }
   double TotalSeconds() const { return this->TotalSeconds_; }
@@ -55,7 +62,10 @@ private:
   const ComputePipeline& PipelineFor(const VisibilityGrid* grid);
 
   std::shared_ptr<Context> Context_;
-  std::shared_ptr<ComputePipeline> Pipelines_[3]; // r8, r16, r32f visibility
+  std::shared_ptr<ComputePipeline> Pipelines_[4]; // r8, r16, r32f visibility; r8 counting reads
+  std::unique_ptr<Buffer> Lookups_;
+  bool CountLookups_ = false;
+  std::array<uint64_t, 3> LastLookups_{};
   std::unique_ptr<Image3D> NoGrid_;
   std::unique_ptr<Buffer> Params_, Depth_, Sum_, Comp_, Squares_;
   std::vector<float> LastDepth_;

@@ -33,6 +33,16 @@ layout(std430, binding = 9) buffer Compensation { vec4 uComp[]; };
 layout(std430, binding = 10) buffer Squares { vec4 uSq[]; };
 layout(push_constant) uniform Push { uint sampleOffset; } pc;
 
+/* The instrumented variant (mc_render_count.comp) counts what a sample reads:
+ * uLookups[0] trilinear volume samples, [1] majorant-brick loads, [2] visibility texels. */
+#ifdef VS_COUNT_LOOKUPS
+layout(std430, binding = 11) buffer Lookups { uint uLookups[]; };
+uvec3 gLookups = uvec3(0u);
+#define VS_COUNT(i) (gLookups[i]++)
+#else
+#define VS_COUNT(i)
+#endif
+
 float vs_env_mip(uint index)
 {
   return uMips[index];
@@ -64,6 +74,7 @@ vec3 env_radiance(vec3 w)
 
 float brick_majorant(ivec3 b)
 {
+  VS_COUNT(1);
   return imageLoad(uMajorant, clamp(b, ivec3(0), gBricks - 1)).r;
 }
 
@@ -105,6 +116,7 @@ bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, out float 
         t -= log(1.0 - vs_rng_float(rng)) / mu;
         if (t >= tExit)
           break;
+        VS_COUNT(0);
         vec4 c = vs_classify(vs_sample_scalar(o + t * d, gDims), gTF);
         if (vs_rng_float(rng) * mu < c.w)
         {
@@ -137,6 +149,7 @@ float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng)
         t -= log(1.0 - vs_rng_float(rng)) / mu;
         if (t >= tExit)
           break;
+        VS_COUNT(0);
         float sigma = vs_classify(vs_sample_scalar(o + t * d, gDims), gTF).w;
         T *= max(0.0, 1.0 - sigma / mu);
         if (T < 0.05)
@@ -161,6 +174,7 @@ vec2 ray_interval(vec3 o, vec3 d)
 float visibility_texel(uvec3 cell, uint n, uint D)
 {
   ivec3 t = ivec3(int(cell.x * D + n % D), int(cell.y * D + n / D), int(cell.z));
+  VS_COUNT(2);
   return imageLoad(uVisibility, t).r;
 }
 
@@ -299,4 +313,9 @@ void main()
       result = vec4(0.0);
     accumulate(idx, result);
   }
+#ifdef VS_COUNT_LOOKUPS
+  atomicAdd(uLookups[0], gLookups.x);
+  atomicAdd(uLookups[1], gLookups.y);
+  atomicAdd(uLookups[2], gLookups.z);
+#endif
 }

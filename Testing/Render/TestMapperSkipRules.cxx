@@ -115,16 +115,50 @@ int TestMapperSkipRules(int, char*[])
   win->Render();
   Check(m->GetVisibilityUpdateCount() == 5, "a clipping plane recomputes the visibility grid");
 
+  // Sampling parameters restart accumulation (they change the estimator) but keep the grid.
+  int resets = m->GetAccumulationResetCount();
+  m->SetSamplingStrategyToCombined();
+  win->Render();
+  Check(m->GetAccumulationResetCount() == resets + 1, "a strategy change restarts accumulation");
+  m->SetCellModeToTrilinear();
+  win->Render();
+  Check(m->GetAccumulationResetCount() == resets + 2, "a cell mode change restarts accumulation");
+  m->SetSamplingStrategyToTwoStep();
+  m->SetCellModeToStochastic();
+  win->Render();
+  Check(m->GetVisibilityUpdateCount() == 5, "sampling parameters keep the visibility grid");
+
+  // Cropping (the subvolume) cuts the box the grid covers: the grid follows it.
+  double bounds[6];
+  image->GetBounds(bounds);
+  m->CroppingOn();
+  m->SetCroppingRegionPlanes(bounds[0], 0.5 * (bounds[0] + bounds[1]), bounds[2], bounds[3], bounds[4], bounds[5]);
+  win->Render();
+  Check(std::string(m->GetLastError()).empty(), m->GetLastError());
+  Check(m->GetVisibilityUpdateCount() == 6, "cropping recomputes the visibility grid");
+  m->SetCroppingRegionFlagsToFence();
+  win->Render();
+  Check(std::string(m->GetLastError()).find("VTK_CROP_SUBVOLUME") != std::string::npos,
+    "unsupported cropping flags are an error naming the supported ones");
+  m->SetCroppingRegionFlagsToSubVolume();
+  m->SetCroppingRegionPlanes(bounds[1] + 1.0, bounds[1] + 2.0, bounds[2], bounds[3], bounds[4], bounds[5]);
+  win->Render();
+  Check(std::string(m->GetLastError()).empty(), m->GetLastError());
+  Check(m->GetVisibilityUpdateCount() == 6, "a volume cropped away entirely skips the sweeps");
+  m->CroppingOff();
+  win->Render();
+  Check(m->GetVisibilityUpdateCount() == 7, "cropping off recomputes the grid for the whole box");
+
   values->SetValue(5, 0.9f);
   values->Modified();
   win->Render();
   Check(m->GetVolumeUploadCount() == 2, "modified data is uploaded again");
-  Check(m->GetVisibilityUpdateCount() == 6, "modified data recomputes the visibility grid");
+  Check(m->GetVisibilityUpdateCount() == 8, "modified data recomputes the visibility grid");
 
   m->SetSamplingStrategyToEnvironment();
   opacity->AddPoint(0.7, 0.1);
   win->Render();
-  Check(m->GetVisibilityUpdateCount() == 6, "strategies without visibility never sweep");
+  Check(m->GetVisibilityUpdateCount() == 8, "strategies without visibility never sweep");
 
   // A volume that is empty under the transfer function: background only, no sweeps.
   vtkNew<vtkPiecewiseFunction> none;
@@ -134,6 +168,6 @@ int TestMapperSkipRules(int, char*[])
   m->SetSamplingStrategyToTwoStep();
   win->Render();
   Check(std::string(m->GetLastError()).empty(), m->GetLastError());
-  Check(m->GetVisibilityUpdateCount() == 6, "an empty volume skips the sweeps");
+  Check(m->GetVisibilityUpdateCount() == 8, "an empty volume skips the sweeps");
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
