@@ -393,7 +393,10 @@ int Run(const RenderOptions& o)
   stats["setup_seconds"] = setupSeconds;       // reading the volume and the environment
   stats["render_seconds"] = renderSeconds;     // the progressive loop, first frame's sweeps included
   stats["first_frame_seconds"] = firstFrameSeconds;
-  stats["device_seconds"] = { { "sweeps", sweepSeconds }, { "render", deviceSeconds } };
+  // The product of visibility and light is built per scatter event inside the render kernel,
+  // so its cost is part of "render" (bench overhead separates it per strategy).
+  stats["device_seconds"] = { { "majorants", mapper->GetLastMajorantSeconds() }, { "sweeps", sweepSeconds },
+    { "render", deviceSeconds } };
   stats["paths_per_second"] = renderSeconds > 0.0 ? pixels * reached / renderSeconds : 0.0;
   stats["paths_per_device_second"] = deviceSeconds > 0.0 ? pixels * reached / deviceSeconds : 0.0;
   stats["visibility_updates"] = mapper->GetVisibilityUpdateCount();
@@ -425,10 +428,10 @@ int Run(const RenderOptions& o)
   }
   else
   {
-    std::printf("%d x %d, %s, %d spp in %.2f s (setup %.2f s, sweeps %.3f s device, render %.3f s device): "
+    std::printf("%d x %d, %s, %d spp in %.2f s (setup %.2f s; device: majorants %.3f s, sweeps %.3f s, render %.3f s): "
                 "%.3g paths/s\n",
       scene.Render.Width, scene.Render.Height, scene.Render.Strategy.c_str(), reached, renderSeconds, setupSeconds,
-      sweepSeconds, deviceSeconds, stats["paths_per_second"].get<double>());
+      mapper->GetLastMajorantSeconds(), sweepSeconds, deviceSeconds, stats["paths_per_second"].get<double>());
     for (const auto& out : o.Outputs)
     {
       std::printf("wrote %s\n", out.c_str());

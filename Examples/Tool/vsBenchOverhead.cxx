@@ -1,0 +1,252 @@
+#include "vsBenchOverhead.h"
+#include "vsRenderCommand.h"
+#include "vsSceneFile.h"
+
+#include "vsContext.h"
+#include "vsMarchRate.h"
+#include "vsVolumeScene.h"
+
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkVisibilitySweepVolumeMapper.h"
+#include "vtkVolume.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+
+#ifndef VISSWEEP_EXAMPLE_SCENES
+#define VISSWEEP_EXAMPLE_SCENES ""
+#endif
+
+namespace vstool
+{
+namespace
+{
+struct Options
+{
+  std::string Scene = std::string(VISSWEEP_EXAMPLE_SCENES) + "/brain_sunrise.json";
+  std::string Json;
+  int Width = 256, Height = 256, Spp = 4, Repeats = 3;
+  std::vector<std::string> Strategies{ "uniform", "environment", "visibility", "combined", "two-step" };
+  bool CellModes = true;
+  bool Quick = false;
+};
+
+struct Measurement
+{
+  std::string Strategy, CellMode;
+  double SecondsPerFrame = 0.0; // device seconds of one frame of `spp` samples per pixel (median)
+  double PathsPerSecond = 0.0;
+  double Variance = 0.0;        // mean over pixels and rgb of the variance of one sample
+  double MeanRadiance = 0.0;
+  double Lookups[3] = { 0, 0, 0 }; // per path: volume samples, majorant loads, visibility texels
+  double SweepSeconds = 0.0;
+};
+
+double Median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+void RenderChecked(SceneObjects& objects)
+{
+  objects.Window->Render();
+  const char* error = objects.Mapper->GetLastError();
+  if (error && *error)
+  {
+    throw std::runtime_error(std::string("render failed: ") + error);
+  }
+}
+
+Measurement Measure(SceneObjects& objects, const Options& o, const std::string& strategy, int cellMode)
+{
+  vtkVisibilitySweepVolumeMapper* mapper = objects.Mapper;
+  mapper->SetSamplingStrategy(StrategyIndex(strategy, "--strategies"));
+  mapper->SetCellMode(cellMode);
+  mapper->SetMaximumSamples(1 << 30);
+  mapper->SetSamplesPerFrame(o.Spp);
+  Measurement m;
+  m.Strategy = strategy;
+  m.CellMode = cellMode == vtkVisibilitySweepVolumeMapper::TrilinearCells ? "trilinear" : "stochastic";
+  const int sweepsBefore = mapper->GetVisibilityUpdateCount();
+  RenderChecked(objects); // warm-up: sweeps (if this strategy needs them first), pipeline creation
+  if (mapper->GetVisibilityUpdateCount() > sweepsBefore)
+  {
+    m.SweepSeconds = mapper->GetLastSweepSeconds();
+  }
+  std::vector<double> seconds;
+  for (int r = 0; r < o.Repeats; ++r)
+  {
+    RenderChecked(objects);
+    seconds.push_back(mapper->GetLastDeviceSeconds());
+  }
+  const double pixels = double(o.Width) * o.Height;
+  m.SecondsPerFrame = Median(seconds);
+  m.PathsPerSecond = m.SecondsPerFrame > 0.0 ? pixels * o.Spp / m.SecondsPerFrame : 0.0;
+
+  vtkImageData* radiance = mapper->GetRadiance(true);
+  auto* var = vtkFloatArray::SafeDownCast(radiance->GetPointData()->GetArray("Variance"));
+  auto* rgb = vtkFloatArray::SafeDownCast(radiance->GetPointData()->GetArray("Radiance"));
+  double v = 0.0, mean = 0.0;
+  for (vtkIdType i = 0; i < var->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      v += var->GetComponent(i, c);
+      mean += rgb->GetComponent(i, c);
+    }
+  }
+  m.Variance = v / (3.0 * double(var->GetNumberOfTuples()));
+  m.MeanRadiance = mean / (3.0 * double(rgb->GetNumberOfTuples()));
+
+  // One instrumented frame of one sample per pixel for the read counts (32-bit counters).
+  mapper->SetSamplesPerFrame(1);
+  mapper->CountLookupsOn();
+  RenderChecked(objects);
+  mapper->CountLookupsOff();
+  for (int k = 0; k < 3; ++k)
+  {
+    m.Lookups[k] = mapper->GetLastLookupCounts()[k] / pixels;
+  }
+  return m;
+}
+
+int Run(const Options& given)
+{
+  Options o = given;
+  if (o.Quick)
+  {
+    o.Width = std::min(o.Width, 64);
+    o.Height = std::min(o.Height, 64);
+    o.Spp = 1;
+    o.Repeats = 1;
+  }
+  Scene scene = ReadSceneFile(o.Scene);
+  scene.Render.Width = o.Width;
+  scene.Render.Height = o.Height;
+  SceneObjects objects = BuildScene(scene);
+  vtkVisibilitySweepVolumeMapper* mapper = objects.Mapper;
+  mapper->SetInteractiveUpdateRate(0.0); // always full-resolution frames
+
+  std::printf("scene %s, %d x %d, %d spp per timed frame, median of %d frames (device time of the render pass)\n",
+    o.Scene.c_str(), o.Width, o.Height, o.Spp, o.Repeats);
+  std::vector<Measurement> results;
+  for (const auto& s : o.Strategies)
+  {
+    const bool usesGrid = s == "visibility" || s == "combined" || s == "two-step";
+    results.push_back(Measure(objects, o, s, vtkVisibilitySweepVolumeMapper::StochasticCell));
+    if (usesGrid && o.CellModes)
+    {
+      results.push_back(Measure(objects, o, s, vtkVisibilitySweepVolumeMapper::TrilinearCells));
+    }
+  }
+  const Measurement* uniform = nullptr;
+  for (const auto& m : results)
+  {
+    if (m.Strategy == "uniform")
+    {
+      uniform = &m;
+    }
+  }
+
+  nlohmann::json report;
+  report["scene"] = o.Scene;
+  report["width"] = o.Width;
+  report["height"] = o.Height;
+  report["spp_per_frame"] = o.Spp;
+  report["repeats"] = o.Repeats;
+  std::printf("\n%-12s %-10s %12s %9s %10s %10s %9s %11s %10s\n", "strategy", "cells", "paths/s", "cost/Uni",
+    "vol/path", "vis/path", "Mvol/s", "var/sample", "eff/Uni");
+  for (const auto& m : results)
+  {
+    // Equal-time error of an unbiased estimator ~ variance x time per sample: efficiency = 1 / (var t).
+    const double t = m.PathsPerSecond > 0.0 ? 1.0 / m.PathsPerSecond : 0.0;
+    const double eff = m.Variance > 0.0 && t > 0.0 ? 1.0 / (m.Variance * t) : 0.0;
+    const double effU = uniform && uniform->Variance > 0.0 ? uniform->Variance / uniform->PathsPerSecond : 0.0;
+    const double relEff = effU > 0.0 ? eff * effU : 0.0;
+    const double cost = uniform && m.PathsPerSecond > 0.0 ? uniform->PathsPerSecond / m.PathsPerSecond : 0.0;
+    const double volRate = m.PathsPerSecond * m.Lookups[0];
+    std::printf("%-12s %-10s %12.0f %9.2f %10.1f %10.1f %9.1f %11.3g %10.2f\n", m.Strategy.c_str(),
+      m.CellMode.c_str(), m.PathsPerSecond, cost, m.Lookups[0], m.Lookups[2], volRate / 1e6, m.Variance, relEff);
+    report["strategies"].push_back({ { "strategy", m.Strategy }, { "cell_mode", m.CellMode },
+      { "seconds_per_frame", m.SecondsPerFrame }, { "paths_per_second", m.PathsPerSecond },
+      { "time_per_sample_relative_to_uniform", cost }, { "volume_samples_per_path", m.Lookups[0] },
+      { "majorant_loads_per_path", m.Lookups[1] }, { "visibility_texels_per_path", m.Lookups[2] },
+      { "volume_samples_per_second", volRate }, { "variance_per_sample", m.Variance },
+      { "mean_radiance", m.MeanRadiance }, { "efficiency_relative_to_uniform", relEff },
+      { "sweep_seconds", m.SweepSeconds } });
+  }
+  std::printf("(cost/Uni: device time per sample relative to Uniform; vol, vis: trilinear volume samples and\n"
+              " visibility texels read per path; eff/Uni: 1/(variance x time per sample) relative to Uniform,\n"
+              " i.e. how much faster the error falls at equal time)\n");
+
+  // The device's ceiling: the plainest trilinear ray march over the same volume.
+  vs::VolumeScene plain(vs::Context::Default());
+  plain.Update(objects.Image, objects.Image->GetPointData()->GetScalars(), objects.Volume->GetProperty(),
+    objects.Volume->GetMatrix(), mapper->GetDensityScale());
+  const auto& dims = plain.Geometry().Dims;
+  vs::MarchRate rate = vs::MeasureMarchRate(plain.GetContext(), plain.Volume(), plain.TF(),
+    { uint32_t(dims[0]), uint32_t(dims[1]), uint32_t(dims[2]) }, o.Quick ? 64 : 512, 0.5f, o.Repeats);
+  double best = 0.0;
+  for (const auto& m : results)
+  {
+    best = std::max(best, m.PathsPerSecond * m.Lookups[0]);
+  }
+  std::printf("\nplain ray march (trilinear + classification, 8 imageLoads each): %.1f M samples/s = %.0f M imageLoad/s\n"
+              "render kernel, best strategy: %.1f M volume samples/s = %.0f%% of the plain march\n",
+    rate.SamplesPerSecond() / 1e6, 8.0 * rate.SamplesPerSecond() / 1e6, best / 1e6,
+    rate.SamplesPerSecond() > 0.0 ? 100.0 * best / rate.SamplesPerSecond() : 0.0);
+  report["plain_march"] = { { "samples", rate.Samples }, { "seconds", rate.Seconds },
+    { "samples_per_second", rate.SamplesPerSecond() }, { "imageloads_per_second", 8.0 * rate.SamplesPerSecond() } };
+  if (!o.Json.empty())
+  {
+    std::ofstream out(o.Json);
+    out << report.dump(2) << "\n";
+    if (!out)
+    {
+      throw std::runtime_error("--json " + o.Json + ": cannot write");
+    }
+    std::printf("wrote %s\n", o.Json.c_str());
+  }
+  return 0;
+}
+}
+
+void AddBenchOverhead(CLI::App& bench)
+{
+  auto o = std::make_shared<Options>();
+  auto* cmd = bench.add_subcommand("overhead",
+    "samples per second of each strategy against Uniform, their equal-time efficiency, and the kernel's "
+    "volume-read rate against a plain ray march");
+  cmd->add_option("scene", o->Scene, "scene file (default: Examples/Scenes/brain_sunrise.json)");
+  cmd->add_option("--width", o->Width, "image width")->check(CLI::Range(1, 4096));
+  cmd->add_option("--height", o->Height, "image height")->check(CLI::Range(1, 4096));
+  cmd->add_option("--spp", o->Spp, "samples per pixel per timed frame")->check(CLI::Range(1, 1024));
+  cmd->add_option("--repeats", o->Repeats, "timed frames per strategy (median)")->check(CLI::Range(1, 1000));
+  cmd->add_option("--strategies", o->Strategies, "strategies to measure (default: all five)")->delimiter(',');
+  cmd->add_flag("!--no-cell-modes", o->CellModes, "skip the trilinear-cells variants of the grid strategies");
+  cmd->add_flag("--quick", o->Quick, "64 x 64, 1 spp, 1 frame (seconds; for tests)");
+  cmd->add_option("--json", o->Json, "write the figures as JSON");
+  cmd->callback([o]() {
+    int status = 2;
+    try
+    {
+      status = Run(*o);
+    }
+    catch (const std::exception& e)
+    {
+      std::fprintf(stderr, "vissweep bench overhead: error: %s\n", e.what());
+    }
+    throw CLI::RuntimeError(status);
+  });
+}
+}
