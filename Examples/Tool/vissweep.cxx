@@ -1,4 +1,5 @@
 // vissweep — the command-line tool: `vissweep info` prints the Vulkan device and its limits.
+#include "vsBenchFrames.h"
 #include "vsBenchOverhead.h"
 #include "vsBenchSweeps.h"
 #include "vsRenderCommand.h"
@@ -20,6 +21,7 @@ int main(int argc, char** argv)
   bench->require_subcommand(1);
   vstool::AddBenchSweeps(*bench);
   vstool::AddBenchOverhead(*bench);
+  vstool::AddBenchFrames(*bench);
   vstool::AddRender(app);
   try
   {

@@ -1,0 +1,117 @@
+#include "vsBenchFrames.h"
+#include "vsRenderCommand.h"
+#include "vsSceneFile.h"
+
+#include "vtkCamera.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkVisibilitySweepVolumeMapper.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+
+#ifndef VISSWEEP_EXAMPLE_SCENES
+#define VISSWEEP_EXAMPLE_SCENES ""
+#endif
+
+namespace vstool
+{
+namespace
+{
+struct Options
+{
+  std::string Scene = std::string(VISSWEEP_EXAMPLE_SCENES) + "/brain_sunrise.json";
+  std::string Json;
+  int Size = 512, Frames = 10;
+};
+
+struct FrameTimes
+{
+  double Median = 0.0, Max = 0.0;
+};
+
+FrameTimes Time(SceneObjects& objects, int frames, bool rotate)
+{
+  std::vector<double> t;
+  for (int i = 0; i < frames; ++i)
+  {
+    if (rotate)
+    {
+      objects.Renderer->GetActiveCamera()->Azimuth(2.0); // what a drag does between frames
+    }
+    const auto a = std::chrono::steady_clock::now();
+    objects.Window->Render();
+    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count());
+    const char* error = objects.Mapper->GetLastError();
+    if (error && *error)
+    {
+      throw std::runtime_error(std::string("render failed: ") + error);
+    }
+  }
+  std::sort(t.begin(), t.end());
+  return { t[t.size() / 2], t.back() };
+}
+
+int Run(const Options& o)
+{
+  Scene scene = ReadSceneFile(o.Scene);
+  scene.Render.Width = scene.Render.Height = o.Size;
+  SceneObjects objects = BuildScene(scene);
+  auto* mapper = objects.Mapper.Get();
+  mapper->SetMaximumSamples(1 << 30);
+  mapper->SetSamplesPerFrame(1);
+
+  objects.Window->SetDesiredUpdateRate(0.0001); // still: VTK's still update rate
+  const auto c0 = std::chrono::steady_clock::now();
+  objects.Window->Render(); // sweeps and pipelines
+  const double first = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
+  FrameTimes still = Time(objects, o.Frames, false);
+  objects.Window->SetDesiredUpdateRate(15.0); // what vtkRenderWindowInteractor asks while dragging
+  Time(objects, 1, true);
+  FrameTimes moving = Time(objects, o.Frames, true);
+
+  std::printf("%s, %d x %d window, %s\n", o.Scene.c_str(), o.Size, o.Size, scene.Render.Strategy.c_str());
+  std::printf("first frame (sweeps, pipelines, 1 spp):            %8.1f ms\n", 1e3 * first);
+  std::printf("still: full resolution, 1 spp per frame:          %8.1f ms median, %8.1f ms max (%.1f fps)\n",
+    1e3 * still.Median, 1e3 * still.Max, 1.0 / still.Median);
+  std::printf("interactive: 1/%d resolution, 1 spp, camera moving: %8.1f ms median, %8.1f ms max (%.1f fps)\n",
+    mapper->GetInteractiveSubsampling(), 1e3 * moving.Median, 1e3 * moving.Max, 1.0 / moving.Median);
+  if (!o.Json.empty())
+  {
+    nlohmann::json j = { { "scene", o.Scene }, { "size", o.Size }, { "first_frame_seconds", first },
+      { "still_median_seconds", still.Median }, { "still_max_seconds", still.Max },
+      { "interactive_median_seconds", moving.Median }, { "interactive_max_seconds", moving.Max },
+      { "interactive_subsampling", mapper->GetInteractiveSubsampling() } };
+    std::ofstream(o.Json) << j.dump(2) << "\n";
+  }
+  return 0;
+}
+}
+
+void AddBenchFrames(CLI::App& bench)
+{
+  auto o = std::make_shared<Options>();
+  auto* cmd = bench.add_subcommand("frames", "frame times in a window: still (progressive) and while dragging");
+  cmd->add_option("scene", o->Scene, "scene file (default: Examples/Scenes/brain_sunrise.json)");
+  cmd->add_option("--size", o->Size, "window width and height")->check(CLI::Range(8, 4096));
+  cmd->add_option("--frames", o->Frames, "frames timed per state (median)")->check(CLI::Range(1, 10000));
+  cmd->add_option("--json", o->Json, "write the figures as JSON");
+  cmd->callback([o]() {
+    int status = 2;
+    try
+    {
+      status = Run(*o);
+    }
+    catch (const std::exception& e)
+    {
+      std::fprintf(stderr, "vissweep bench frames: error: %s\n", e.what());
+    }
+    throw CLI::RuntimeError(status);
+  });
+}
+}
