@@ -91,7 +91,9 @@ int vtkVisibilityGridFilter::RequestInformation(
   }
   vs::VolumeGeometry g = vs::VolumeGeometry::Axis(
     { { uint32_t(dims[0]), uint32_t(dims[1]), uint32_t(dims[2]) } });
-  auto cells = vs::SweepPlan::CellCount(g, std::max(1.0, this->VoxelsPerCell));
+  // The same cells the grid will have on the device (capped by its largest 3D image).
+  auto cells = vs::SweepPlan::CellCount(g, std::max(1.0, this->VoxelsPerCell), uint32_t(std::max(1, this->DirectionResolution)),
+    vs::Context::Default()->Info().MaxImageDimension3D);
   int outExtent[6] = { 0, int(cells[0]) - 1, 0, int(cells[1]) - 1, 0, int(cells[2]) - 1 };
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), outExtent, 6);
   outInfo->Set(vtkDataObject::SPACING(), spacing, 3);

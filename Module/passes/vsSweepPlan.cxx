@@ -44,13 +44,19 @@ double SweepPlan::CellOpeningAngle(uint32_t side)
   return 2.0 * std::acos(std::max(-1.0, 1.0 - omega / (2.0 * M_PI)));
 }
 
-std::array<uint32_t, 3> SweepPlan::CellCount(const VolumeGeometry& g, double voxelsPerCell)
+std::array<uint32_t, 3> SweepPlan::CellCount(
+  const VolumeGeometry& g, double voxelsPerCell, uint32_t side, uint32_t maxImageSide)
 {
   std::array<uint32_t, 3> cells;
   for (int i = 0; i < 3; ++i)
   {
-    double extent = double(g.BoxMax[i]) - double(g.BoxMin[i]);
+    double extent = std::max(0.0, double(g.BoxMax[i]) - double(g.BoxMin[i]));
     cells[i] = std::max<uint32_t>(1, uint32_t(std::ceil(extent / voxelsPerCell - 1e-9)));
+    if (maxImageSide > 0)
+    {
+      const uint32_t limit = std::max<uint32_t>(1, i < 2 ? maxImageSide / std::max<uint32_t>(side, 1) : maxImageSide);
+      cells[i] = std::min(cells[i], limit);
+    }
   }
   return cells;
 }
@@ -61,12 +67,12 @@ glm::vec3 SweepPlan::Direction(uint32_t n, uint32_t side)
 }
 
 SweepPlan SweepPlan::Make(const VolumeGeometry& g, const VisibilityGridParameters& p,
-  uint64_t maxBatchFloats, const std::vector<uint32_t>& requested, uint32_t maxBatchDirections)
+  uint64_t maxBatchFloats, const std::vector<uint32_t>& requested, uint32_t maxBatchDirections, uint32_t maxImageSide)
 {
   p.Validate();
   SweepPlan plan;
   plan.Side = p.DirectionResolution;
-  plan.Cells = CellCount(g, p.VoxelsPerCell);
+  plan.Cells = CellCount(g, p.VoxelsPerCell, p.DirectionResolution, maxImageSide);
   for (int i = 0; i < 3; ++i)
   {
     plan.CellSize[i] = (g.BoxMax[i] - g.BoxMin[i]) / float(plan.Cells[i]);

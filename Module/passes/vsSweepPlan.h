@@ -66,14 +66,19 @@ struct VISSWEEPCORE_EXPORT SweepPlan
 
   /** Opening angle (radians) of the cone with the solid angle of one of D x D equal-area cells. */
   static double CellOpeningAngle(uint32_t side);
-  /** Cells per axis for a geometry and a cell size in voxels. */
-  static std::array<uint32_t, 3> CellCount(const VolumeGeometry& g, double voxelsPerCell);
+  /** Cells per axis for a geometry and a cell size in voxels. With maxImageSide > 0, the cells
+   *  are capped so that the grid image (cells.x * side) x (cells.y * side) x cells.z fits a
+   *  device whose 3D images are at most maxImageSide texels per axis: cells grow beyond
+   *  voxelsPerCell along axes that would not fit (a 4096-voxel axis gets 512 cells at D = 8). */
+  static std::array<uint32_t, 3> CellCount(
+    const VolumeGeometry& g, double voxelsPerCell, uint32_t side = 1, uint32_t maxImageSide = 0);
   /** World light direction of direction index n (the centre of texel (n % D, n / D)). */
   static glm::vec3 Direction(uint32_t n, uint32_t side);
 
   /** Plans the sweeps of `directions` (all when empty); maxBatchFloats bounds a batch's kernel. */
   static SweepPlan Make(const VolumeGeometry& g, const VisibilityGridParameters& p,
-    uint64_t maxBatchFloats, const std::vector<uint32_t>& directions = {}, uint32_t maxBatchDirections = 8);
+    uint64_t maxBatchFloats, const std::vector<uint32_t>& directions = {}, uint32_t maxBatchDirections = 8,
+    uint32_t maxImageSide = 0);
 };
 }
 

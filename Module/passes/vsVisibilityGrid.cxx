@@ -45,7 +45,8 @@ bool SameLayout(const VisibilityGridParameters& a, const VisibilityGridParameter
 
 bool SameGeometry(const VolumeGeometry& a, const VolumeGeometry& b)
 {
-  return a.Dims == b.Dims && a.WorldToIndex == b.WorldToIndex;
+  // The box too: cropping changes it, and with it the cells' placement.
+  return a.Dims == b.Dims && a.WorldToIndex == b.WorldToIndex && a.BoxMin == b.BoxMin && a.BoxMax == b.BoxMax;
 }
 
 struct SlicePush
@@ -83,8 +84,8 @@ uint64_t VisibilityGrid::Bytes() const
 void VisibilityGrid::CheckFits(Context& context, const VolumeGeometry& geometry, const VisibilityGridParameters& p)
 {
   p.Validate();
-  auto cells = SweepPlan::CellCount(geometry, p.VoxelsPerCell);
   const uint32_t d = p.DirectionResolution;
+  auto cells = SweepPlan::CellCount(geometry, p.VoxelsPerCell, d, context.Info().MaxImageDimension3D);
   Image3D::CheckLimits(context, cells[0] * d, cells[1] * d, cells[2], ToVk(p.StorageFormat), "visibility grid");
   if (!context.Info().WriteWithoutFormat)
   {
@@ -114,7 +115,7 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
     directions.clear(); // a new layout needs every direction
     CheckFits(*this->Context_, geometry, parameters);
     this->Image_.reset();
-    this->Plan_ = SweepPlan::Make(geometry, parameters, maxFloats);
+    this->Plan_ = SweepPlan::Make(geometry, parameters, maxFloats, {}, 8, info.MaxImageDimension3D);
     const auto& c = this->Plan_.Cells;
     const uint32_t d = parameters.DirectionResolution;
     this->Image_ = std::make_unique<Image3D>(this->Context_, c[0] * d, c[1] * d, c[2], ToVk(parameters.StorageFormat),
@@ -129,7 +130,7 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
       directions.push_back(n);
     }
   }
-  this->Plan_ = SweepPlan::Make(geometry, parameters, maxFloats, directions);
+  this->Plan_ = SweepPlan::Make(geometry, parameters, maxFloats, directions, 8, info.MaxImageDimension3D);
 
   // What every dispatch shares.
   shared::VsSweepGlobals g{};

@@ -248,24 +248,25 @@ TEST(VisibilityGrid, BadParametersNameTheParameter)
   expectError(p, "FilterAngleFraction");
 }
 
-TEST(VisibilityGrid, TooLargeForTheDeviceNamesSizeAndLimit)
+// A grid that would be wider than the device's largest 3D image gets coarser cells along that
+// axis instead of failing: 4096 voxels at one voxel per cell and 8 x 8 directions would be
+// 32768 texels wide; it gets maxImageDimension3D / 8 cells.
+TEST(VisibilityGrid, CellsGrowToFitTheDevice)
 {
   auto ctx = vs::Context::Default();
-  // 4096 voxels along x with one voxel per cell and 8 directions: 32768 texels wide.
+  const uint32_t limit = ctx->Info().MaxImageDimension3D;
   vs::VolumeGeometry g = vs::VolumeGeometry::Axis({ { 4096, 2, 2 } });
   VisibilityGridParameters p;
   p.VoxelsPerCell = 1.0;
-  try
-  {
-    vs::VisibilityGrid::CheckFits(*ctx, g, p);
-    FAIL() << "no error for a grid wider than the device allows";
-  }
-  catch (const vs::DeviceLimitError& e)
-  {
-    std::string msg = e.what();
-    EXPECT_NE(msg.find("visibility grid"), std::string::npos) << msg;
-    EXPECT_NE(msg.find(std::to_string(ctx->Info().MaxImageDimension3D)), std::string::npos) << msg;
-  }
+  EXPECT_NO_THROW(vs::VisibilityGrid::CheckFits(*ctx, g, p));
+  auto cells = vs::SweepPlan::CellCount(g, p.VoxelsPerCell, p.DirectionResolution, limit);
+  EXPECT_EQ(cells[0], limit / p.DirectionResolution);
+  EXPECT_EQ(cells[1], 1u);
+  auto plan = vs::SweepPlan::Make(g, p, 1ull << 30, {}, 8, limit);
+  EXPECT_EQ(plan.Cells, cells);
+  EXPECT_FLOAT_EQ(plan.CellSize.x, 4095.0f / float(cells[0]));
+  // Without a device limit the cells follow VoxelsPerCell.
+  EXPECT_EQ(vs::SweepPlan::CellCount(g, p.VoxelsPerCell, p.DirectionResolution)[0], 4095u);
 }
 
 TEST(VisibilityGrid, LazyUpdateOfSomeDirections)
