@@ -1,4 +1,5 @@
 // vissweep — the command-line tool: `vissweep info` prints the Vulkan device and its limits.
+#include "vsBenchConvergence.h"
 #include "vsBenchFrames.h"
 #include "vsBenchOverhead.h"
 #include "vsBenchSweeps.h"
@@ -22,6 +23,7 @@ int main(int argc, char** argv)
   vstool::AddBenchSweeps(*bench);
   vstool::AddBenchOverhead(*bench);
   vstool::AddBenchFrames(*bench);
+  vstool::AddBenchConvergence(*bench);
   vstool::AddRender(app);
   try
   {

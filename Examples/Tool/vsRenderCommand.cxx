@@ -149,6 +149,8 @@ private:
   bool Committed = false;
 };
 
+} // namespace
+
 void WriteExr(vtkImageData* radiance, const std::string& path)
 {
   if (!radiance)
@@ -199,6 +201,9 @@ void WriteExr(vtkImageData* radiance, const std::string& path)
     throw std::runtime_error("cannot write EXR '" + path + "': " + e.what());
   }
 }
+
+namespace
+{
 
 void WritePng(vtkRenderWindow* window, const std::string& path)
 {

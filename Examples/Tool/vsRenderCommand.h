@@ -45,6 +45,9 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
 /** Reads the volume, builds everything, sets the camera; the window is offscreen. Throws std::runtime_error. */
 SceneObjects BuildScene(const Scene& scene);
 
+/** Writes the mapper's radiance image (GetRadiance()) as linear float RGBA EXR; throws std::runtime_error. */
+void WriteExr(vtkImageData* radiance, const std::string& path);
+
 /** Registers `render` on the tool's top-level app. */
 void AddRender(CLI::App& app);
 }

@@ -1,0 +1,438 @@
+#include "vsBenchConvergence.h"
+#include "vsRenderCommand.h"
+#include "vsSceneFile.h"
+
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkVisibilitySweepVolumeMapper.h"
+
+#include <CLI/CLI.hpp>
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#ifndef VISSWEEP_BENCHMARKS
+#define VISSWEEP_BENCHMARKS ""
+#endif
+
+namespace vstool
+{
+namespace
+{
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct Options
+{
+  std::string Scene, Reference, Json, Csv, Plot;
+  std::string ReferenceDir = std::string(VISSWEEP_BENCHMARKS) + "/references";
+  std::string ReferenceStrategy = "two-step";
+  int ReferenceSpp = 4096;
+  int Width = 128, Height = 128, Repeats = 2;
+  std::vector<std::string> Strategies{ "uniform", "environment", "visibility", "combined", "two-step" };
+  std::vector<double> Budgets{ 1, 2, 4, 8, 16 };
+  std::vector<int> SppList;
+  bool Quick = false;
+};
+
+// Linear RGB, VTK row order (bottom-up), 3 floats per pixel.
+using Rgb = std::vector<float>;
+
+Rgb Radiance(vtkVisibilitySweepVolumeMapper* mapper)
+{
+  vtkDataArray* a = mapper->GetRadiance()->GetPointData()->GetArray("Radiance");
+  Rgb out(size_t(a->GetNumberOfTuples()) * 3);
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+    for (int c = 0; c < 3; ++c)
+      out[size_t(i) * 3 + c] = float(a->GetComponent(i, c));
+  return out;
+}
+
+Rgb ReadExr(const std::string& path, int w, int h)
+{
+  Imf::InputFile file(path.c_str());
+  const auto dw = file.header().dataWindow();
+  if (dw.max.x - dw.min.x + 1 != w || dw.max.y - dw.min.y + 1 != h)
+  {
+    throw std::runtime_error("reference '" + path + "' is not " + std::to_string(w) + " x " + std::to_string(h));
+  }
+  std::vector<float> rgba(size_t(w) * h * 3);
+  Imf::FrameBuffer frame;
+  const char* names[3] = { "R", "G", "B" };
+  for (int c = 0; c < 3; ++c)
+  {
+    frame.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(rgba.data() + c), sizeof(float) * 3,
+                             sizeof(float) * 3 * w));
+  }
+  file.setFrameBuffer(frame);
+  file.readPixels(dw.min.y, dw.max.y);
+  Rgb out(rgba.size());
+  for (int y = 0; y < h; ++y) // EXR rows top-down -> VTK bottom-up
+    std::copy_n(rgba.begin() + size_t(h - 1 - y) * w * 3, w * 3, out.begin() + size_t(y) * w * 3);
+  return out;
+}
+
+struct Error
+{
+  double Mse = 0.0, RelMse = 0.0;
+};
+
+Error Compare(const Rgb& image, const Rgb& reference)
+{
+  double se = 0.0, mean = 0.0;
+  for (size_t i = 0; i < image.size(); ++i)
+  {
+    const double d = double(image[i]) - reference[i];
+    se += d * d;
+    mean += reference[i];
+  }
+  mean /= double(reference.size());
+  Error e;
+  e.Mse = se / double(image.size());
+  e.RelMse = mean > 0.0 ? e.Mse / (mean * mean) : 0.0;
+  return e;
+}
+
+// The cache key of a reference: what determines it.
+std::string ReferenceKey(const Options& o)
+{
+  std::ifstream in(o.Scene, std::ios::binary);
+  std::stringstream content;
+  content << in.rdbuf();
+  std::ostringstream key;
+  key << content.str() << '|' << o.Width << 'x' << o.Height << '|' << o.ReferenceSpp << '|' << o.ReferenceStrategy;
+  std::ostringstream hex;
+  hex << std::hex << std::hash<std::string>()(key.str());
+  return fs::path(o.Scene).stem().string() + "_" + std::to_string(o.Width) + "x" + std::to_string(o.Height) + "_" +
+    std::to_string(o.ReferenceSpp) + "spp_" + hex.str();
+}
+
+struct Point
+{
+  double Budget = 0.0; // seconds (equal time) or spp (equal spp)
+  std::vector<double> Seconds, Spp, Mse, RelMse; // one per repeat
+};
+
+double Mean(const std::vector<double>& v)
+{
+  double s = 0.0;
+  for (double x : v)
+    s += x;
+  return v.empty() ? 0.0 : s / double(v.size());
+}
+
+double Spread(const std::vector<double>& v)
+{
+  if (v.size() < 2)
+    return 0.0;
+  const double m = Mean(v);
+  double s = 0.0;
+  for (double x : v)
+    s += (x - m) * (x - m);
+  return std::sqrt(s / double(v.size() - 1));
+}
+
+class Runner
+{
+public:
+  Runner(const Options& o, const Scene& scene)
+    : O(o)
+    , Objects(BuildScene(scene))
+  {
+    this->M = this->Objects.Mapper;
+    this->M->SetInteractiveUpdateRate(0.0);
+    this->M->SetMaximumSamples(1 << 30);
+  }
+
+  vtkVisibilitySweepVolumeMapper* Mapper() { return this->M; }
+
+  void Render()
+  {
+    this->Objects.Window->Render();
+    const char* error = this->M->GetLastError();
+    if (error && *error)
+    {
+      throw std::runtime_error(std::string("render failed: ") + error);
+    }
+  }
+
+  /** Starts a fresh accumulation with this strategy and seed; returns the seconds the grid
+   *  (sweeps) costs this strategy, measured once per strategy. */
+  double Start(const std::string& strategy, int seed)
+  {
+    this->M->SetSamplingStrategy(StrategyIndex(strategy, "--strategies"));
+    this->M->SetSeed(seed);
+    this->M->SetSamplesPerFrame(1);
+    const int sweeps = this->M->GetVisibilityUpdateCount();
+    const auto t0 = Clock::now();
+    this->Render(); // first sample (and the grid, the first time a grid strategy runs)
+    const double first = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (this->M->GetVisibilityUpdateCount() > sweeps)
+    {
+      this->SweepSeconds[strategy] = this->M->GetLastSweepSeconds();
+    }
+    return first;
+  }
+
+  std::map<std::string, double> SweepSeconds;
+
+private:
+  const Options& O;
+  SceneObjects Objects;
+  vtkVisibilitySweepVolumeMapper* M = nullptr;
+};
+
+// The reference's own error: the mean variance of its pixels' means, an MSE floor that every
+// measured MSE contains (measured = true + floor, the two being independent).
+double NoiseFloor(vtkVisibilitySweepVolumeMapper* m)
+{
+  vtkDataArray* var = m->GetRadiance(true)->GetPointData()->GetArray("Variance");
+  double sum = 0.0;
+  for (vtkIdType i = 0; i < var->GetNumberOfTuples(); ++i)
+    for (int c = 0; c < 3; ++c)
+      sum += var->GetComponent(i, c);
+  return sum / (3.0 * double(var->GetNumberOfTuples()) * std::max(1, m->GetAccumulatedSamples()));
+}
+
+Rgb MakeReference(Runner& runner, const Options& o)
+{
+  std::fprintf(stderr, "rendering the reference: %s, %d spp, %d x %d ...\n", o.ReferenceStrategy.c_str(),
+    o.ReferenceSpp, o.Width, o.Height);
+  runner.Start(o.ReferenceStrategy, 100003); // a seed no measured run uses
+  auto* m = runner.Mapper();
+  m->SetSamplesPerFrame(std::min(o.ReferenceSpp, 64));
+  m->SetMaximumSamples(o.ReferenceSpp);
+  while (m->GetAccumulatedSamples() < o.ReferenceSpp)
+  {
+    runner.Render();
+  }
+  m->SetMaximumSamples(1 << 30);
+  return Radiance(m);
+}
+
+int Run(const Options& given)
+{
+  Options o = given;
+  if (o.Quick)
+  {
+    o.Width = std::min(o.Width, 32);
+    o.Height = std::min(o.Height, 32);
+    o.Budgets = { 0.25, 0.5 };
+    o.Repeats = 1;
+    o.ReferenceSpp = std::min(o.ReferenceSpp, 64);
+    if (!o.SppList.empty())
+    {
+      o.SppList = { 1, 4 };
+    }
+  }
+  Scene scene = ReadSceneFile(o.Scene);
+  scene.Render.Width = o.Width;
+  scene.Render.Height = o.Height;
+  Runner runner(o, scene);
+
+  // The reference: given, cached, or rendered now (and cached).
+  Rgb reference;
+  std::string referencePath = o.Reference;
+  double noiseFloor = -1.0; // unknown for a given reference
+  bool rendered = false;
+  if (referencePath.empty())
+  {
+    fs::path dir = o.ReferenceDir;
+    referencePath = (dir / (ReferenceKey(o) + ".exr")).string();
+    const std::string sidecar = (dir / (ReferenceKey(o) + ".json")).string();
+    if (!fs::exists(referencePath) || !fs::exists(sidecar))
+    {
+      reference = MakeReference(runner, o);
+      noiseFloor = NoiseFloor(runner.Mapper());
+      fs::create_directories(dir);
+      WriteExr(runner.Mapper()->GetRadiance(), referencePath);
+      nlohmann::json meta = { { "scene", fs::path(o.Scene).filename().string() }, { "spp", o.ReferenceSpp },
+        { "strategy", o.ReferenceStrategy }, { "width", o.Width }, { "height", o.Height },
+        { "noise_floor_mse", noiseFloor } };
+      std::ofstream(sidecar) << meta.dump(2) << "\n";
+      rendered = true;
+    }
+    else
+    {
+      std::ifstream in(sidecar);
+      noiseFloor = nlohmann::json::parse(in).value("noise_floor_mse", -1.0);
+    }
+  }
+  if (!rendered)
+  {
+    reference = ReadExr(referencePath, o.Width, o.Height);
+  }
+  std::fprintf(stderr, "reference: %s\n", referencePath.c_str());
+
+  const bool equalSpp = !o.SppList.empty();
+  std::map<std::string, std::vector<Point>> results;
+  for (const auto& strategy : o.Strategies)
+  {
+    std::vector<Point> points;
+    if (equalSpp)
+      for (int spp : o.SppList)
+        points.push_back({ double(spp) });
+    else
+      for (double b : o.Budgets)
+        points.push_back({ b });
+    for (int r = 0; r < o.Repeats; ++r)
+    {
+      // One progressive run per repeat, its error read at every budget: the time of a budget
+      // includes the grid's sweeps (the paper's adjusted equal-time comparison).
+      const double first = runner.Start(strategy, 1 + r);
+      const double sweep = runner.SweepSeconds.count(strategy) ? runner.SweepSeconds[strategy] : 0.0;
+      auto* m = runner.Mapper();
+      const auto t0 = Clock::now();
+      auto elapsed = [&]() { return sweep + (first - sweep) + std::chrono::duration<double>(Clock::now() - t0).count(); };
+      for (auto& p : points)
+      {
+        if (equalSpp)
+        {
+          while (m->GetAccumulatedSamples() < int(p.Budget))
+          {
+            m->SetSamplesPerFrame(int(p.Budget) - m->GetAccumulatedSamples());
+            runner.Render();
+          }
+        }
+        else
+        {
+          // Frames of a size that lands close to the budget.
+          while (elapsed() < p.Budget)
+          {
+            const double perSample = elapsed() / std::max(1, m->GetAccumulatedSamples());
+            const int left = int((p.Budget - elapsed()) / std::max(perSample, 1e-6));
+            m->SetSamplesPerFrame(std::clamp(left / 2, 1, 64));
+            runner.Render();
+          }
+        }
+        Error e = Compare(Radiance(m), reference);
+        p.Seconds.push_back(elapsed());
+        p.Spp.push_back(m->GetAccumulatedSamples());
+        p.Mse.push_back(e.Mse);
+        p.RelMse.push_back(e.RelMse);
+        std::fprintf(stderr, "  %-12s repeat %d: %s %g -> %d spp, %.2f s, MSE %.4g\n", strategy.c_str(), r,
+          equalSpp ? "spp" : "budget", p.Budget, m->GetAccumulatedSamples(), elapsed(), e.Mse);
+      }
+    }
+    results[strategy] = points;
+  }
+
+  // Report.
+  double refMean = 0.0;
+  for (float v : reference)
+    refMean += v;
+  refMean /= double(reference.size());
+  nlohmann::json report;
+  report["scene"] = o.Scene;
+  report["width"] = o.Width;
+  report["height"] = o.Height;
+  report["mode"] = equalSpp ? "equal-spp" : "equal-time";
+  report["repeats"] = o.Repeats;
+  report["reference"] = { { "file", referencePath }, { "spp", o.ReferenceSpp }, { "strategy", o.ReferenceStrategy },
+    { "mean", refMean }, { "noise_floor_mse", noiseFloor } };
+  std::printf("%s, %d x %d, %s, %d repeat(s); reference %s (%d spp, %s)\n", o.Scene.c_str(), o.Width, o.Height,
+    equalSpp ? "equal spp" : "equal time (sweeps included)", o.Repeats, referencePath.c_str(), o.ReferenceSpp,
+    o.ReferenceStrategy.c_str());
+  if (noiseFloor >= 0.0)
+  {
+    std::printf("the reference's own noise: MSE floor %.3g (every MSE below includes it)\n", noiseFloor);
+  }
+  std::printf("%-12s %8s %9s %8s %12s %12s %10s\n", "strategy", equalSpp ? "spp" : "budget", "seconds", "spp", "MSE",
+    "(spread)", "relMSE");
+  std::ostringstream csv;
+  csv << "strategy,mode,budget,seconds,spp,mse,mse_spread,relmse\n";
+  for (const auto& strategy : o.Strategies)
+  {
+    nlohmann::json js;
+    js["sweep_seconds"] = runner.SweepSeconds.count(strategy) ? runner.SweepSeconds[strategy] : 0.0;
+    for (const auto& p : results[strategy])
+    {
+      std::printf("%-12s %8g %9.2f %8.0f %12.4g %12.2g %10.4g\n", strategy.c_str(), p.Budget, Mean(p.Seconds),
+        Mean(p.Spp), Mean(p.Mse), Spread(p.Mse), Mean(p.RelMse));
+      csv << strategy << ',' << (equalSpp ? "spp" : "time") << ',' << p.Budget << ',' << Mean(p.Seconds) << ','
+          << Mean(p.Spp) << ',' << Mean(p.Mse) << ',' << Spread(p.Mse) << ',' << Mean(p.RelMse) << '\n';
+      js["budgets"].push_back(p.Budget);
+      js["seconds"].push_back(Mean(p.Seconds));
+      js["spp"].push_back(Mean(p.Spp));
+      js["mse"].push_back(Mean(p.Mse));
+      js["mse_spread"].push_back(Spread(p.Mse));
+      js["relmse"].push_back(Mean(p.RelMse));
+      js["mse_per_repeat"].push_back(p.Mse);
+    }
+    report["strategies"][strategy] = js;
+  }
+  auto write = [](const std::string& path, const std::string& text) {
+    std::ofstream out(path);
+    out << text;
+    if (!out)
+      throw std::runtime_error("cannot write '" + path + "'");
+  };
+  if (!o.Json.empty())
+    write(o.Json, report.dump(2) + "\n");
+  if (!o.Csv.empty())
+    write(o.Csv, csv.str());
+  if (!o.Plot.empty())
+  {
+    // matplotlib (python3-matplotlib) draws it from the JSON.
+    std::string json = o.Json.empty() ? o.Plot + ".json" : o.Json;
+    if (o.Json.empty())
+      write(json, report.dump(2) + "\n");
+    const std::string script = (fs::path(VISSWEEP_BENCHMARKS) / "plot_convergence.py").string();
+    const std::string cmd = "/usr/bin/python3 '" + script + "' '" + json + "' '" + o.Plot + "'";
+    if (std::system(cmd.c_str()) != 0)
+      throw std::runtime_error("plotting failed: " + cmd);
+  }
+  return 0;
+}
+}
+
+void AddBenchConvergence(CLI::App& bench)
+{
+  auto o = std::make_shared<Options>();
+  auto* cmd = bench.add_subcommand("convergence", "error against time (and spp) per strategy, against a reference");
+  cmd->add_option("scene", o->Scene, "scene file (Benchmarks/scenes/*.json)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--reference", o->Reference, "reference EXR (default: rendered once, cached in Benchmarks/references)")
+    ->check(CLI::ExistingFile);
+  cmd->add_option("--reference-dir", o->ReferenceDir, "where rendered references are cached (default Benchmarks/references)");
+  cmd->add_option("--reference-spp", o->ReferenceSpp, "samples per pixel of a rendered reference")
+    ->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--reference-strategy", o->ReferenceStrategy, "strategy of a rendered reference");
+  cmd->add_option("--strategies", o->Strategies, "strategies to compare (default: all five)")->delimiter(',');
+  cmd->add_option("--budgets", o->Budgets, "wall-clock budgets in seconds, sweeps included (default 1,2,4,8,16)")
+    ->delimiter(',');
+  cmd->add_option("--spp-list", o->SppList, "equal-spp mode: these samples per pixel instead of time budgets")
+    ->delimiter(',');
+  cmd->add_option("--repeats", o->Repeats, "runs per strategy with different seeds")->check(CLI::Range(1, 100));
+  cmd->add_option("--width", o->Width, "image width")->check(CLI::Range(1, 4096));
+  cmd->add_option("--height", o->Height, "image height")->check(CLI::Range(1, 4096));
+  cmd->add_option("--json", o->Json, "write the figures as JSON");
+  cmd->add_option("--csv", o->Csv, "write the figures as CSV");
+  cmd->add_option("--plot", o->Plot, "draw error against time (log-log) to this PNG (matplotlib)");
+  cmd->add_flag("--quick", o->Quick, "32 x 32, budgets 0.25 and 0.5 s, one repeat, a 64-spp reference (for tests)");
+  cmd->callback([o]() {
+    int status = 2;
+    try
+    {
+      status = Run(*o);
+    }
+    catch (const std::exception& e)
+    {
+      std::fprintf(stderr, "vissweep bench convergence: error: %s\n", e.what());
+    }
+    throw CLI::RuntimeError(status);
+  });
+}
+}
