@@ -1,6 +1,7 @@
 // vissweep — the command-line tool: `vissweep info` prints the Vulkan device and its limits.
 #include "vsBenchConvergence.h"
 #include "vsBenchFrames.h"
+#include "vsBenchStress.h"
 #include "vsBenchOverhead.h"
 #include "vsBenchSweeps.h"
 #include "vsRenderCommand.h"
@@ -24,6 +25,7 @@ int main(int argc, char** argv)
   vstool::AddBenchOverhead(*bench);
   vstool::AddBenchFrames(*bench);
   vstool::AddBenchConvergence(*bench);
+  vstool::AddBenchStress(*bench);
   vstool::AddRender(app);
   try
   {
