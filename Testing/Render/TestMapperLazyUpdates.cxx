@@ -194,6 +194,19 @@ void TestCounters()
     s.Window->Render();
     Check(s.Mapper->GetDirectionsUpdatedLastFrame() == 16, "RoundRobin: a new direction resolution sweeps everything");
   }
+  // An opacity change while a strategy without visibility renders is remembered: switching
+  // back sweeps everything (the grid was computed for the old opacity).
+  {
+    Scene s(a);
+    s.Window->Render();
+    s.Mapper->SetSamplingStrategyToEnvironment();
+    s.Opacity->AddPoint(0.5, 0.6);
+    s.Window->Render();
+    Check(s.Mapper->GetDirectionsUpdatedLastFrame() == 0, "the Environment strategy never sweeps");
+    s.Mapper->SetSamplingStrategyToTwoStep();
+    s.Window->Render();
+    Check(s.Mapper->GetDirectionsUpdatedLastFrame() == 64, "back to TwoStep after an opacity change: a full sweep");
+  }
   // EnvironmentGuided: k directions per change (the whole two-tone sky is lit).
   {
     Scene s(a);
