@@ -1,4 +1,5 @@
 // vissweep — the command-line tool: `vissweep info` prints the Vulkan device and its limits.
+#include "vsBenchAnimation.h"
 #include "vsBenchSweeps.h"
 #include "vsRenderCommand.h"
 #include "vsContext.h"
@@ -18,6 +19,7 @@ int main(int argc, char** argv)
   auto* bench = app.add_subcommand("bench", "benchmarks that print what they measure");
   bench->require_subcommand(1);
   vstool::AddBenchSweeps(*bench);
+  vstool::AddBenchAnimation(*bench);
   vstool::AddRender(app);
   try
   {

@@ -123,6 +123,12 @@ std::string FrameOutputName(const std::string& out, int frame)
   return buffer;
 }
 
+void ShowTimeStep(SceneObjects& objects, const Scene& scene, int step)
+{
+  objects.Image = ReadVolumeSequence(scene.Volume.Files, scene.Volume.Grid, step);
+  objects.Mapper->SetInputData(objects.Image);
+}
+
 int RunFrames(const RenderOptions& o)
 {
   Scene scene = LoadScene(o);
@@ -149,8 +155,7 @@ int RunFrames(const RenderOptions& o)
     if (step != range.First)
     {
       t0 = Clock::now();
-      objects.Image = ReadVolumeSequence(scene.Volume.Files, scene.Volume.Grid, step);
-      objects.Mapper->SetInputData(objects.Image);
+      ShowTimeStep(objects, scene, step);
       readSeconds = Since(t0);
     }
     const ProgressiveResult r = RenderProgressively(objects, target, o.SamplesPerFrame, o.TimeBudget, bar);

@@ -10,6 +10,8 @@
 namespace vstool
 {
 struct RenderOptions;
+struct Scene;
+struct SceneObjects;
 
 /** An inclusive range of time steps. */
 struct FrameRange
@@ -26,6 +28,10 @@ FrameRange ParseFrameRange(const std::string& text, int steps);
  *  ("smoke_%04d.png") is formatted; otherwise _NNNN goes before the extension ("a.png" ->
  *  "a_0003.png"). Throws std::runtime_error for a pattern with other '%' conversions. */
 std::string FrameOutputName(const std::string& out, int frame);
+
+/** Makes time step `step` of the scene's volume sequence the mapper's input (a new data object,
+ *  so the mapper uploads it; same grid under the reader's UnionBounds, so updates may be lazy). */
+void ShowTimeStep(SceneObjects& objects, const Scene& scene, int step);
 
 /** Runs the command; returns the exit status (0). Throws std::runtime_error on errors. */
 int RunFrames(const RenderOptions& options);
