@@ -5,7 +5,8 @@
 // is rendered with the same wall time per frame (update + render, the paper's adjusted
 // equal-time comparison) and compared with a per-frame TwoStep reference of --reference-spp
 // samples (its own seed): per-frame MSE, its mean over the sequence and over the first and
-// last (up to) 20 frames, and the update cost per frame.
+// last (up to) 20 frames, and the update cost per frame. The first step of the range is
+// rendered untimed (every method computes the whole grid for it); the timed steps follow.
 #ifndef vsBenchAnimation_h
 #define vsBenchAnimation_h
 
