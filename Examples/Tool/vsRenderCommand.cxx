@@ -276,8 +276,11 @@ ProgressiveResult RenderProgressively(
       throw std::runtime_error("the renderer accumulates no samples (" + std::to_string(r.Spp) + " spp after " +
         std::to_string(r.Frames) + " frames)");
     }
+    // The next frame costs what this one did without the update (new data, sweeps): predicting
+    // it with the update included would stop a budget right after the first frame of a new step.
+    const double nextFrameSeconds = std::max(0.0, frameSeconds - mapper->GetLastUpdateSeconds());
     const double elapsed = Seconds(loopStart, Clock::now());
-    const bool done = r.Spp >= target || (timed && elapsed + frameSeconds > timeBudget);
+    const bool done = r.Spp >= target || (timed && elapsed + nextFrameSeconds > timeBudget);
     if (bar)
     {
       Progress(r.Spp, target, elapsed, timed ? timeBudget : 0.0, done);
