@@ -54,6 +54,7 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::vector<double> GridSignature;  // what the grid was computed for (besides extinction)
   bool GridNeedsFull = true;          // extinction or geometry changed since the last full sweep
   int GridUploads = -1;               // the volume upload the grid last saw (lazy updates)
+  vs::VolumeGeometry GridGeometry;    // the geometry the grid is computed for (set each frame)
   vs::VisibilityUpdateScheduler Scheduler;
   std::vector<double> ImageSignature; // what the accumulated image was rendered for
   vtkSmartPointer<vtkImageData> Radiance;
@@ -316,6 +317,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   const std::vector<glm::dvec4> planes = WorldPlanes(this->ClippingPlanes);
   const bool emptyVolume = I.Scene->Majorants().MaxMajorant() <= 0.0f;
   const bool needGrid = this->SamplingStrategy >= Visibility && !emptyVolume;
+  I.GridGeometry = geometry;
   this->UpdateVisibilityGrid(needGrid);
 
   // Parameters of this frame.
@@ -490,6 +492,10 @@ std::vector<double> GridSignature(const vs::VisibilityGridParameters& gp, const 
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r)
       signature.push_back(geometry.WorldToIndex[c][r]);
+  for (int i = 0; i < 3; ++i)
+  {
+    signature.insert(signature.end(), { geometry.BoxMin[i], geometry.BoxMax[i] });
+  }
   return signature;
 }
 }
@@ -505,15 +511,14 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid)
   }
   const vs::VisibilityGridParameters gp = GridParameters(
     this->DirectionResolution, this->VoxelsPerCell, this->KernelResolution, this->Filtering, this->FilterAngleFraction);
-  const std::vector<double> signature =
-    GridSignature(gp, WorldPlanes(this->ClippingPlanes), I.Scene->Geometry());
+  const std::vector<double> signature = GridSignature(gp, WorldPlanes(this->ClippingPlanes), I.GridGeometry);
   if (!I.Grid)
   {
     I.Grid = std::make_unique<vs::VisibilityGrid>(I.Context);
   }
   if (!I.Grid->Valid() || I.GridNeedsFull || signature != I.GridSignature)
   {
-    vs::VisibilityGrid::CheckFits(*I.Context, I.Scene->Geometry(), gp);
+    vs::VisibilityGrid::CheckFits(*I.Context, I.GridGeometry, gp);
     this->SweepDirections({});
     I.GridSignature = signature;
     I.GridNeedsFull = false;
@@ -549,7 +554,7 @@ void vtkVisibilitySweepVolumeMapper::SweepDirections(const std::vector<unsigned 
   const auto start = std::chrono::steady_clock::now();
   const uint64_t before = I.Grid->DirectionsComputed();
   this->InvokeEvent(vtkCommand::StartEvent);
-  I.Grid->Compute(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), I.Scene->Geometry(),
+  I.Grid->Compute(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), I.GridGeometry,
     WorldPlanes(this->ClippingPlanes), gp, directions, [this](double f) { this->UpdateProgress(f); });
   this->InvokeEvent(vtkCommand::EndEvent);
   this->LastSweepSeconds = I.Grid->LastSeconds();
