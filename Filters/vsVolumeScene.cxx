@@ -36,6 +36,9 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
   changes.Geometry = !this->Volume_ || geometry.Dims != this->Geometry_.Dims ||
     geometry.IndexToWorld != this->Geometry_.IndexToWorld;
   this->Geometry_ = geometry;
+  // Before the data check: new data drops the table (it is resampled over the new range).
+  changes.TransferFunction =
+    !this->TF_ || property->GetMTime() > this->PropertyTime_ || densityScale != this->DensityScale_;
 
   const vtkMTimeType dataTime = std::max(image->GetMTime(), scalars->GetMTime());
   if (!this->Volume_ || scalars != this->Scalars_ || dataTime > this->DataTime_ ||
@@ -57,8 +60,7 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
     changes.Data = true;
   }
 
-  if (!this->TF_ || changes.Data || property->GetMTime() > this->PropertyTime_ ||
-    densityScale != this->DensityScale_)
+  if (changes.Data || changes.TransferFunction)
   {
     auto range = this->Volume_->Range();
     TransferFunctionSamples samples = SampleTransferFunction(property, range[0], range[1], densityScale);

@@ -4,6 +4,9 @@
 //   data changed            -> upload, brick ranges, majorants
 //   extinction changed      -> table, majorants (opacity, unit distance, density scale)
 //   only albedo changed     -> table
+// With new data the table is resampled over the new scalar range, so Extinction is reported
+// even when the transfer function itself is unchanged; TransferFunction tells the two apart
+// (a new time step under the same transfer function: Data without TransferFunction).
 // and reports which of these happened, so callers (the mapper, the visibility grid
 // filter, the tool) know whether visibility must be recomputed.
 // Internal to VisSweep (hidden from the wrappers).
@@ -41,6 +44,7 @@ public:
     bool Extinction = false; // sigma_t changed somewhere (data, opacity, unit distance, density scale)
     bool Albedo = false;     // the colour transfer function changed
     bool Geometry = false;   // the index <-> world transform changed (prop matrix, spacing, origin)
+    bool TransferFunction = false; // the vtkVolumeProperty or the density scale changed (any column)
   };
 
   explicit VolumeScene(std::shared_ptr<Context> context);

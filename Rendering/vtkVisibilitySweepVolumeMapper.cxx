@@ -8,6 +8,8 @@
 #include "vsMajorantGrid.h"
 #include "vsMonteCarloPass.h"
 #include "vsVisibilityGrid.h"
+#include "vsVisibilityUpdateScheduler.h"
+#include "shared/update_order.h"
 #include "vsVisibilityImage.h"
 #include "vsError.h"
 #include "vsTransferFunctionTable.h"
@@ -35,6 +37,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <chrono>
+
 vtkStandardNewMacro(vtkVisibilitySweepVolumeMapper);
 
 struct vtkVisibilitySweepVolumeMapper::Internals
@@ -48,10 +52,13 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   vtkMTimeType EnvironmentTime = 0;
   bool DefaultEnvironment = false;
   std::vector<double> GridSignature;  // what the grid was computed for (besides extinction)
+  bool GridNeedsFull = true;          // extinction or geometry changed since the last full sweep
+  int GridUploads = -1;               // the volume upload the grid last saw (lazy updates)
+  vs::VolumeGeometry GridGeometry;    // the geometry the grid is computed for (set each frame)
+  vs::VisibilityUpdateScheduler Scheduler;
   std::vector<double> ImageSignature; // what the accumulated image was rendered for
   vtkSmartPointer<vtkImageData> Radiance;
   vtkSmartPointer<vtkImageData> VisibilityImage;
-  bool VisibilityImageStale = true;
   std::string LastError;
   uint32_t Frame = 0;
 };
@@ -175,9 +182,13 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     {
       I.Scene = std::make_unique<vs::VolumeScene>(I.Context);
     }
+    this->DirectionsUpdatedLastFrame = 0;
+    this->LastFrameSweepSeconds = 0.0;
+    const auto updateStart = std::chrono::steady_clock::now();
     vs::VolumeScene::Changes changes =
       I.Scene->Update(input, scalars, vol ? vol->GetProperty() : nullptr, vol ? vol->GetMatrix() : nullptr,
         this->DensityScale);
+    this->LastUpdateSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - updateStart).count();
     if (changes.Data)
     {
       ++this->VolumeUploadCount;
@@ -188,9 +199,11 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
                         << " voxels are NaN or infinite; they are rendered as empty space");
       }
     }
-    if (changes.Extinction || changes.Geometry)
+    // New data under the same transfer function (a new time step) may update the grid lazily;
+    // any other change of extinction or geometry needs every direction again.
+    if (changes.Geometry || (changes.Extinction && (!changes.Data || changes.TransferFunction)))
     {
-      I.VisibilityImageStale = true;
+      I.GridNeedsFull = true;
     }
     if (this->RenderMode == EmissionAbsorption)
     {
@@ -348,49 +361,12 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     ++this->EnvironmentUploadCount;
   }
 
-  // The visibility grid, only for the strategies that use it and only when something that
-  // changes extinction (or the grid's own parameters) changed.
+  // The visibility grid, only for the strategies that use it.
   const std::vector<glm::dvec4> planes = WorldPlanes(this->ClippingPlanes);
   const bool emptyVolume = I.Scene->Majorants().MaxMajorant() <= 0.0f || croppedAway;
   const bool needGrid = this->SamplingStrategy >= Visibility && !emptyVolume;
-  vs::VisibilityGridParameters gp;
-  gp.DirectionResolution = uint32_t(std::max(0, this->DirectionResolution));
-  gp.VoxelsPerCell = this->VoxelsPerCell;
-  gp.KernelResolution = uint32_t(this->KernelResolution);
-  gp.Filtering = this->Filtering;
-  gp.FilterAngleFraction = this->FilterAngleFraction;
-  std::vector<double> gridSignature = { double(gp.DirectionResolution), gp.VoxelsPerCell,
-    double(gp.KernelResolution), double(gp.Filtering), gp.FilterAngleFraction,
-    double(I.Scene->Uploads()) };
-  for (const auto& pl : planes)
-  {
-    gridSignature.insert(gridSignature.end(), { pl.x, pl.y, pl.z, pl.w });
-  }
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      gridSignature.push_back(geometry.WorldToIndex[c][r]);
-  for (int i = 0; i < 3; ++i)
-  {
-    gridSignature.insert(gridSignature.end(), { geometry.BoxMin[i], geometry.BoxMax[i] });
-  }
-  if (!I.Grid)
-  {
-    I.Grid = std::make_unique<vs::VisibilityGrid>(I.Context);
-  }
-  const bool extinctionChanged = I.VisibilityImageStale;
-  if (needGrid && (!I.Grid->Valid() || extinctionChanged || gridSignature != I.GridSignature))
-  {
-    vs::VisibilityGrid::CheckFits(*I.Context, geometry, gp);
-    this->InvokeEvent(vtkCommand::StartEvent);
-    I.Grid->Compute(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), geometry, planes, gp, {},
-      [this](double f) { this->UpdateProgress(f); });
-    this->LastSweepSeconds = I.Grid->LastSeconds();
-    this->InvokeEvent(vtkCommand::EndEvent);
-    I.GridSignature = gridSignature;
-    ++this->VisibilityUpdateCount;
-    I.VisibilityImage = nullptr;
-  }
-  I.VisibilityImageStale = false;
+  I.GridGeometry = geometry;
+  this->UpdateVisibilityGrid(needGrid);
 
   // Parameters of this frame.
   View view = MakeView(ren);
@@ -544,6 +520,122 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   (void)vol;
 }
 
+namespace
+{
+vs::VisibilityGridParameters GridParameters(int directionResolution, double voxelsPerCell, int kernelResolution,
+  bool filtering, double filterAngleFraction)
+{
+  vs::VisibilityGridParameters gp;
+  gp.DirectionResolution = uint32_t(std::max(0, directionResolution));
+  gp.VoxelsPerCell = voxelsPerCell;
+  gp.KernelResolution = uint32_t(kernelResolution);
+  gp.Filtering = filtering;
+  gp.FilterAngleFraction = filterAngleFraction;
+  return gp;
+}
+
+// Everything the grid's layout depends on besides extinction: parameters, clipping, placement.
+std::vector<double> GridSignature(const vs::VisibilityGridParameters& gp, const std::vector<glm::dvec4>& planes,
+  const vs::VolumeGeometry& geometry)
+{
+  std::vector<double> signature = { double(gp.DirectionResolution), gp.VoxelsPerCell, double(gp.KernelResolution),
+    double(gp.Filtering), gp.FilterAngleFraction };
+  for (const auto& pl : planes)
+  {
+    signature.insert(signature.end(), { pl.x, pl.y, pl.z, pl.w });
+  }
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      signature.push_back(geometry.WorldToIndex[c][r]);
+  for (int i = 0; i < 3; ++i)
+  {
+    signature.insert(signature.end(), { geometry.BoxMin[i], geometry.BoxMax[i] });
+  }
+  return signature;
+}
+}
+
+// Every direction when the grid is missing or anything but the data changed since the last full
+// sweep; after a data-only change, the directions the update scheme picks (maybe none).
+void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid)
+{
+  Internals& I = *this->Impl;
+  if (!needGrid)
+  {
+    return;
+  }
+  const vs::VisibilityGridParameters gp = GridParameters(
+    this->DirectionResolution, this->VoxelsPerCell, this->KernelResolution, this->Filtering, this->FilterAngleFraction);
+  const std::vector<double> signature = GridSignature(gp, WorldPlanes(this->ClippingPlanes), I.GridGeometry);
+  if (!I.Grid)
+  {
+    I.Grid = std::make_unique<vs::VisibilityGrid>(I.Context);
+  }
+  if (!I.Grid->Valid() || I.GridNeedsFull || signature != I.GridSignature)
+  {
+    vs::VisibilityGrid::CheckFits(*I.Context, I.GridGeometry, gp);
+    this->SweepDirections({});
+    I.GridSignature = signature;
+    I.GridNeedsFull = false;
+    I.Scheduler.OnFullUpdate();
+  }
+  else if (I.Scene->Uploads() != I.GridUploads)
+  {
+    vs::UpdateSchedule schedule;
+    schedule.Scheme = vs::UpdateScheme(this->UpdateScheme);
+    schedule.DirectionsPerFrame = uint32_t(this->DirectionsPerFrame);
+    schedule.StaticInterval = uint32_t(this->StaticInterval);
+    schedule.Seed = uint32_t(this->Seed);
+    std::vector<float> importance;
+    if (this->UpdateScheme == EnvironmentGuided)
+    {
+      importance = I.Environment->ImportanceLevel(int(vs::shared::vs_log2_pow2(gp.DirectionResolution)));
+    }
+    std::vector<uint32_t> directions = I.Scheduler.OnDataChange(schedule, gp.DirectionResolution, importance);
+    if (!directions.empty())
+    {
+      this->SweepDirections(directions);
+    }
+  }
+  I.GridUploads = I.Scene->Uploads();
+}
+
+// Sweeps `directions` of the grid (all when empty) for the current volume and transfer function.
+void vtkVisibilitySweepVolumeMapper::SweepDirections(const std::vector<unsigned int>& directions)
+{
+  Internals& I = *this->Impl;
+  const vs::VisibilityGridParameters gp = GridParameters(
+    this->DirectionResolution, this->VoxelsPerCell, this->KernelResolution, this->Filtering, this->FilterAngleFraction);
+  const auto start = std::chrono::steady_clock::now();
+  const uint64_t before = I.Grid->DirectionsComputed();
+  this->InvokeEvent(vtkCommand::StartEvent);
+  I.Grid->Compute(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), I.GridGeometry,
+    WorldPlanes(this->ClippingPlanes), gp, directions, [this](double f) { this->UpdateProgress(f); });
+  this->InvokeEvent(vtkCommand::EndEvent);
+  this->LastSweepSeconds = I.Grid->LastSeconds();
+  this->LastFrameSweepSeconds = I.Grid->LastSeconds();
+  this->DirectionsUpdatedLastFrame = int(I.Grid->DirectionsComputed() - before);
+  this->DirectionsUpdatedTotal += this->DirectionsUpdatedLastFrame;
+  this->LastUpdateSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ++this->VisibilityUpdateCount;
+  I.VisibilityImage = nullptr;
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetUpdateSchemeAsString()
+{
+  switch (this->UpdateScheme)
+  {
+    case RoundRobin:
+      return "RoundRobin";
+    case EnvironmentGuided:
+      return "EnvironmentGuided";
+    case StaticUpdate:
+      return "Static";
+    default:
+      return "Full";
+  }
+}
+
 vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)
 {
   Internals& I = *this->Impl;
@@ -575,7 +667,8 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetVisibilityGrid()
   {
     I.VisibilityImage = vtkSmartPointer<vtkImageData>::New();
     vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
-    vs::VisibilityGridToImage(*I.Grid, vs::ComputeGeometry(input, nullptr), I.VisibilityImage);
+    // In data coordinates (no prop matrix), over the box the grid covers (cropped or not).
+    vs::VisibilityGridToImage(*I.Grid, CroppedGeometry(this, vs::ComputeGeometry(input, nullptr)), I.VisibilityImage);
   }
   return I.VisibilityImage;
 }
@@ -636,4 +729,10 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastDeviceSeconds: " << this->LastDeviceSeconds << "\n";
   os << indent << "LastMajorantSeconds: " << this->LastMajorantSeconds << "\n";
   os << indent << "CountLookups: " << this->CountLookups << "\n";
+  os << indent << "UpdateScheme: " << this->GetUpdateSchemeAsString() << "\n";
+  os << indent << "DirectionsPerFrame: " << this->DirectionsPerFrame << "\n";
+  os << indent << "StaticInterval: " << this->StaticInterval << "\n";
+  os << indent << "DirectionsUpdatedLastFrame: " << this->DirectionsUpdatedLastFrame << "\n";
+  os << indent << "DirectionsUpdatedTotal: " << this->DirectionsUpdatedTotal << "\n";
+  os << indent << "VisibilityUpdateCount: " << this->VisibilityUpdateCount << "\n";
 }

@@ -3,6 +3,7 @@
 #include "vsBenchFrames.h"
 #include "vsBenchStress.h"
 #include "vsBenchOverhead.h"
+#include "vsBenchAnimation.h"
 #include "vsBenchSweeps.h"
 #include "vsRenderCommand.h"
 #include "vsContext.h"
@@ -26,6 +27,7 @@ int main(int argc, char** argv)
   vstool::AddBenchFrames(*bench);
   vstool::AddBenchConvergence(*bench);
   vstool::AddBenchStress(*bench);
+  vstool::AddBenchAnimation(*bench);
   vstool::AddRender(app);
   try
   {

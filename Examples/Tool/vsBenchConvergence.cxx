@@ -1,4 +1,5 @@
 #include "vsBenchConvergence.h"
+#include "vsImageOutput.h"
 #include "vsRenderCommand.h"
 #include "vsSceneFile.h"
 
@@ -230,7 +231,7 @@ int Run(const Options& given)
   {
     o.Width = std::min(o.Width, 32);
     o.Height = std::min(o.Height, 32);
-    o.Budgets = { 0.25, 0.5 };
+    o.Budgets = { 0.5, 1.0 };
     o.Repeats = 1;
     o.ReferenceSpp = std::min(o.ReferenceSpp, 64);
     if (!o.SppList.empty())
@@ -421,7 +422,7 @@ void AddBenchConvergence(CLI::App& bench)
   cmd->add_option("--json", o->Json, "write the figures as JSON");
   cmd->add_option("--csv", o->Csv, "write the figures as CSV");
   cmd->add_option("--plot", o->Plot, "draw error against time (log-log) to this PNG (matplotlib)");
-  cmd->add_flag("--quick", o->Quick, "32 x 32, budgets 0.25 and 0.5 s, one repeat, a 64-spp reference (for tests)");
+  cmd->add_flag("--quick", o->Quick, "32 x 32, budgets 0.5 and 1 s, one repeat, a 64-spp reference (for tests)");
   cmd->callback([o]() {
     int status = 2;
     try

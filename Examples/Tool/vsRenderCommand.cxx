@@ -1,5 +1,8 @@
 #include "vsRenderCommand.h"
 #include "vsDisplayCheck.h"
+#include "vsImageOutput.h"
+#include "vsPendingFile.h"
+#include "vsRenderFrames.h"
 #include "vsToolVolume.h"
 
 #include "vtkCallbackCommand.h"
@@ -12,7 +15,6 @@
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
-#include "vtkPNGWriter.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPointData.h"
@@ -21,13 +23,8 @@
 #include "vtkVisibilitySweepVolumeMapper.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <CLI/CLI.hpp>
-#include <ImfChannelList.h>
-#include <ImfFrameBuffer.h>
-#include <ImfHeader.h>
-#include <ImfOutputFile.h>
 #include <nlohmann/json.hpp>
 
 #include <unistd.h>
@@ -96,146 +93,6 @@ private:
   unsigned long Tag = 0;
 };
 
-std::string Lower(std::string s)
-{
-  std::transform(s.begin(), s.end(), s.begin(), ::tolower);
-  return s;
-}
-
-std::string Extension(const std::string& path)
-{
-  return Lower(fs::path(path).extension().string());
-}
-
-// A file written under a temporary name in the destination folder, renamed on Commit();
-// removed if never committed (so an error never leaves a partial output behind).
-class PendingFile
-{
-public:
-  explicit PendingFile(const std::string& destination)
-    : Destination(destination)
-  {
-    fs::path d(destination);
-    fs::path dir = d.has_parent_path() ? d.parent_path() : fs::path(".");
-    this->Temporary =
-      (dir / ("." + d.filename().string() + ".partial-" + std::to_string(::getpid()) + d.extension().string()))
-        .string();
-  }
-  PendingFile(const PendingFile&) = delete;
-  PendingFile& operator=(const PendingFile&) = delete;
-  ~PendingFile()
-  {
-    if (!this->Committed)
-    {
-      std::error_code ec;
-      fs::remove(this->Temporary, ec);
-    }
-  }
-  const std::string& Path() const { return this->Temporary; }
-  void Commit()
-  {
-    std::error_code ec;
-    fs::rename(this->Temporary, this->Destination, ec);
-    if (ec)
-    {
-      throw std::runtime_error("cannot rename '" + this->Temporary + "' to '" + this->Destination + "': " + ec.message());
-    }
-    this->Committed = true;
-  }
-
-private:
-  std::string Destination;
-  std::string Temporary;
-  bool Committed = false;
-};
-
-} // namespace
-
-void WriteExr(vtkImageData* radiance, const std::string& path)
-{
-  if (!radiance)
-  {
-    throw std::runtime_error("the renderer produced no radiance image");
-  }
-  vtkDataArray* rgb = radiance->GetPointData()->GetArray("Radiance");
-  vtkDataArray* alpha = radiance->GetPointData()->GetArray("Alpha");
-  if (!rgb || rgb->GetNumberOfComponents() != 3)
-  {
-    throw std::runtime_error("the renderer's radiance image has no 3-component 'Radiance' array");
-  }
-  int dims[3];
-  radiance->GetDimensions(dims);
-  const int w = dims[0], h = dims[1];
-  std::vector<float> pixels(size_t(w) * size_t(h) * 4);
-  for (int y = 0; y < h; ++y)
-  {
-    for (int x = 0; x < w; ++x)
-    {
-      const vtkIdType src = vtkIdType(y) * w + x;        // VTK: rows bottom-up
-      const size_t dst = (size_t(h - 1 - y) * w + x) * 4; // EXR: rows top-down
-      for (int c = 0; c < 3; ++c)
-      {
-        pixels[dst + c] = static_cast<float>(rgb->GetComponent(src, c));
-      }
-      pixels[dst + 3] = alpha ? static_cast<float>(alpha->GetComponent(src, 0)) : 1.0f;
-    }
-  }
-  try
-  {
-    Imf::Header header(w, h);
-    header.compression() = Imf::ZIP_COMPRESSION;
-    const char* names[4] = { "R", "G", "B", "A" };
-    Imf::FrameBuffer frame;
-    for (int c = 0; c < 4; ++c)
-    {
-      header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
-      frame.insert(names[c],
-        Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(pixels.data() + c), sizeof(float) * 4, sizeof(float) * 4 * w));
-    }
-    Imf::OutputFile file(path.c_str(), header);
-    file.setFrameBuffer(frame);
-    file.writePixels(h);
-  }
-  catch (const std::exception& e)
-  {
-    throw std::runtime_error("cannot write EXR '" + path + "': " + e.what());
-  }
-}
-
-namespace
-{
-
-void WritePng(vtkRenderWindow* window, const std::string& path)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ShouldRerenderOff(); // a re-render would add samples
-  grab->SetInputBufferTypeToRGB();
-  grab->Update();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->SetFileName(path.c_str());
-  writer->Write();
-  if (writer->GetErrorCode() != 0)
-  {
-    throw std::runtime_error("cannot write PNG '" + path + "'");
-  }
-}
-
-struct RenderOptions
-{
-  std::string SceneFile;
-  std::vector<std::string> Outputs;
-  int Width = 0;
-  int Height = 0;
-  int Spp = 0;
-  double TimeBudget = 0.0;
-  std::string Strategy;
-  int Seed = -1;
-  int SamplesPerFrame = 1;
-  std::string Json;
-  bool Quiet = false;
-};
 
 void Progress(int spp, int target, double elapsed, double budget, bool done)
 {
@@ -261,120 +118,33 @@ void Progress(int spp, int target, double elapsed, double budget, bool done)
 
 int Run(const RenderOptions& o)
 {
+  if (!o.Frames.empty())
+  {
+    return RunFrames(o);
+  }
   const auto start = Clock::now();
   // Everything that can be checked before the (slow) render is checked first.
   for (const auto& out : o.Outputs)
   {
-    const std::string ext = Extension(out);
-    if (ext != ".exr" && ext != ".png")
-    {
-      throw std::runtime_error("-o " + out + ": unknown output format '" + ext + "' (expected .exr or .png)");
-    }
-    fs::path dir = fs::path(out).has_parent_path() ? fs::path(out).parent_path() : fs::path(".");
-    if (!fs::is_directory(dir))
-    {
-      throw std::runtime_error("-o " + out + ": folder '" + dir.string() + "' does not exist");
-    }
+    CheckOutputPath(out);
   }
-  Scene scene = ReadSceneFile(o.SceneFile);
-  if (o.Width > 0)
-  {
-    scene.Render.Width = o.Width;
-  }
-  if (o.Height > 0)
-  {
-    scene.Render.Height = o.Height;
-  }
-  if (o.Spp > 0)
-  {
-    scene.Render.Spp = o.Spp;
-  }
-  if (!o.Strategy.empty())
-  {
-    StrategyIndex(o.Strategy, "--strategy");
-    scene.Render.Strategy = o.Strategy;
-  }
-  if (o.Seed >= 0)
-  {
-    scene.Render.Seed = o.Seed;
-  }
+  Scene scene = LoadScene(o);
   const bool timed = o.TimeBudget > 0.0;
   const int target = timed ? (1 << 30) : scene.Render.Spp;
 
   SceneObjects objects = BuildScene(scene);
   auto* mapper = objects.Mapper.Get();
-  mapper->SetMaximumSamples(target);
-  mapper->SetSamplesPerFrame(std::min(o.SamplesPerFrame, target));
   const double setupSeconds = Seconds(start, Clock::now());
 
   const bool bar = !o.Quiet && ::isatty(STDERR_FILENO);
-  const auto loopStart = Clock::now();
-  double deviceSeconds = 0.0, sweepSeconds = 0.0, firstFrameSeconds = 0.0;
-  int frames = 0, reached = 0, stalled = 0;
-  while (true)
-  {
-    const auto f0 = Clock::now();
-    objects.Window->Render();
-    const double frameSeconds = Seconds(f0, Clock::now());
-    ++frames;
-    if (frames == 1)
-    {
-      firstFrameSeconds = frameSeconds;
-    }
-    const char* error = mapper->GetLastError();
-    if (error && *error)
-    {
-      throw std::runtime_error(std::string("render failed: ") + error);
-    }
-    deviceSeconds += mapper->GetLastDeviceSeconds();
-    sweepSeconds = std::max(sweepSeconds, mapper->GetLastSweepSeconds());
-    const int acc = mapper->GetAccumulatedSamples();
-    stalled = acc > reached ? 0 : stalled + 1;
-    reached = acc;
-    if (stalled >= 3)
-    {
-      throw std::runtime_error("the renderer accumulates no samples (" + std::to_string(reached) + " spp after " +
-        std::to_string(frames) + " frames)");
-    }
-    const double elapsed = Seconds(loopStart, Clock::now());
-    const bool done = reached >= target || (timed && elapsed + frameSeconds > o.TimeBudget);
-    if (bar)
-    {
-      Progress(reached, target, elapsed, timed ? o.TimeBudget : 0.0, done);
-    }
-    if (done)
-    {
-      break;
-    }
-  }
-  const double renderSeconds = Seconds(loopStart, Clock::now());
+  const ProgressiveResult loop = RenderProgressively(objects, target, o.SamplesPerFrame, o.TimeBudget, bar);
+  const int frames = loop.Frames, reached = loop.Spp;
+  const double deviceSeconds = loop.DeviceSeconds, sweepSeconds = loop.SweepSeconds;
+  const double firstFrameSeconds = loop.FirstFrameSeconds;
+  const double renderSeconds = loop.Seconds;
 
   // Outputs: temporary names first, renamed only when all are written.
-  std::vector<std::unique_ptr<PendingFile>> pending;
-  for (const auto& out : o.Outputs)
-  {
-    pending.push_back(std::make_unique<PendingFile>(out));
-    if (Extension(out) == ".exr")
-    {
-      vtkImageData* radiance = mapper->GetRadiance();
-      if (radiance)
-      {
-        int dims[3];
-        radiance->GetDimensions(dims);
-        if (dims[0] != scene.Render.Width || dims[1] != scene.Render.Height)
-        {
-          throw std::runtime_error("the radiance image is " + std::to_string(dims[0]) + "x" +
-            std::to_string(dims[1]) + ", not the requested " + std::to_string(scene.Render.Width) + "x" +
-            std::to_string(scene.Render.Height));
-        }
-      }
-      WriteExr(radiance, pending.back()->Path());
-    }
-    else
-    {
-      WritePng(objects.Window, pending.back()->Path());
-    }
-  }
+  std::vector<std::unique_ptr<PendingFile>> pending = WriteOutputs(objects, scene, o.Outputs);
 
   const double pixels = double(scene.Render.Width) * scene.Render.Height;
   nlohmann::json stats;
@@ -444,6 +214,119 @@ int Run(const RenderOptions& o)
   }
   return 0;
 }
+}
+
+Scene LoadScene(const RenderOptions& o)
+{
+  Scene scene = ReadSceneFile(o.SceneFile);
+  if (o.Width > 0)
+  {
+    scene.Render.Width = o.Width;
+  }
+  if (o.Height > 0)
+  {
+    scene.Render.Height = o.Height;
+  }
+  if (o.Spp > 0)
+  {
+    scene.Render.Spp = o.Spp;
+  }
+  if (!o.Strategy.empty())
+  {
+    StrategyIndex(o.Strategy, "--strategy");
+    scene.Render.Strategy = o.Strategy;
+  }
+  if (o.Seed >= 0)
+  {
+    scene.Render.Seed = o.Seed;
+  }
+  return scene;
+}
+
+ProgressiveResult RenderProgressively(
+  SceneObjects& objects, int target, int samplesPerFrame, double timeBudget, bool bar)
+{
+  auto* mapper = objects.Mapper.Get();
+  mapper->SetMaximumSamples(target);
+  mapper->SetSamplesPerFrame(std::min(samplesPerFrame, target));
+  const bool timed = timeBudget > 0.0;
+  ProgressiveResult r;
+  const auto loopStart = Clock::now();
+  int stalled = 0;
+  while (true)
+  {
+    const auto f0 = Clock::now();
+    objects.Window->Render();
+    const double frameSeconds = Seconds(f0, Clock::now());
+    ++r.Frames;
+    const char* error = mapper->GetLastError();
+    if (error && *error)
+    {
+      throw std::runtime_error(std::string("render failed: ") + error);
+    }
+    if (r.Frames == 1)
+    {
+      r.FirstFrameSeconds = frameSeconds;
+      r.UpdateSeconds = mapper->GetLastUpdateSeconds();
+      r.DirectionsUpdated = mapper->GetDirectionsUpdatedLastFrame();
+    }
+    r.DeviceSeconds += mapper->GetLastDeviceSeconds();
+    r.SweepSeconds += mapper->GetLastFrameSweepSeconds();
+    const int acc = mapper->GetAccumulatedSamples();
+    stalled = acc > r.Spp ? 0 : stalled + 1;
+    r.Spp = acc;
+    if (stalled >= 3)
+    {
+      throw std::runtime_error("the renderer accumulates no samples (" + std::to_string(r.Spp) + " spp after " +
+        std::to_string(r.Frames) + " frames)");
+    }
+    // The next frame costs what this one did without the update (new data, sweeps): predicting
+    // it with the update included would stop a budget right after the first frame of a new step.
+    const double nextFrameSeconds = std::max(0.0, frameSeconds - mapper->GetLastUpdateSeconds());
+    const double elapsed = Seconds(loopStart, Clock::now());
+    const bool done = r.Spp >= target || (timed && elapsed + nextFrameSeconds > timeBudget);
+    if (bar)
+    {
+      Progress(r.Spp, target, elapsed, timed ? timeBudget : 0.0, done);
+    }
+    if (done)
+    {
+      break;
+    }
+  }
+  r.Seconds = Seconds(loopStart, Clock::now());
+  return r;
+}
+
+std::vector<std::unique_ptr<PendingFile>> WriteOutputs(
+  SceneObjects& objects, const Scene& scene, const std::vector<std::string>& outputs)
+{
+  std::vector<std::unique_ptr<PendingFile>> pending;
+  for (const auto& out : outputs)
+  {
+    pending.push_back(std::make_unique<PendingFile>(out));
+    if (Extension(out) == ".exr")
+    {
+      vtkImageData* radiance = objects.Mapper->GetRadiance();
+      if (radiance)
+      {
+        int dims[3];
+        radiance->GetDimensions(dims);
+        if (dims[0] != scene.Render.Width || dims[1] != scene.Render.Height)
+        {
+          throw std::runtime_error("the radiance image is " + std::to_string(dims[0]) + "x" +
+            std::to_string(dims[1]) + ", not the requested " + std::to_string(scene.Render.Width) + "x" +
+            std::to_string(scene.Render.Height));
+        }
+      }
+      WriteExr(radiance, pending.back()->Path());
+    }
+    else
+    {
+      WritePng(objects.Window, pending.back()->Path());
+    }
+  }
+  return pending;
 }
 
 vtkSmartPointer<vtkVolumeProperty> MakeVolumeProperty(const Scene& scene)
@@ -539,6 +422,9 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   mapper->SetEnvironmentVisible(scene.Environment.VisibleBackground);
   mapper->SetExposure(scene.Render.Exposure);
   mapper->SetToneMapping(scene.Render.ToneMapping);
+  mapper->SetUpdateScheme(UpdateSchemeIndex(scene.Render.UpdateScheme));
+  mapper->SetDirectionsPerFrame(scene.Render.DirectionsPerFrame);
+  mapper->SetStaticInterval(scene.Render.StaticInterval);
   const auto& v = scene.Visibility;
   if (v.DirectionResolution)
   {
@@ -654,6 +540,9 @@ void AddRender(CLI::App& app)
   cmd->add_option("--samples-per-frame", o->SamplesPerFrame, "samples per pixel added by each progressive frame")
     ->check(CLI::Range(1, 1 << 16));
   cmd->add_option("--json", o->Json, "write the statistics as JSON to this file ('-' = stdout)");
+  cmd->add_option("--frames", o->Frames,
+    "render time steps A:B (inclusive) of a volume 'files' sequence, one image per step per -o: OUT with a "
+    "printf pattern (frame_%04d.png) or OUT with _NNNN inserted before the extension");
   cmd->add_flag("-q,--quiet", o->Quiet, "no progress bar");
   cmd->callback([o]() {
     int status = 2;

@@ -466,7 +466,9 @@ Scene::RenderSection ParseRender(const json& v)
 {
   const std::string path = "render";
   RequireObject(v, path);
-  CheckKeys(v, path, { "width", "height", "spp", "strategy", "seed", "exposure", "tone_mapping" });
+  CheckKeys(v, path,
+    { "width", "height", "spp", "strategy", "seed", "exposure", "tone_mapping", "update_scheme",
+      "directions_per_frame", "static_interval" });
   Scene::RenderSection s;
   if (v.contains("width"))
   {
@@ -496,6 +498,21 @@ Scene::RenderSection ParseRender(const json& v)
   if (v.contains("tone_mapping"))
   {
     s.ToneMapping = Boolean(v["tone_mapping"], "render.tone_mapping");
+  }
+  if (v.contains("update_scheme"))
+  {
+    s.UpdateScheme = String(v["update_scheme"], "render.update_scheme");
+    UpdateSchemeIndex(s.UpdateScheme, "render.update_scheme");
+  }
+  if (v.contains("directions_per_frame"))
+  {
+    s.DirectionsPerFrame =
+      Integer(v["directions_per_frame"], "render.directions_per_frame", 1, 4096, "directions per frame");
+  }
+  if (v.contains("static_interval"))
+  {
+    s.StaticInterval = Integer(v["static_interval"], "render.static_interval", 1,
+      std::numeric_limits<int>::max(), "frames between static updates");
   }
   return s;
 }
@@ -601,6 +618,23 @@ int StrategyIndex(const std::string& name, const std::string& key)
   return static_cast<int>(it - names.begin());
 }
 
+const std::vector<std::string>& SceneUpdateSchemes()
+{
+  static const std::vector<std::string> names{ "full", "round-robin", "environment-guided", "static" };
+  return names;
+}
+
+int UpdateSchemeIndex(const std::string& name, const std::string& key)
+{
+  const auto& names = SceneUpdateSchemes();
+  auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end())
+  {
+    Fail(key, "unknown update scheme '" + name + "' (expected " + List(names) + ")");
+  }
+  return static_cast<int>(it - names.begin());
+}
+
 bool Scene::VolumeSection::operator==(const VolumeSection& o) const
 {
   return std::tie(File, Files, Grid, TimeStep) == std::tie(o.File, o.Files, o.Grid, o.TimeStep);
@@ -642,8 +676,9 @@ bool Scene::CameraSection::operator==(const CameraSection& o) const
 
 bool Scene::RenderSection::operator==(const RenderSection& o) const
 {
-  return std::tie(Width, Height, Spp, Strategy, Seed, Exposure, ToneMapping) ==
-    std::tie(o.Width, o.Height, o.Spp, o.Strategy, o.Seed, o.Exposure, o.ToneMapping);
+  return std::tie(Width, Height, Spp, Strategy, Seed, Exposure, ToneMapping, UpdateScheme, DirectionsPerFrame,
+           StaticInterval) == std::tie(o.Width, o.Height, o.Spp, o.Strategy, o.Seed, o.Exposure, o.ToneMapping,
+                                o.UpdateScheme, o.DirectionsPerFrame, o.StaticInterval);
 }
 
 bool Scene::VisibilitySection::operator==(const VisibilitySection& o) const
@@ -809,7 +844,8 @@ json ToJson(const Scene& s)
 
   j["render"] = { { "width", s.Render.Width }, { "height", s.Render.Height }, { "spp", s.Render.Spp },
     { "strategy", s.Render.Strategy }, { "seed", s.Render.Seed }, { "exposure", s.Render.Exposure },
-    { "tone_mapping", s.Render.ToneMapping } };
+    { "tone_mapping", s.Render.ToneMapping }, { "update_scheme", s.Render.UpdateScheme },
+    { "directions_per_frame", s.Render.DirectionsPerFrame }, { "static_interval", s.Render.StaticInterval } };
 
   const auto& v = s.Visibility;
   json vis = json::object();

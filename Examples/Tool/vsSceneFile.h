@@ -12,7 +12,9 @@
 //    "radiance": [r,g,b], "sky": [r,g,b]}}, {"two_tone": {"upper": [..], "lower": [..]}};
 //    "octahedral_size" (0 = automatic). Without "environment": a constant white sky.
 //  - camera: "parallel_scale" (parallel projection when present).
-//  - render: "exposure" and "tone_mapping" (the PNG's display transform).
+//  - render: "exposure" and "tone_mapping" (the PNG's display transform); for time ranges
+//    (`vissweep render --frames`), "update_scheme" ("full", "round-robin" (default), "environment-guided",
+//    "static"), "directions_per_frame" (default 4) and "static_interval" (default 16).
 //  - "visibility": {"direction_resolution", "voxels_per_cell", "kernel_resolution",
 //    "filtering", "filter_angle_fraction", "epsilon", "cell_mode"}, each optional.
 //  - "clip_planes": [{"origin": [..], "normal": [..]}, ...].
@@ -91,6 +93,9 @@ struct Scene
     int Seed = 1;
     double Exposure = 1.0;
     bool ToneMapping = true;
+    std::string UpdateScheme = "round-robin"; // lazy visibility updates between time steps (DESIGN.md default)
+    int DirectionsPerFrame = 4;
+    int StaticInterval = 16;
     bool operator==(const RenderSection& o) const;
   };
   struct VisibilitySection
@@ -127,6 +132,11 @@ struct Scene
 const std::vector<std::string>& SceneStrategies();
 /** The mapper's enum value of a strategy name; throws std::runtime_error naming `key` if unknown. */
 int StrategyIndex(const std::string& name, const std::string& key = "render.strategy");
+
+/** The update schemes of the scene file, in the mapper's enum order (full = 0 ... static = 3). */
+const std::vector<std::string>& SceneUpdateSchemes();
+/** The mapper's enum value of an update scheme name; throws std::runtime_error naming `key` if unknown. */
+int UpdateSchemeIndex(const std::string& name, const std::string& key = "render.update_scheme");
 
 /** Parses a scene; relative paths resolve against baseDir. Throws std::runtime_error naming the key path. */
 Scene ParseScene(const nlohmann::json& j, const std::string& baseDir);

@@ -4,10 +4,16 @@
 #include "vsError.h"
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 namespace vs
 {
+namespace
+{
+const int kHostLevels = 6; // up to 64 x 64, the largest visibility direction resolution
+}
+
 DeviceEnvironment::DeviceEnvironment(std::shared_ptr<Context> context, const EnvironmentMap& source, int minSize)
 {
   if (source.Empty() || !EnvironmentMap::IsPowerOfTwo(source.Size))
@@ -52,6 +58,20 @@ DeviceEnvironment::DeviceEnvironment(std::shared_ptr<Context> context, const Env
   this->Radiance_->Upload(rgba.data(), rgba.size() * sizeof(float));
   this->Mips_ = std::make_unique<Buffer>(context, map->ImportanceMips.size() * sizeof(float), "environment importance");
   this->Mips_->Upload(map->ImportanceMips.data(), map->ImportanceMips.size() * sizeof(float));
+  const int coarsest = std::min(this->Level_, kHostLevels);
+  this->CoarseMips_.assign(map->ImportanceMips.begin(),
+    map->ImportanceMips.begin() + std::ptrdiff_t(EnvironmentMap::MipOffset(coarsest + 1)));
+}
+
+std::vector<float> DeviceEnvironment::ImportanceLevel(int level) const
+{
+  if (level < 0 || level > std::min(this->Level_, kHostLevels))
+  {
+    throw InputError("environment importance level " + std::to_string(level) + " is not kept (levels 0.." +
+      std::to_string(std::min(this->Level_, kHostLevels)) + ")");
+  }
+  const size_t first = EnvironmentMap::MipOffset(level), last = EnvironmentMap::MipOffset(level + 1);
+  return std::vector<float>(this->CoarseMips_.begin() + std::ptrdiff_t(first), this->CoarseMips_.begin() + std::ptrdiff_t(last));
 }
 
 DeviceEnvironment::~DeviceEnvironment() = default;

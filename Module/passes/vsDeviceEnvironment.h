@@ -7,6 +7,7 @@
 #include "vissweepCoreModule.h"
 
 #include <memory>
+#include <vector>
 
 namespace vs
 {
@@ -30,11 +31,16 @@ public:
   /** The largest radiance of any texel (luminance), for sanity bounds. */
   double MaxLuminance() const { return this->MaxLuminance_; }
   bool IsBlack() const { return this->MaxLuminance_ <= 0.0; }
+  /** The luminance importance at quadtree level `level` (2^level x 2^level nodes, row-major,
+   *  the same octahedral texels as a D x D visibility map with D = 2^level), kept on the host
+   *  for levels up to 6. Throws InputError beyond FinestLevel() or 6. */
+  std::vector<float> ImportanceLevel(int level) const;
 
 private:
   std::unique_ptr<Buffer> Radiance_, Mips_;
   int Size_ = 0, Level_ = 0;
   double MaxLuminance_ = 0.0;
+  std::vector<float> CoarseMips_; // levels 0..min(Level_, 6) of the importance quadtree
 };
 }
 

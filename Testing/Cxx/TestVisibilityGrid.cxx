@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using vs::VisibilityGridParameters;
@@ -280,6 +281,44 @@ TEST(VisibilityGrid, LazyUpdateOfSomeDirections)
   grid.Compute(*scene.Volume, *scene.TF, *scene.Majorants, scene.Geometry, {}, p, { 3, 17 });
   EXPECT_EQ(grid.DirectionsComputed(), 66u);
   EXPECT_EQ(grid.Download(), full); // same data: re-sweeping two directions changes nothing
+}
+
+// Lazy updates after new data (a new time step): sweeping a subset of directions with the new
+// volume rewrites exactly those directions, as a full computation for the new volume would, and
+// leaves the others as they were for the old volume. Both the sweeps and the brute force.
+TEST(VisibilityGrid, LazyUpdateAfterNewDataRewritesOnlyThoseDirections)
+{
+  const std::array<uint32_t, 3> dims{ { 17, 17, 17 } };
+  VisibilityScene a(dims, [](int x, int, int) { return x > 8 ? 1.0f : 0.0f; }, 0.3);
+  VisibilityScene b(dims, [](int, int y, int z) { return y + z > 20 ? 1.0f : 0.2f; }, 0.3);
+  const std::vector<uint32_t> subset = { 3, 17, 40, 63, 0 };
+  for (auto method : { VisibilityGridParameters::Method::Sweep, VisibilityGridParameters::Method::BruteForce })
+  {
+    VisibilityGridParameters p;
+    p.StorageFormat = VisibilityGridParameters::Format::Float32;
+    p.Algorithm = method;
+    vs::VisibilityGrid fresh(b.Context);
+    const std::vector<float> gridB = b.Grid(fresh, p);
+    vs::VisibilityGrid grid(a.Context);
+    const std::vector<float> gridA = a.Grid(grid, p);
+    ASSERT_NE(gridA, gridB) << "the two volumes must differ in visibility for this test to mean anything";
+    const uint64_t before = grid.DirectionsComputed();
+    grid.Compute(*b.Volume, *b.TF, *b.Majorants, b.Geometry, {}, p, subset);
+    EXPECT_EQ(grid.DirectionsComputed() - before, subset.size());
+    const std::vector<float> mixed = grid.Download();
+    ASSERT_EQ(mixed.size(), gridA.size());
+    size_t wrong = 0, changedInSubset = 0;
+    for (size_t i = 0; i < mixed.size(); ++i)
+    {
+      const uint32_t n = uint32_t(i % 64);
+      const bool updated = std::find(subset.begin(), subset.end(), n) != subset.end();
+      const float expected = updated ? gridB[i] : gridA[i];
+      wrong += std::abs(mixed[i] - expected) > 1e-6f;
+      changedInSubset += updated && gridA[i] != gridB[i];
+    }
+    EXPECT_EQ(wrong, 0u) << (method == VisibilityGridParameters::Method::Sweep ? "sweep" : "brute force");
+    EXPECT_GT(changedInSubset, 0u) << "the updated directions must differ between the volumes";
+  }
 }
 
 // A slatted blind: thin dense occluding sheets every 5 voxels, thinner than a

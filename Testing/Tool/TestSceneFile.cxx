@@ -35,7 +35,8 @@ json FullScene()
     "camera": {"position": [0, -400, 0], "focal_point": [90, 108, 90], "view_up": [0, 0, 1], "view_angle": 30,
                "parallel_scale": 120.25},
     "render": {"width": 320, "height": 200, "spp": 64, "strategy": "combined", "seed": 7, "exposure": 1.5,
-               "tone_mapping": false},
+               "tone_mapping": false, "update_scheme": "round-robin", "directions_per_frame": 8,
+               "static_interval": 12},
     "visibility": {"direction_resolution": 16, "voxels_per_cell": 8, "kernel_resolution": 64, "filtering": false,
                    "filter_angle_fraction": 0.25, "epsilon": 0.02, "cell_mode": "trilinear"},
     "clip_planes": [{"origin": [90, 108, 90], "normal": [1, 0, 0]}, {"origin": [0, 0, 0], "normal": [0, 0, -1]}]
@@ -86,6 +87,10 @@ TEST(SceneFile, ParsesEverySection)
   EXPECT_EQ(s.Render.Width, 320);
   EXPECT_EQ(s.Render.Strategy, "combined");
   EXPECT_EQ(vstool::StrategyIndex(s.Render.Strategy), 3);
+  EXPECT_EQ(s.Render.UpdateScheme, "round-robin");
+  EXPECT_EQ(vstool::UpdateSchemeIndex(s.Render.UpdateScheme), 1);
+  EXPECT_EQ(s.Render.DirectionsPerFrame, 8);
+  EXPECT_EQ(s.Render.StaticInterval, 12);
   EXPECT_EQ(s.Visibility.DirectionResolution.value(), 16);
   EXPECT_EQ(s.Visibility.CellMode.value(), "trilinear");
   ASSERT_EQ(s.ClipPlanes.size(), 2u);
@@ -110,6 +115,9 @@ TEST(SceneFile, DefaultsOfOptionalSections)
   EXPECT_EQ(s.Render.Width, 512);
   EXPECT_EQ(s.Render.Spp, 64);
   EXPECT_EQ(s.Render.Strategy, "two-step");
+  EXPECT_EQ(s.Render.UpdateScheme, "round-robin"); // DESIGN.md: round-robin by default
+  EXPECT_EQ(s.Render.DirectionsPerFrame, 4);
+  EXPECT_EQ(s.Render.StaticInterval, 16);
   EXPECT_FALSE(s.Visibility.DirectionResolution.has_value());
   EXPECT_TRUE(s.ClipPlanes.empty());
 }
@@ -165,6 +173,12 @@ TEST(SceneFile, EqualityNoticesChanges)
   EXPECT_FALSE(a == b);
   b = a;
   b.Environment.SunSky[1] = 0.0;
+  EXPECT_FALSE(a == b);
+  b = a;
+  b.Render.UpdateScheme = "static";
+  EXPECT_FALSE(a == b);
+  b = a;
+  b.Render.StaticInterval = 3;
   EXPECT_FALSE(a == b);
 }
 
@@ -287,6 +301,14 @@ TEST(SceneFile, BadValues)
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["seed"] = -1; }), "render.seed: seed -1 not in");
   EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["strategy"] = "foo"; }),
     "render.strategy: unknown strategy 'foo' (expected uniform, environment, visibility, combined, two-step)");
+  EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["update_scheme"] = "lazy"; }),
+    "render.update_scheme: unknown update scheme 'lazy' (expected full, round-robin, environment-guided, static)");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["update_scheme"] = 1; }),
+    "render.update_scheme: expected a string, got number");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["directions_per_frame"] = 0; }),
+    "render.directions_per_frame: directions per frame 0 not in [1, 4096]");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["static_interval"] = 1.5; }),
+    "render.static_interval: expected an integer");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["opacity"][2][1] = 1.5; }),
     "transfer_function.opacity[2][1]: opacity 1.5 not in [0, 1]");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["opacity"][0][1] = -0.1; }),
@@ -372,7 +394,14 @@ TEST(SceneFile, ExampleScenesParse)
     SCOPED_TRACE(entry.path().string());
     Scene s;
     ASSERT_NO_THROW(s = vstool::ReadSceneFile(entry.path().string()));
-    EXPECT_TRUE(fs::exists(s.Volume.File)) << s.Volume.File;
+    if (s.Volume.Files.empty())
+    {
+      EXPECT_TRUE(fs::exists(s.Volume.File)) << s.Volume.File;
+    }
+    for (const auto& f : s.Volume.Files) // a sequence: every step must exist
+    {
+      EXPECT_TRUE(fs::exists(f)) << f;
+    }
     if (s.Environment.Type == Scene::EnvironmentSection::Kind::File)
     {
       EXPECT_TRUE(fs::exists(s.Environment.File)) << s.Environment.File;

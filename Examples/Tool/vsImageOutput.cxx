@@ -1,0 +1,120 @@
+#include "vsImageOutput.h"
+
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfOutputFile.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+namespace vstool
+{
+namespace fs = std::filesystem;
+
+namespace
+{
+std::string Lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(), ::tolower);
+  return s;
+}
+}
+
+std::string Extension(const std::string& path)
+{
+  return Lower(fs::path(path).extension().string());
+}
+
+void CheckOutputPath(const std::string& out)
+{
+  const std::string ext = Extension(out);
+  if (ext != ".exr" && ext != ".png")
+  {
+    throw std::runtime_error("-o " + out + ": unknown output format '" + ext + "' (expected .exr or .png)");
+  }
+  fs::path dir = fs::path(out).has_parent_path() ? fs::path(out).parent_path() : fs::path(".");
+  if (!fs::is_directory(dir))
+  {
+    throw std::runtime_error("-o " + out + ": folder '" + dir.string() + "' does not exist");
+  }
+}
+
+void WriteExr(vtkImageData* radiance, const std::string& path)
+{
+  if (!radiance)
+  {
+    throw std::runtime_error("the renderer produced no radiance image");
+  }
+  vtkDataArray* rgb = radiance->GetPointData()->GetArray("Radiance");
+  vtkDataArray* alpha = radiance->GetPointData()->GetArray("Alpha");
+  if (!rgb || rgb->GetNumberOfComponents() != 3)
+  {
+    throw std::runtime_error("the renderer's radiance image has no 3-component 'Radiance' array");
+  }
+  int dims[3];
+  radiance->GetDimensions(dims);
+  const int w = dims[0], h = dims[1];
+  std::vector<float> pixels(size_t(w) * size_t(h) * 4);
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const vtkIdType src = vtkIdType(y) * w + x;        // VTK: rows bottom-up
+      const size_t dst = (size_t(h - 1 - y) * w + x) * 4; // EXR: rows top-down
+      for (int c = 0; c < 3; ++c)
+      {
+        pixels[dst + c] = static_cast<float>(rgb->GetComponent(src, c));
+      }
+      pixels[dst + 3] = alpha ? static_cast<float>(alpha->GetComponent(src, 0)) : 1.0f;
+    }
+  }
+  try
+  {
+    Imf::Header header(w, h);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    const char* names[4] = { "R", "G", "B", "A" };
+    Imf::FrameBuffer frame;
+    for (int c = 0; c < 4; ++c)
+    {
+      header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+      frame.insert(names[c],
+        Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(pixels.data() + c), sizeof(float) * 4, sizeof(float) * 4 * w));
+    }
+    Imf::OutputFile file(path.c_str(), header);
+    file.setFrameBuffer(frame);
+    file.writePixels(h);
+  }
+  catch (const std::exception& e)
+  {
+    throw std::runtime_error("cannot write EXR '" + path + "': " + e.what());
+  }
+}
+
+void WritePng(vtkRenderWindow* window, const std::string& path)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ShouldRerenderOff(); // a re-render would add samples
+  grab->SetInputBufferTypeToRGB();
+  grab->Update();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    throw std::runtime_error("cannot write PNG '" + path + "'");
+  }
+}
+}

@@ -1,0 +1,108 @@
+// Which directions each lazy update scheme re-sweeps after a data-only change
+// (vsVisibilityUpdateScheduler), on the host: counts, the round-robin order, Static's
+// interval, and environment-guided draws that follow the light and are distinct.
+#include "vsVisibilityUpdateScheduler.h"
+#include "vsError.h"
+
+#include "shared/update_order.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using vs::UpdateSchedule;
+using vs::UpdateScheme;
+using vs::VisibilityUpdateScheduler;
+
+namespace
+{
+UpdateSchedule Make(UpdateScheme scheme, uint32_t k = 4, uint32_t interval = 16)
+{
+  UpdateSchedule s;
+  s.Scheme = scheme;
+  s.DirectionsPerFrame = k;
+  s.StaticInterval = interval;
+  return s;
+}
+}
+
+TEST(VisibilityUpdateScheduler, FullSweepsEverythingEveryTime)
+{
+  VisibilityUpdateScheduler s;
+  for (int i = 0; i < 3; ++i)
+    EXPECT_EQ(s.OnDataChange(Make(UpdateScheme::Full), 8, {}).size(), 64u);
+}
+
+TEST(VisibilityUpdateScheduler, RoundRobinFollowsTheOrderAndCoversACycle)
+{
+  VisibilityUpdateScheduler s;
+  std::multiset<uint32_t> seen;
+  for (uint32_t change = 0; change < 16; ++change)
+  {
+    auto d = s.OnDataChange(Make(UpdateScheme::RoundRobin, 4), 8, {});
+    ASSERT_EQ(d.size(), 4u);
+    for (uint32_t i = 0; i < 4; ++i)
+      EXPECT_EQ(d[i], vs::shared::vs_round_robin_direction(4 * change + i, 8));
+    seen.insert(d.begin(), d.end());
+  }
+  EXPECT_EQ(seen.size(), 64u);
+  EXPECT_EQ(std::set<uint32_t>(seen.begin(), seen.end()).size(), 64u); // each exactly once
+  // A full update in between does not restart the order.
+  s.OnFullUpdate();
+  EXPECT_EQ(s.OnDataChange(Make(UpdateScheme::RoundRobin, 4), 8, {})[0], vs::shared::vs_round_robin_direction(64, 8));
+}
+
+TEST(VisibilityUpdateScheduler, StaticRefreshesAtTheIntervalOnly)
+{
+  VisibilityUpdateScheduler s;
+  for (int cycle = 0; cycle < 2; ++cycle)
+  {
+    for (int i = 1; i < 5; ++i)
+      EXPECT_TRUE(s.OnDataChange(Make(UpdateScheme::Static, 4, 5), 8, {}).empty()) << "change " << i;
+    EXPECT_EQ(s.OnDataChange(Make(UpdateScheme::Static, 4, 5), 8, {}).size(), 64u);
+  }
+  // A full update (e.g. a new transfer function) restarts the interval.
+  EXPECT_TRUE(s.OnDataChange(Make(UpdateScheme::Static, 4, 5), 8, {}).empty());
+  s.OnFullUpdate();
+  for (int i = 1; i < 5; ++i)
+    EXPECT_TRUE(s.OnDataChange(Make(UpdateScheme::Static, 4, 5), 8, {}).empty());
+  EXPECT_EQ(s.OnDataChange(Make(UpdateScheme::Static, 4, 5), 8, {}).size(), 64u);
+}
+
+TEST(VisibilityUpdateScheduler, EnvironmentGuidedDrawsDistinctLitDirectionsByImportance)
+{
+  // Light in 6 of 64 directions: 2 strong (weight 100) and 4 weak (weight 1).
+  std::vector<float> importance(64, 0.0f);
+  importance[9] = importance[50] = 100.0f;
+  importance[1] = importance[2] = importance[3] = importance[4] = 1.0f;
+  VisibilityUpdateScheduler s;
+  std::vector<int> drawn(64, 0);
+  const int changes = 2000;
+  for (int c = 0; c < changes; ++c)
+  {
+    auto d = s.OnDataChange(Make(UpdateScheme::EnvironmentGuided, 4), 8, importance);
+    ASSERT_EQ(d.size(), 4u);
+    ASSERT_EQ(std::set<uint32_t>(d.begin(), d.end()).size(), 4u) << "directions must be distinct";
+    for (uint32_t n : d)
+    {
+      ASSERT_GT(importance[n], 0.0f) << "unlit direction " << n << " drawn";
+      ++drawn[n];
+    }
+  }
+  // Without replacement, the two strong directions are (almost) always among the 4, and the
+  // 2 remaining draws fall on the weak ones uniformly: 2000 * 2 / 4 = 1000 each.
+  EXPECT_GT(drawn[9], 0.99 * changes);
+  EXPECT_GT(drawn[50], 0.99 * changes);
+  for (int n : { 1, 2, 3, 4 })
+    EXPECT_NEAR(drawn[n], 1000, 120) << n; // binomial sd ~ 19; the strong ones skip a few draws
+  // Asking for more directions than are lit gives the lit ones only; a black sky gives none.
+  EXPECT_EQ(s.OnDataChange(Make(UpdateScheme::EnvironmentGuided, 10), 8, importance).size(), 6u);
+  EXPECT_TRUE(s.OnDataChange(Make(UpdateScheme::EnvironmentGuided, 4), 8, std::vector<float>(64, 0.0f)).empty());
+}
+
+TEST(VisibilityUpdateScheduler, BadInputIsAnError)
+{
+  VisibilityUpdateScheduler s;
+  EXPECT_THROW(s.OnDataChange(Make(UpdateScheme::RoundRobin), 6, {}), vs::InputError);
+  EXPECT_THROW(s.OnDataChange(Make(UpdateScheme::EnvironmentGuided), 8, std::vector<float>(16, 1.0f)), vs::InputError);
+}
