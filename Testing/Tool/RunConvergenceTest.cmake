@@ -66,3 +66,28 @@ list(LENGTH lines rows)
 if (NOT rows EQUAL 11)
   message(FATAL_ERROR "CSV has ${rows} lines, expected a header and 10 rows")
 endif ()
+
+# Equal-spp mode (the paper's Fig. 10): every strategy reaches exactly the listed spp.
+execute_process(
+  COMMAND "${VISSWEEP}" bench convergence "${SCENE}" --quick --spp-list 1,4 --reference-dir "${OUT_DIR}/references"
+    --json "${OUT_DIR}/spp.json"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if (NOT rc EQUAL 0)
+  message(FATAL_ERROR "equal-spp run failed (${rc}): ${err}")
+endif ()
+file(READ "${OUT_DIR}/spp.json" j)
+string(JSON mode GET "${j}" mode)
+if (NOT mode STREQUAL "equal-spp")
+  message(FATAL_ERROR "mode ${mode}")
+endif ()
+foreach (s uniform environment visibility combined two-step)
+  foreach (i 0 1)
+    string(JSON budget GET "${j}" strategies ${s} budgets ${i})
+    string(JSON spp GET "${j}" strategies ${s} spp ${i})
+    string(REGEX REPLACE "\\.0*$" "" budget "${budget}") # JSON numbers may be written as 4.0
+    string(REGEX REPLACE "\\.0*$" "" spp "${spp}")
+    if (NOT spp EQUAL budget)
+      message(FATAL_ERROR "${s}: ${spp} spp where ${budget} were asked")
+    endif ()
+  endforeach ()
+endforeach ()
