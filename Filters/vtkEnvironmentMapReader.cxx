@@ -23,6 +23,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -100,8 +101,21 @@ public:
   std::string Errors;
 };
 
-/* Reads the dimensions of a Radiance file through vtkHDRReader (information only when !full). */
-bool ReadHDR(const char* fileName, vs::LatLongImage* image, int& width, int& height, std::string& error)
+/* "the <what> of <file> is W x H = N pixels, more than MaximumNumberOfPixels (M)", or "" when it fits. */
+std::string TooLarge(const char* fileName, const char* what, int64_t w, int64_t h, int64_t maxPixels)
+{
+  if (w * h <= maxPixels)
+  {
+    return std::string();
+  }
+  return "the " + std::string(what) + " of " + Quote(fileName) + " is " + std::to_string(w) + " x " +
+    std::to_string(h) + " = " + std::to_string(w * h) + " pixels, more than MaximumNumberOfPixels (" +
+    std::to_string(maxPixels) + ")";
+}
+
+/* Reads the dimensions of a Radiance file through vtkHDRReader (information only when !image). */
+bool ReadHDR(const char* fileName, vs::LatLongImage* image, int& width, int& height, std::string& error,
+  int64_t maxPixels)
 {
   vtkNew<vtkHDRReader> reader;
   vtkNew<MessageCatcher> catcher;
@@ -123,6 +137,11 @@ bool ReadHDR(const char* fileName, vs::LatLongImage* image, int& width, int& hei
   {
     error = "cannot read the Radiance HDR file " + Quote(fileName) + ": " +
       (catcher->Errors.empty() ? std::string("no image size in the header") : catcher->Errors);
+    return false;
+  }
+  error = TooLarge(fileName, "Radiance HDR image", width, height, maxPixels);
+  if (!error.empty())
+  {
     return false;
   }
   if (!image)
@@ -186,7 +205,7 @@ std::string FindChannel(const Imf::ChannelList& channels, const char* name)
 /* Reads an OpenEXR lat-long (dimensions only when !image). Pixels outside the data
  * window but inside the display window are black. */
 bool ReadEXR(const char* fileName, vs::LatLongImage* image, int& width, int& height, std::string& error,
-  const std::function<void(double)>& progress)
+  const std::function<void(double)>& progress, int64_t maxPixels)
 {
   try
   {
@@ -194,13 +213,31 @@ bool ReadEXR(const char* fileName, vs::LatLongImage* image, int& width, int& hei
     const Imf::Header& header = file.header();
     const Imath::Box2i display = header.displayWindow();
     const Imath::Box2i data = header.dataWindow();
-    width = display.max.x - display.min.x + 1;
-    height = display.max.y - display.min.y + 1;
-    if (width <= 0 || height <= 0)
+    // In 64 bits: the corners are whatever the file says.
+    const int64_t w64 = int64_t(display.max.x) - display.min.x + 1;
+    const int64_t h64 = int64_t(display.max.y) - display.min.y + 1;
+    if (w64 <= 0 || h64 <= 0)
     {
       error = "the OpenEXR file " + Quote(fileName) + " has an empty display window";
       return false;
     }
+    // A corrupt header can claim any size; refuse before allocating (found by fuzzing: a
+    // 400-byte file asked for 10 GB).
+    error = TooLarge(fileName, "display window", w64, h64, maxPixels);
+    if (error.empty())
+    {
+      const int64_t dw64 = int64_t(data.max.x) - data.min.x + 1, dh64 = int64_t(data.max.y) - data.min.y + 1;
+      if (dw64 > 0 && dh64 > 0)
+      {
+        error = TooLarge(fileName, "data window", dw64, dh64, maxPixels);
+      }
+    }
+    if (!error.empty())
+    {
+      return false;
+    }
+    width = int(w64);
+    height = int(h64);
     const Imf::ChannelList& channels = header.channels();
     const std::string rgb[3] = { FindChannel(channels, "R"), FindChannel(channels, "G"),
       FindChannel(channels, "B") };
@@ -324,7 +361,7 @@ bool ReadEXR(const char* fileName, vs::LatLongImage* image, int& width, int& hei
 }
 
 bool ReadAny(const char* fileName, vs::LatLongImage* image, int& width, int& height, std::string& error,
-  const std::function<void(double)>& progress)
+  const std::function<void(double)>& progress, int64_t maxPixels)
 {
   width = height = 0;
   if (!fileName || !*fileName)
@@ -345,9 +382,9 @@ bool ReadAny(const char* fileName, vs::LatLongImage* image, int& width, int& hei
         " is neither an OpenEXR nor a Radiance HDR file (its first bytes are not an EXR magic number or \"#?\")";
       return false;
     case FileKind::OpenEXR:
-      return ReadEXR(fileName, image, width, height, error, progress);
+      return ReadEXR(fileName, image, width, height, error, progress, maxPixels);
     case FileKind::RadianceHDR:
-      return ReadHDR(fileName, image, width, height, error);
+      return ReadHDR(fileName, image, width, height, error, maxPixels);
   }
   return false;
 }
@@ -369,7 +406,7 @@ int vtkEnvironmentMapReader::CanReadFile(const char* fileName)
 bool vtkEnvironmentMapReader::ReadLatLong(const char* fileName, vs::LatLongImage& image, std::string& error)
 {
   int w, h;
-  return ReadAny(fileName, &image, w, h, error, nullptr);
+  return ReadAny(fileName, &image, w, h, error, nullptr, vtkIdType(1) << 28);
 }
 
 std::string vtkEnvironmentMapReader::DescribeSource()
@@ -381,7 +418,7 @@ int vtkEnvironmentMapReader::ComputeOutputSize()
 {
   std::string error;
   int w, h;
-  if (!ReadAny(this->FileName, nullptr, w, h, error, nullptr))
+  if (!ReadAny(this->FileName, nullptr, w, h, error, nullptr, this->MaximumNumberOfPixels))
   {
     vtkErrorMacro(<< error);
     return 0;
@@ -402,7 +439,7 @@ std::shared_ptr<vs::EnvironmentMap> vtkEnvironmentMapReader::ComputeMap()
   int w, h;
   // Reading is the first quarter of the progress, the conversion the rest.
   auto readProgress = [this](double f) { this->UpdateProgress(0.25 * f); };
-  if (!ReadAny(this->FileName, &image, w, h, error, readProgress))
+  if (!ReadAny(this->FileName, &image, w, h, error, readProgress, this->MaximumNumberOfPixels))
   {
     vtkErrorMacro(<< error);
     return nullptr;
@@ -436,4 +473,5 @@ void vtkEnvironmentMapReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RotationDegrees: " << this->RotationDegrees << "\n";
   os << indent << "LatLongWidth: " << this->LatLongWidth << "\n";
   os << indent << "LatLongHeight: " << this->LatLongHeight << "\n";
+  os << indent << "MaximumNumberOfPixels: " << this->MaximumNumberOfPixels << "\n";
 }
