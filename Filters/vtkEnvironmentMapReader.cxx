@@ -16,6 +16,7 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
+#include <ImfStdIO.h>
 #include <ImfRgbaFile.h>
 #include <ImfArray.h>
 
@@ -209,10 +210,23 @@ bool ReadEXR(const char* fileName, vs::LatLongImage* image, int& width, int& hei
 {
   try
   {
-    Imf::InputFile file(fileName);
-    const Imf::Header& header = file.header();
-    const Imath::Box2i display = header.displayWindow();
-    const Imath::Box2i data = header.dataWindow();
+    // The size check runs on the header alone, before Imf::InputFile: its constructor already
+    // allocates line buffers for the whole data window's width and block height (a fuzzed
+    // 340-byte file spent seconds in there).
+    Imath::Box2i display, data;
+    {
+      Imf::StdIFStream is(fileName);
+      char magicAndVersion[8];
+      is.read(magicAndVersion, 8);
+      int version = int(static_cast<unsigned char>(magicAndVersion[4])) |
+        int(static_cast<unsigned char>(magicAndVersion[5])) << 8 |
+        int(static_cast<unsigned char>(magicAndVersion[6])) << 16 |
+        int(static_cast<unsigned char>(magicAndVersion[7])) << 24;
+      Imf::Header first;
+      first.readFrom(is, version);
+      display = first.displayWindow();
+      data = first.dataWindow();
+    }
     // In 64 bits: the corners are whatever the file says.
     const int64_t w64 = int64_t(display.max.x) - display.min.x + 1;
     const int64_t h64 = int64_t(display.max.y) - display.min.y + 1;
@@ -238,6 +252,13 @@ bool ReadEXR(const char* fileName, vs::LatLongImage* image, int& width, int& hei
     }
     width = int(w64);
     height = int(h64);
+    Imf::InputFile file(fileName);
+    const Imf::Header& header = file.header();
+    if (header.displayWindow() != display || header.dataWindow() != data)
+    {
+      error = "the OpenEXR file " + Quote(fileName) + " has inconsistent headers";
+      return false;
+    }
     const Imf::ChannelList& channels = header.channels();
     const std::string rgb[3] = { FindChannel(channels, "R"), FindChannel(channels, "G"),
       FindChannel(channels, "B") };
