@@ -203,6 +203,91 @@ std::string FindChannel(const Imf::ChannelList& channels, const char* name)
   return std::string();
 }
 
+/* Walks the attribute list of an OpenEXR header (every header of a multi-part file) and checks
+ * that each attribute's size fits in the file. OpenEXR 3.1 trusts the size: an attribute of an
+ * unknown type claiming 2 GB made Header::readFrom allocate 2 GB for a 300-byte file (found by
+ * fuzzing). Returns "" or the reason the header is corrupt. */
+std::string CheckExrHeaderSizes(const char* fileName)
+{
+  std::error_code ec;
+  const auto fileSize = std::filesystem::file_size(fileName, ec);
+  std::ifstream in(fileName, std::ios::binary);
+  if (ec || !in)
+  {
+    return "cannot open it";
+  }
+  unsigned char mv[8];
+  if (!in.read(reinterpret_cast<char*>(mv), 8))
+  {
+    return "the file ends inside the magic number and version";
+  }
+  const bool multiPart = (mv[5] & 0x10) != 0; // version flag 0x1000
+  const std::size_t maxName = (mv[5] & 0x04) ? 255 : 31; // long names flag 0x400
+  // Reads a null-terminated string of at most maxName characters.
+  auto readName = [&](std::string& out) {
+    out.clear();
+    for (char c; in.get(c);)
+    {
+      if (c == '\0')
+      {
+        return true;
+      }
+      out.push_back(c);
+      if (out.size() > maxName)
+      {
+        return false;
+      }
+    }
+    return false;
+  };
+  for (int header = 0;; ++header)
+  {
+    std::string name, type;
+    for (int attributes = 0;; ++attributes)
+    {
+      if (!readName(name))
+      {
+        return "header attribute " + std::to_string(attributes) + ": the name is cut off or too long";
+      }
+      if (name.empty())
+      {
+        break; // end of this header
+      }
+      if (!readName(type))
+      {
+        return "header attribute '" + name + "': the type name is cut off or too long";
+      }
+      unsigned char sz[4];
+      if (!in.read(reinterpret_cast<char*>(sz), 4))
+      {
+        return "header attribute '" + name + "': the file ends inside its size";
+      }
+      const int32_t size = int32_t(uint32_t(sz[0]) | uint32_t(sz[1]) << 8 | uint32_t(sz[2]) << 16 |
+        uint32_t(sz[3]) << 24);
+      const std::streamoff at = in.tellg();
+      if (size < 0 || at < 0 || uint64_t(at) + uint64_t(size) > fileSize)
+      {
+        return "header attribute '" + name + "' (" + type + ") claims " + std::to_string(size) +
+          " bytes, more than the file holds";
+      }
+      in.seekg(size, std::ios::cur);
+    }
+    if (!multiPart)
+    {
+      return std::string();
+    }
+    // Multi-part: the headers end with an empty header (a lone null byte).
+    if (in.peek() == 0)
+    {
+      return std::string();
+    }
+    if (in.peek() == std::char_traits<char>::eof() || header > 100000)
+    {
+      return "the multi-part header list is cut off";
+    }
+  }
+}
+
 /* Reads an OpenEXR lat-long (dimensions only when !image). Pixels outside the data
  * window but inside the display window are black. */
 bool ReadEXR(const char* fileName, vs::LatLongImage* image, int& width, int& height, std::string& error,
@@ -214,6 +299,12 @@ bool ReadEXR(const char* fileName, vs::LatLongImage* image, int& width, int& hei
     // allocates line buffers for the whole data window's width and block height (a fuzzed
     // 340-byte file spent seconds in there).
     Imath::Box2i display, data;
+    const std::string corrupt = CheckExrHeaderSizes(fileName);
+    if (!corrupt.empty())
+    {
+      error = "the OpenEXR file " + Quote(fileName) + " has a corrupt header: " + corrupt;
+      return false;
+    }
     {
       Imf::StdIFStream is(fileName);
       char magicAndVersion[8];

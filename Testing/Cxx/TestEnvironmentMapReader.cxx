@@ -483,6 +483,21 @@ TEST(EnvironmentMapReader, HeaderClaimingAHugeImageIsRefused)
     EXPECT_NE(msgs->Errors[0].find("7 x 117440512"), std::string::npos) << msgs->Errors[0];
     EXPECT_NE(msgs->Errors[0].find("MaximumNumberOfPixels"), std::string::npos) << msgs->Errors[0];
   }
+  // Found by fuzzing: an attribute claiming 2 GB in a 40-byte header made OpenEXR allocate 2 GB
+  // before noticing the file is short. The reader now checks attribute sizes against the file.
+  {
+    std::string bytes("\x76\x2f\x31\x01\x02\x00\x00\x00", 8);
+    bytes += std::string("junk\0opaquetype\0", 16);
+    bytes += std::string("\x00\xff\xff\x7f", 4); // 2147483392
+    bytes += std::string(8, '\0');
+    std::ofstream(tmp.File("bigattr.exr"), std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+    ExpectErrorNamingFile(tmp.File("bigattr.exr"), "huge attribute");
+    vtkNew<vtkEnvironmentMapReader> reader;
+    auto msgs = RunReader(reader, tmp.File("bigattr.exr"));
+    ASSERT_EQ(msgs->Errors.size(), 1u);
+    EXPECT_NE(msgs->Errors[0].find("corrupt header: header attribute 'junk' (opaquetype) claims 2147483392 bytes"),
+      std::string::npos) << msgs->Errors[0];
+  }
   // A Radiance header claiming 10^10 pixels (and holding none).
   std::ofstream(tmp.File("huge.hdr"), std::ios::binary)
     << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 100000 +X 100000\n";
