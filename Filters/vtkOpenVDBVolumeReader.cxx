@@ -794,7 +794,11 @@ std::vector<GridSummary> Summarize(
     else if ((s.Name == checkedGrid || g->getName() == checkedGrid) &&
       g->isType<openvdb::FloatGrid>())
     {
-      DeepCheck(file.filename(), checkedGrid);
+      // Check the grid that is read: s.Name (the descriptor's unique name). The grid's "name"
+      // metadata can differ from it in a corrupt file, and checking checkedGrid then checked
+      // nothing (found by fuzzing: OpenVDB read an unchecked tree and allocated a Blosc chunk
+      // whose size was text).
+      DeepCheck(file.filename(), s.Name);
       openvdb::GridBase::Ptr full = file.readGrid(s.Name);
       count = full->activeVoxelCount();
       box = count ? full->evalActiveVoxelBoundingBox() : openvdb::CoordBBox();
