@@ -16,6 +16,7 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
+#include <ImfStdIO.h>
 #include <ImfRgbaFile.h>
 #include <ImfArray.h>
 
@@ -23,6 +24,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -100,8 +102,21 @@ public:
   std::string Errors;
 };
 
-/* Reads the dimensions of a Radiance file through vtkHDRReader (information only when !full). */
-bool ReadHDR(const char* fileName, vs::LatLongImage* image, int& width, int& height, std::string& error)
+/* "the <what> of <file> is W x H = N pixels, more than MaximumNumberOfPixels (M)", or "" when it fits. */
+std::string TooLarge(const char* fileName, const char* what, int64_t w, int64_t h, int64_t maxPixels)
+{
+  if (w * h <= maxPixels)
+  {
+    return std::string();
+  }
+  return "the " + std::string(what) + " of " + Quote(fileName) + " is " + std::to_string(w) + " x " +
+    std::to_string(h) + " = " + std::to_string(w * h) + " pixels, more than MaximumNumberOfPixels (" +
+    std::to_string(maxPixels) + ")";
+}
+
+/* Reads the dimensions of a Radiance file through vtkHDRReader (information only when !image). */
+bool ReadHDR(const char* fileName, vs::LatLongImage* image, int& width, int& height, std::string& error,
+  int64_t maxPixels)
 {
   vtkNew<vtkHDRReader> reader;
   vtkNew<MessageCatcher> catcher;
@@ -123,6 +138,11 @@ bool ReadHDR(const char* fileName, vs::LatLongImage* image, int& width, int& hei
   {
     error = "cannot read the Radiance HDR file " + Quote(fileName) + ": " +
       (catcher->Errors.empty() ? std::string("no image size in the header") : catcher->Errors);
+    return false;
+  }
+  error = TooLarge(fileName, "Radiance HDR image", width, height, maxPixels);
+  if (!error.empty())
+  {
     return false;
   }
   if (!image)
@@ -183,22 +203,151 @@ std::string FindChannel(const Imf::ChannelList& channels, const char* name)
   return std::string();
 }
 
+/* Walks the attribute list of an OpenEXR header (every header of a multi-part file) and checks
+ * that each attribute's size fits in the file. OpenEXR 3.1 trusts the size: an attribute of an
+ * unknown type claiming 2 GB made Header::readFrom allocate 2 GB for a 300-byte file (found by
+ * fuzzing). Returns "" or the reason the header is corrupt. */
+std::string CheckExrHeaderSizes(const char* fileName)
+{
+  std::error_code ec;
+  const auto fileSize = std::filesystem::file_size(fileName, ec);
+  std::ifstream in(fileName, std::ios::binary);
+  if (ec || !in)
+  {
+    return "cannot open it";
+  }
+  unsigned char mv[8];
+  if (!in.read(reinterpret_cast<char*>(mv), 8))
+  {
+    return "the file ends inside the magic number and version";
+  }
+  const bool multiPart = (mv[5] & 0x10) != 0; // version flag 0x1000
+  const std::size_t maxName = (mv[5] & 0x04) ? 255 : 31; // long names flag 0x400
+  // Reads a null-terminated string of at most maxName characters.
+  auto readName = [&](std::string& out) {
+    out.clear();
+    for (char c; in.get(c);)
+    {
+      if (c == '\0')
+      {
+        return true;
+      }
+      out.push_back(c);
+      if (out.size() > maxName)
+      {
+        return false;
+      }
+    }
+    return false;
+  };
+  for (int header = 0;; ++header)
+  {
+    std::string name, type;
+    for (int attributes = 0;; ++attributes)
+    {
+      if (!readName(name))
+      {
+        return "header attribute " + std::to_string(attributes) + ": the name is cut off or too long";
+      }
+      if (name.empty())
+      {
+        break; // end of this header
+      }
+      if (!readName(type))
+      {
+        return "header attribute '" + name + "': the type name is cut off or too long";
+      }
+      unsigned char sz[4];
+      if (!in.read(reinterpret_cast<char*>(sz), 4))
+      {
+        return "header attribute '" + name + "': the file ends inside its size";
+      }
+      const int32_t size = int32_t(uint32_t(sz[0]) | uint32_t(sz[1]) << 8 | uint32_t(sz[2]) << 16 |
+        uint32_t(sz[3]) << 24);
+      const std::streamoff at = in.tellg();
+      if (size < 0 || at < 0 || uint64_t(at) + uint64_t(size) > fileSize)
+      {
+        return "header attribute '" + name + "' (" + type + ") claims " + std::to_string(size) +
+          " bytes, more than the file holds";
+      }
+      in.seekg(size, std::ios::cur);
+    }
+    if (!multiPart)
+    {
+      return std::string();
+    }
+    // Multi-part: the headers end with an empty header (a lone null byte).
+    if (in.peek() == 0)
+    {
+      return std::string();
+    }
+    if (in.peek() == std::char_traits<char>::eof() || header > 100000)
+    {
+      return "the multi-part header list is cut off";
+    }
+  }
+}
+
 /* Reads an OpenEXR lat-long (dimensions only when !image). Pixels outside the data
  * window but inside the display window are black. */
 bool ReadEXR(const char* fileName, vs::LatLongImage* image, int& width, int& height, std::string& error,
-  const std::function<void(double)>& progress)
+  const std::function<void(double)>& progress, int64_t maxPixels)
 {
   try
   {
-    Imf::InputFile file(fileName);
-    const Imf::Header& header = file.header();
-    const Imath::Box2i display = header.displayWindow();
-    const Imath::Box2i data = header.dataWindow();
-    width = display.max.x - display.min.x + 1;
-    height = display.max.y - display.min.y + 1;
-    if (width <= 0 || height <= 0)
+    // The size check runs on the header alone, before Imf::InputFile: its constructor already
+    // allocates line buffers for the whole data window's width and block height (a fuzzed
+    // 340-byte file spent seconds in there).
+    Imath::Box2i display, data;
+    const std::string corrupt = CheckExrHeaderSizes(fileName);
+    if (!corrupt.empty())
+    {
+      error = "the OpenEXR file " + Quote(fileName) + " has a corrupt header: " + corrupt;
+      return false;
+    }
+    {
+      Imf::StdIFStream is(fileName);
+      char magicAndVersion[8];
+      is.read(magicAndVersion, 8);
+      int version = int(static_cast<unsigned char>(magicAndVersion[4])) |
+        int(static_cast<unsigned char>(magicAndVersion[5])) << 8 |
+        int(static_cast<unsigned char>(magicAndVersion[6])) << 16 |
+        int(static_cast<unsigned char>(magicAndVersion[7])) << 24;
+      Imf::Header first;
+      first.readFrom(is, version);
+      display = first.displayWindow();
+      data = first.dataWindow();
+    }
+    // In 64 bits: the corners are whatever the file says.
+    const int64_t w64 = int64_t(display.max.x) - display.min.x + 1;
+    const int64_t h64 = int64_t(display.max.y) - display.min.y + 1;
+    if (w64 <= 0 || h64 <= 0)
     {
       error = "the OpenEXR file " + Quote(fileName) + " has an empty display window";
+      return false;
+    }
+    // A corrupt header can claim any size; refuse before allocating (found by fuzzing: a
+    // 400-byte file asked for 10 GB).
+    error = TooLarge(fileName, "display window", w64, h64, maxPixels);
+    if (error.empty())
+    {
+      const int64_t dw64 = int64_t(data.max.x) - data.min.x + 1, dh64 = int64_t(data.max.y) - data.min.y + 1;
+      if (dw64 > 0 && dh64 > 0)
+      {
+        error = TooLarge(fileName, "data window", dw64, dh64, maxPixels);
+      }
+    }
+    if (!error.empty())
+    {
+      return false;
+    }
+    width = int(w64);
+    height = int(h64);
+    Imf::InputFile file(fileName);
+    const Imf::Header& header = file.header();
+    if (header.displayWindow() != display || header.dataWindow() != data)
+    {
+      error = "the OpenEXR file " + Quote(fileName) + " has inconsistent headers";
       return false;
     }
     const Imf::ChannelList& channels = header.channels();
@@ -324,7 +473,7 @@ bool ReadEXR(const char* fileName, vs::LatLongImage* image, int& width, int& hei
 }
 
 bool ReadAny(const char* fileName, vs::LatLongImage* image, int& width, int& height, std::string& error,
-  const std::function<void(double)>& progress)
+  const std::function<void(double)>& progress, int64_t maxPixels)
 {
   width = height = 0;
   if (!fileName || !*fileName)
@@ -345,9 +494,9 @@ bool ReadAny(const char* fileName, vs::LatLongImage* image, int& width, int& hei
         " is neither an OpenEXR nor a Radiance HDR file (its first bytes are not an EXR magic number or \"#?\")";
       return false;
     case FileKind::OpenEXR:
-      return ReadEXR(fileName, image, width, height, error, progress);
+      return ReadEXR(fileName, image, width, height, error, progress, maxPixels);
     case FileKind::RadianceHDR:
-      return ReadHDR(fileName, image, width, height, error);
+      return ReadHDR(fileName, image, width, height, error, maxPixels);
   }
   return false;
 }
@@ -369,7 +518,7 @@ int vtkEnvironmentMapReader::CanReadFile(const char* fileName)
 bool vtkEnvironmentMapReader::ReadLatLong(const char* fileName, vs::LatLongImage& image, std::string& error)
 {
   int w, h;
-  return ReadAny(fileName, &image, w, h, error, nullptr);
+  return ReadAny(fileName, &image, w, h, error, nullptr, vtkIdType(1) << 28);
 }
 
 std::string vtkEnvironmentMapReader::DescribeSource()
@@ -381,7 +530,7 @@ int vtkEnvironmentMapReader::ComputeOutputSize()
 {
   std::string error;
   int w, h;
-  if (!ReadAny(this->FileName, nullptr, w, h, error, nullptr))
+  if (!ReadAny(this->FileName, nullptr, w, h, error, nullptr, this->MaximumNumberOfPixels))
   {
     vtkErrorMacro(<< error);
     return 0;
@@ -402,7 +551,7 @@ std::shared_ptr<vs::EnvironmentMap> vtkEnvironmentMapReader::ComputeMap()
   int w, h;
   // Reading is the first quarter of the progress, the conversion the rest.
   auto readProgress = [this](double f) { this->UpdateProgress(0.25 * f); };
-  if (!ReadAny(this->FileName, &image, w, h, error, readProgress))
+  if (!ReadAny(this->FileName, &image, w, h, error, readProgress, this->MaximumNumberOfPixels))
   {
     vtkErrorMacro(<< error);
     return nullptr;
@@ -436,4 +585,5 @@ void vtkEnvironmentMapReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RotationDegrees: " << this->RotationDegrees << "\n";
   os << indent << "LatLongWidth: " << this->LatLongWidth << "\n";
   os << indent << "LatLongHeight: " << this->LatLongHeight << "\n";
+  os << indent << "MaximumNumberOfPixels: " << this->MaximumNumberOfPixels << "\n";
 }

@@ -16,8 +16,8 @@
  *    (Y, RY, BY); a layer prefix ("rgba.R") is accepted when there is no plain R/G/B.
  *  - Radiance RGBE .hdr / .pic (VTK's vtkHDRReader).
  *
- * A missing, unreadable or corrupt file is an error (vtkErrorMacro naming the
- * file and the reason) and leaves the output empty. Source pixels with a NaN,
+ * A missing, unreadable or corrupt file, or one larger than MaximumNumberOfPixels, is
+ * an error (vtkErrorMacro naming the file and the reason) and leaves the output empty. Source pixels with a NaN,
  * infinite or negative channel have those channels replaced by 0, with one
  * warning giving the count.
  *
@@ -76,6 +76,17 @@ public:
   vtkGetMacro(RotationDegrees, double);
   ///@}
 
+  ///@{
+  /**
+   * Largest source image (pixels of the display window, and of an OpenEXR data window)
+   * the reader will allocate; a file claiming more is an error, reported before any
+   * allocation. A guard against corrupt headers: a few hundred bytes can claim an image of
+   * 10^9 pixels. Default 2^28 (16384 x 16384; 3 GiB as RGB floats).
+   */
+  vtkSetClampMacro(MaximumNumberOfPixels, vtkIdType, 1, VTK_ID_MAX);
+  vtkGetMacro(MaximumNumberOfPixels, vtkIdType);
+  ///@}
+
   /** 1 when the file exists and starts like an OpenEXR or Radiance HDR file. */
   static int CanReadFile(VTK_FILEPATH const char* fileName);
 
@@ -88,7 +99,8 @@ public:
 #if !defined(__VTK_WRAP__)
   /**
    * Reads a lat-long file into image (row 0 = top = +Z). Returns false with the
-   * reason in error (naming the file) when it cannot. Never throws.
+   * reason in error (naming the file) when it cannot (also for a file larger than the
+   * default MaximumNumberOfPixels, 2^28). Never throws.
    */
   static bool ReadLatLong(const char* fileName, vs::LatLongImage& image, std::string& error);
 #endif
@@ -108,6 +120,7 @@ protected:
   double RotationDegrees = 0.0;
   int LatLongWidth = 0;
   int LatLongHeight = 0;
+  vtkIdType MaximumNumberOfPixels = vtkIdType(1) << 28;
 
 private:
   vtkEnvironmentMapReader(const vtkEnvironmentMapReader&) = delete;

@@ -176,6 +176,7 @@ class FileChecker : public openvdb::io::Archive
 public:
   std::vector<std::string> Names; // file order; empty for a file without grid offsets
   int64_t LastGridEnd = -1;       // largest end offset of a grid; -1 without grid offsets
+  bool Streamed = false;          // the file has no grid offsets (written by io::Stream)
 
   /* Throws openvdb::IoError naming what is corrupt (or OpenVDB's own exceptions). */
   void Check(const std::string& path, int64_t size, const std::string& topologyGrid)
@@ -189,7 +190,11 @@ public:
     this->readHeader(is); // fixed-size fields
     if (!this->inputHasGridOffsets())
     {
-      return; // a streamed file: nothing to seek, OpenVDB reads it in one pass
+      // A stream (io::Stream): OpenVDB reads it in one pass with no size checks at all (a
+      // fuzzed 102-byte file made it allocate 2.9 GB for strings). Not walked: refused by the
+      // caller (Streamed).
+      this->Streamed = true;
+      return;
     }
     openvdb::io::StreamMetadata::Ptr streamMeta(new openvdb::io::StreamMetadata);
     streamMeta->setSeekable(true);
@@ -727,6 +732,13 @@ bool OpenFile(openvdb::io::File& file, const std::string& topologyGrid, std::str
     error = Quote(path) + " is truncated or corrupt: " + why;
     return false;
   }
+  if (checker.Streamed)
+  {
+    error = Quote(path) + " has no grid offsets (it was written as a stream, openvdb::io::Stream): "
+      "OpenVDB reads such files without checking any size, so they are not supported; "
+      "write it with openvdb::io::File (openvdb.write in Python)";
+    return false;
+  }
   // Without delayed loading: every read error surfaces in readGrid, not later.
   file.open(/*delayLoad=*/false);
   if (names)
@@ -782,7 +794,11 @@ std::vector<GridSummary> Summarize(
     else if ((s.Name == checkedGrid || g->getName() == checkedGrid) &&
       g->isType<openvdb::FloatGrid>())
     {
-      DeepCheck(file.filename(), checkedGrid);
+      // Check the grid that is read: s.Name (the descriptor's unique name). The grid's "name"
+      // metadata can differ from it in a corrupt file, and checking checkedGrid then checked
+      // nothing (found by fuzzing: OpenVDB read an unchecked tree and allocated a Blosc chunk
+      // whose size was text).
+      DeepCheck(file.filename(), s.Name);
       openvdb::GridBase::Ptr full = file.readGrid(s.Name);
       count = full->activeVoxelCount();
       box = count ? full->evalActiveVoxelBoundingBox() : openvdb::CoordBBox();

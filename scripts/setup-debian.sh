@@ -11,6 +11,7 @@ PACKAGES=(
   libopenexr-dev libopenvdb-dev libtbb-dev libblosc-dev libboost-iostreams-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev
   xvfb xauth
+  clang libclang-rt-14-dev
   mricron-data
 )
 

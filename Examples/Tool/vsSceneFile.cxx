@@ -738,9 +738,11 @@ Scene ParseSceneText(const std::string& text, const std::string& baseDir)
   {
     j = json::parse(text);
   }
-  catch (const json::parse_error& e)
+  catch (const json::exception& e)
   {
-    // e.what() reads "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+    // e.what() reads "[json.exception.parse_error.101] parse error at line 3, column 5: ...".
+    // Not only parse_error: a number beyond the range of a double ("1e999") is an
+    // out_of_range.406 ("number overflow parsing '1e999'"), found by fuzzing.
     std::string what = e.what();
     const auto pos = what.find("] ");
     throw std::runtime_error("invalid JSON: " + (pos == std::string::npos ? what : what.substr(pos + 2)));

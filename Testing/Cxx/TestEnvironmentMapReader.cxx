@@ -461,6 +461,65 @@ TEST(EnvironmentMapReader, Errors)
   EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
 }
 
+// Found by the environment map fuzz target: a 400-byte EXR whose header claims a display window
+// of 7 x 117,440,512 pixels made the reader allocate 9.8 GB for the lat-long. Headers that claim
+// more than MaximumNumberOfPixels are now an error before any allocation.
+TEST(EnvironmentMapReader, HeaderClaimingAHugeImageIsRefused)
+{
+  TempDir tmp;
+  ExrSpec huge;
+  huge.Channels = { "B", "G", "R" };
+  huge.Half = true;
+  huge.DisplayW = 7;
+  huge.DisplayH = 117440512;
+  huge.DataX1 = 6;
+  huge.DataY1 = 3;
+  WriteExr(tmp.File("huge.exr"), huge, [](int, int, int) { return 1.0f; });
+  ExpectErrorNamingFile(tmp.File("huge.exr"), "huge display window");
+  {
+    vtkNew<vtkEnvironmentMapReader> reader;
+    auto msgs = RunReader(reader, tmp.File("huge.exr"));
+    ASSERT_EQ(msgs->Errors.size(), 1u);
+    EXPECT_NE(msgs->Errors[0].find("7 x 117440512"), std::string::npos) << msgs->Errors[0];
+    EXPECT_NE(msgs->Errors[0].find("MaximumNumberOfPixels"), std::string::npos) << msgs->Errors[0];
+  }
+  // Found by fuzzing: an attribute claiming 2 GB in a 40-byte header made OpenEXR allocate 2 GB
+  // before noticing the file is short. The reader now checks attribute sizes against the file.
+  {
+    std::string bytes("\x76\x2f\x31\x01\x02\x00\x00\x00", 8);
+    bytes += std::string("junk\0opaquetype\0", 16);
+    bytes += std::string("\x00\xff\xff\x7f", 4); // 2147483392
+    bytes += std::string(8, '\0');
+    std::ofstream(tmp.File("bigattr.exr"), std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+    ExpectErrorNamingFile(tmp.File("bigattr.exr"), "huge attribute");
+    vtkNew<vtkEnvironmentMapReader> reader;
+    auto msgs = RunReader(reader, tmp.File("bigattr.exr"));
+    ASSERT_EQ(msgs->Errors.size(), 1u);
+    EXPECT_NE(msgs->Errors[0].find("corrupt header: header attribute 'junk' (opaquetype) claims 2147483392 bytes"),
+      std::string::npos) << msgs->Errors[0];
+  }
+  // A Radiance header claiming 10^10 pixels (and holding none).
+  std::ofstream(tmp.File("huge.hdr"), std::ios::binary)
+    << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 100000 +X 100000\n";
+  ExpectErrorNamingFile(tmp.File("huge.hdr"), "huge hdr");
+
+  // The limit is the reader's: a 16 x 8 file passes at 128 pixels and fails at 127.
+  ExrSpec small;
+  small.Channels = { "B", "G", "R" };
+  WriteExr(tmp.File("small.exr"), small, [](int, int, int) { return 0.5f; });
+  vtkNew<vtkEnvironmentMapReader> reader;
+  reader->SetOctahedralSize(8);
+  reader->SetMaximumNumberOfPixels(128);
+  EXPECT_TRUE(RunReader(reader, tmp.File("small.exr"))->Errors.empty());
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 64);
+  reader->SetMaximumNumberOfPixels(127);
+  auto msgs = RunReader(reader, tmp.File("small.exr"));
+  ASSERT_EQ(msgs->Errors.size(), 1u);
+  EXPECT_NE(msgs->Errors[0].find("16 x 8 = 128 pixels, more than MaximumNumberOfPixels (127)"), std::string::npos)
+    << msgs->Errors[0];
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+}
+
 // A Radiance RGBE file written here (uncompressed scanlines, standard -Y H +X W
 // orientation: the first scanline is the top of the picture).
 TEST(EnvironmentMapReader, RadianceHDR)

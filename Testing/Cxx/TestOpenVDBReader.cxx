@@ -13,6 +13,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <openvdb/io/File.h>
+#include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/LevelSetSphere.h>
 
@@ -649,6 +650,18 @@ TEST_F(OpenVDBReader, Errors)
   EXPECT_TRUE(RunFile(reader, multi)->Errors.empty());
   EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 1);
   reader->SetGridName("density");
+
+  // Found by fuzzing: a file without grid offsets (a stream) is read by OpenVDB in one pass
+  // with no size checks (a 102-byte file made it allocate 2.9 GB); it is refused.
+  {
+    const std::string path = tmp.File("streamed.vdb");
+    {
+      std::ofstream out(path, std::ios::binary);
+      openvdb::io::Stream(out).write(openvdb::GridCPtrVec{ SmallGrid(ScaleTranslate(1, 1, 1, 0, 0, 0)) });
+    }
+    ExpectErrorContaining(reader, path, { "streamed.vdb", "has no grid offsets", "openvdb::io::Stream" },
+      "stream");
+  }
 
   // A rotated transform.
   {

@@ -238,6 +238,27 @@ TEST(SceneFile, FileErrorsNameTheFile)
   }
 }
 
+// Found by the fuzz target: a number literal beyond the range of a double made nlohmann-json
+// throw out_of_range (not parse_error), which escaped ParseSceneText as a non-runtime_error
+// (and ReadSceneFile then did not name the file).
+TEST(SceneFile, NumberOverflowIsAnInvalidJsonError)
+{
+  for (const char* text : { "{\"render\": {\"spp\": 1e999}}", "99.99899E98899", "[-1e400]" })
+  {
+    try
+    {
+      ParseSceneText(text, "/");
+      FAIL() << "no error for " << text;
+    }
+    catch (const std::runtime_error& e)
+    {
+      const std::string m = e.what();
+      EXPECT_EQ(m.rfind("invalid JSON: ", 0), 0u) << m;
+      EXPECT_NE(m.find("number overflow"), std::string::npos) << m;
+    }
+  }
+}
+
 TEST(SceneFile, UnknownKeysNameTheKey)
 {
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["rendr"] = json::object(); }), "rendr: unknown key (expected ");
