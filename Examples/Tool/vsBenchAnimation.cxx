@@ -9,6 +9,7 @@
 #include "vtkVisibilitySweepVolumeMapper.h"
 
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -19,6 +20,10 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#ifndef VISSWEEP_BENCHMARKS
+#define VISSWEEP_BENCHMARKS ""
+#endif
 
 namespace vstool
 {
@@ -33,6 +38,7 @@ struct AnimationOptions
   int Width = 0;
   int Height = 0;
   std::string Json;
+  std::string Plot;
 };
 
 struct Method
@@ -193,15 +199,26 @@ int Run(const AnimationOptions& o)
     std::fflush(stdout);
   }
   PrintTable(methods, size_t(range.Last - range.First));
-  if (!o.Json.empty())
+  if (!o.Json.empty() || !o.Plot.empty())
   {
     nlohmann::json j = { { "scene", o.SceneFile }, { "first_step", range.First }, { "last_step", range.Last },
       { "width", scene.Render.Width }, { "height", scene.Render.Height }, { "budget_per_frame_seconds", o.Budget },
       { "reference_spp", o.ReferenceSpp }, { "directions_per_frame", scene.Render.DirectionsPerFrame },
       { "static_interval", scene.Render.StaticInterval }, { "methods", methods } };
-    PendingFile file(o.Json);
+    const std::string json = o.Json.empty() ? o.Plot + ".json" : o.Json;
+    PendingFile file(json);
     std::ofstream(file.Path()) << j.dump(2) << "\n";
     file.Commit();
+    if (!o.Plot.empty())
+    {
+      // matplotlib (python3-matplotlib) draws it from the JSON.
+      const std::string cmd = "/usr/bin/python3 '" + std::string(VISSWEEP_BENCHMARKS) + "/plot_animation.py' '" + json +
+        "' '" + o.Plot + "'";
+      if (std::system(cmd.c_str()) != 0)
+      {
+        throw std::runtime_error("plotting failed: " + cmd);
+      }
+    }
   }
   return 0;
 }
@@ -220,6 +237,7 @@ void AddBenchAnimation(CLI::App& bench)
   cmd->add_option("--width", o->Width, "image width (overrides the scene)")->check(CLI::Range(1, 16384));
   cmd->add_option("--height", o->Height, "image height (overrides the scene)")->check(CLI::Range(1, 16384));
   cmd->add_option("--json", o->Json, "write per-frame and summary figures as JSON");
+  cmd->add_option("--plot", o->Plot, "draw per-frame MSE and update time to this PNG (matplotlib)");
   cmd->callback([o]() {
     int status = 2;
     try
