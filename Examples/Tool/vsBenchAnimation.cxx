@@ -1,4 +1,5 @@
 #include "vsBenchAnimation.h"
+#include "vsToolCommand.h"
 #include "vsPendingFile.h"
 #include "vsRenderCommand.h"
 #include "vsRenderFrames.h"
@@ -238,17 +239,6 @@ void AddBenchAnimation(CLI::App& bench)
   cmd->add_option("--height", o->Height, "image height (overrides the scene)")->check(CLI::Range(1, 16384));
   cmd->add_option("--json", o->Json, "write per-frame and summary figures as JSON");
   cmd->add_option("--plot", o->Plot, "draw per-frame MSE and update time to this PNG (matplotlib)");
-  cmd->callback([o]() {
-    int status = 2;
-    try
-    {
-      status = Run(*o);
-    }
-    catch (const std::exception& e)
-    {
-      std::cerr << "vissweep bench animation: error: " << e.what() << std::endl;
-    }
-    throw CLI::RuntimeError(status);
-  });
+  SetCommandRun(cmd, [o]() { return Run(*o); });
 }
 }

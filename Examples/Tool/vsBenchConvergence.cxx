@@ -1,4 +1,5 @@
 #include "vsBenchConvergence.h"
+#include "vsToolCommand.h"
 #include "vsImageOutput.h"
 #include "vsRenderCommand.h"
 #include "vsSceneFile.h"
@@ -432,17 +433,6 @@ void AddBenchConvergence(CLI::App& bench)
   cmd->add_option("--csv", o->Csv, "write the figures as CSV");
   cmd->add_option("--plot", o->Plot, "draw error against time (log-log) to this PNG (matplotlib)");
   cmd->add_flag("--quick", o->Quick, "32 x 32, budgets 0.5 and 1 s, one repeat, a 64-spp reference (for tests)");
-  cmd->callback([o]() {
-    int status = 2;
-    try
-    {
-      status = Run(*o);
-    }
-    catch (const std::exception& e)
-    {
-      std::fprintf(stderr, "vissweep bench convergence: error: %s\n", e.what());
-    }
-    throw CLI::RuntimeError(status);
-  });
+  SetCommandRun(cmd, [o]() { return Run(*o); });
 }
 }

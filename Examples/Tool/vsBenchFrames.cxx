@@ -1,4 +1,5 @@
 #include "vsBenchFrames.h"
+#include "vsToolCommand.h"
 #include "vsRenderCommand.h"
 #include "vsSceneFile.h"
 
@@ -15,17 +16,13 @@
 #include <cstdio>
 #include <fstream>
 
-#ifndef VISSWEEP_EXAMPLE_SCENES
-#define VISSWEEP_EXAMPLE_SCENES ""
-#endif
-
 namespace vstool
 {
 namespace
 {
 struct Options
 {
-  std::string Scene = std::string(VISSWEEP_EXAMPLE_SCENES) + "/brain_sunrise.json";
+  std::string Scene = ExampleScene("brain_sunrise.json");
   std::string Json;
   int Size = 512, Frames = 10;
 };
@@ -101,17 +98,6 @@ void AddBenchFrames(CLI::App& bench)
   cmd->add_option("--size", o->Size, "window width and height")->check(CLI::Range(8, 4096));
   cmd->add_option("--frames", o->Frames, "frames timed per state (median)")->check(CLI::Range(1, 10000));
   cmd->add_option("--json", o->Json, "write the figures as JSON");
-  cmd->callback([o]() {
-    int status = 2;
-    try
-    {
-      status = Run(*o);
-    }
-    catch (const std::exception& e)
-    {
-      std::fprintf(stderr, "vissweep bench frames: error: %s\n", e.what());
-    }
-    throw CLI::RuntimeError(status);
-  });
+  SetCommandRun(cmd, [o]() { return Run(*o); });
 }
 }

@@ -1,4 +1,5 @@
 #include "vsBenchOverhead.h"
+#include "vsToolCommand.h"
 #include "vsRenderCommand.h"
 #include "vsSceneFile.h"
 
@@ -22,17 +23,13 @@
 #include <cstdio>
 #include <fstream>
 
-#ifndef VISSWEEP_EXAMPLE_SCENES
-#define VISSWEEP_EXAMPLE_SCENES ""
-#endif
-
 namespace vstool
 {
 namespace
 {
 struct Options
 {
-  std::string Scene = std::string(VISSWEEP_EXAMPLE_SCENES) + "/brain_sunrise.json";
+  std::string Scene = ExampleScene("brain_sunrise.json");
   std::string Json;
   int Width = 256, Height = 256, Spp = 4, Repeats = 3;
   std::vector<std::string> Strategies{ "uniform", "environment", "visibility", "combined", "two-step" };
@@ -236,17 +233,6 @@ void AddBenchOverhead(CLI::App& bench)
   cmd->add_flag("!--no-cell-modes", o->CellModes, "skip the trilinear-cells variants of the grid strategies");
   cmd->add_flag("--quick", o->Quick, "64 x 64, 1 spp, 1 frame (seconds; for tests)");
   cmd->add_option("--json", o->Json, "write the figures as JSON");
-  cmd->callback([o]() {
-    int status = 2;
-    try
-    {
-      status = Run(*o);
-    }
-    catch (const std::exception& e)
-    {
-      std::fprintf(stderr, "vissweep bench overhead: error: %s\n", e.what());
-    }
-    throw CLI::RuntimeError(status);
-  });
+  SetCommandRun(cmd, [o]() { return Run(*o); });
 }
 }

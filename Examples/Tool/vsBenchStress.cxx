@@ -1,4 +1,5 @@
 #include "vsBenchStress.h"
+#include "vsToolCommand.h"
 #include "vsRenderCommand.h"
 #include "vsSceneFile.h"
 
@@ -25,17 +26,13 @@
 #include <fstream>
 #include <random>
 
-#ifndef VISSWEEP_EXAMPLE_SCENES
-#define VISSWEEP_EXAMPLE_SCENES ""
-#endif
-
 namespace vstool
 {
 namespace
 {
 struct Options
 {
-  std::string Scene = std::string(VISSWEEP_EXAMPLE_SCENES) + "/tiny.json";
+  std::string Scene = ExampleScene("tiny.json");
   std::string Json;
   int Changes = 10000;
   int Samples = 1000000;
@@ -193,17 +190,6 @@ void AddBenchStress(CLI::App& bench)
     ->check(CLI::Range(2, 1 << 30));
   cmd->add_option("--size", o->Size, "image width and height (default 16)")->check(CLI::Range(1, 4096));
   cmd->add_option("--json", o->Json, "write the figures as JSON");
-  cmd->callback([o]() {
-    int status = 2;
-    try
-    {
-      status = Run(*o);
-    }
-    catch (const std::exception& e)
-    {
-      std::fprintf(stderr, "vissweep bench stress: error: %s\n", e.what());
-    }
-    throw CLI::RuntimeError(status);
-  });
+  SetCommandRun(cmd, [o]() { return Run(*o); });
 }
 }

@@ -1,4 +1,5 @@
 #include "vsBenchSweeps.h"
+#include "vsToolCommand.h"
 #include "vsToolVolume.h"
 
 #include "vsContext.h"
@@ -223,6 +224,6 @@ void AddBenchSweeps(CLI::App& bench)
   cmd->add_option("--cells", o->Cells, "voxels per cell to tabulate (default 2,4,8,16)")->delimiter(',');
   cmd->add_option("--kernels", o->Kernels, "kernel rays to tabulate, 0 = automatic (default 32,64,128,256,0)")
     ->delimiter(',');
-  cmd->callback([o]() { throw CLI::RuntimeError(Run(*o)); });
+  SetCommandRun(cmd, [o]() { return Run(*o); });
 }
 }

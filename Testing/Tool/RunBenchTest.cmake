@@ -1,12 +1,14 @@
 # Drives the benchmarks in their quick forms for the tool's ctests (cmake -P) and checks
 # that what they report is consistent, not how fast it is (speed lives in the benchmarks).
-#   -DVISSWEEP=<exe> -DOUT_DIR=<dir> -DBENCH=overhead|frames|animation -DSCENE=<json>
+#   -DVISSWEEP=<exe> -DOUT_DIR=<dir> -DBENCH=overhead|frames|animation|stress -DSCENE=<json>
 cmake_minimum_required(VERSION 3.19)
 file(REMOVE_RECURSE "${OUT_DIR}")
 file(MAKE_DIRECTORY "${OUT_DIR}")
 set(json "${OUT_DIR}/bench.json")
 if (BENCH STREQUAL "overhead")
   set(args bench overhead "${SCENE}" --quick --json "${json}")
+elseif (BENCH STREQUAL "stress")
+  set(args bench stress "${SCENE}" --changes 30 --samples 400 --size 4 --json "${json}")
 elseif (BENCH STREQUAL "animation")
   set(args bench animation "${SCENE}" --frames 0:2 --width 16 --height 16 --reference-spp 16 --budget-per-frame 0.3
     --json "${json}" --plot "${OUT_DIR}/plot.png")
@@ -49,6 +51,18 @@ if (BENCH STREQUAL "overhead")
   endforeach ()
   string(JSON march GET "${j}" plain_march samples_per_second)
   require_positive(${march} "plain march samples per second")
+elseif (BENCH STREQUAL "stress")
+  foreach (key churn.errors churn.non_finite accumulation.non_finite)
+    string(REPLACE "." ";" path "${key}")
+    string(JSON v GET "${j}" ${path})
+    if (NOT v EQUAL 0)
+      message(FATAL_ERROR "${key} = ${v}, expected 0")
+    endif ()
+  endforeach ()
+  string(JSON samples GET "${j}" accumulation samples)
+  if (NOT samples EQUAL 400)
+    message(FATAL_ERROR "accumulated ${samples} samples, expected 400")
+  endif ()
 elseif (BENCH STREQUAL "animation")
   string(JSON n LENGTH "${j}" methods)
   if (NOT n EQUAL 5) # four update schemes and Environment sampling without sweeps
