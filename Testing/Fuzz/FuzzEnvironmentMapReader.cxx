@@ -31,11 +31,6 @@ namespace
 {
 constexpr vtkIdType MaxPixels = 64;
 
-void CountError(vtkObject*, unsigned long, void* clientData, void*)
-{
-  ++*static_cast<int*>(clientData);
-}
-
 void CheckArray(vtkDataArray* a, const char* name, vtkIdType tuples, int components)
 {
   if (!a)
@@ -73,14 +68,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   const std::string& path = vsfuzz::ScratchFile(".exr");
   vsfuzz::WriteFile(path, data, size);
 
-  int errors = 0;
-  vtkNew<vtkCallbackCommand> onError;
-  onError->SetCallback(CountError);
-  onError->SetClientData(&errors);
+  vsfuzz::ErrorCount errors;
 
   vtkNew<vtkEnvironmentMapReader> reader;
-  reader->AddObserver(vtkCommand::ErrorEvent, onError);
-  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, onError);
+  errors.Watch(reader);
   reader->SetFileName(path.c_str());
   reader->SetMaximumNumberOfPixels(MaxPixels);
   reader->SetOctahedralSize(16);
@@ -88,7 +79,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 
   vtkImageData* out = reader->GetOutput();
   const vtkIdType points = out->GetNumberOfPoints();
-  if (errors > 0)
+  if (errors.Count > 0)
   {
     if (points != 0)
     {

@@ -28,11 +28,6 @@
 
 namespace
 {
-void CountError(vtkObject*, unsigned long, void* clientData, void*)
-{
-  ++*static_cast<int*>(clientData);
-}
-
 constexpr vtkIdType MaxPoints = vtkIdType(1) << 18;
 }
 
@@ -48,14 +43,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   const std::string& path = vsfuzz::ScratchFile(".vdb");
   vsfuzz::WriteFile(path, data, size);
 
-  int errors = 0;
-  vtkNew<vtkCallbackCommand> onError;
-  onError->SetCallback(CountError);
-  onError->SetClientData(&errors);
+  vsfuzz::ErrorCount errors;
 
   vtkNew<vtkOpenVDBVolumeReader> reader;
-  reader->AddObserver(vtkCommand::ErrorEvent, onError);
-  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, onError);
+  errors.Watch(reader);
   reader->SetFileName(path.c_str());
   reader->SetMaximumNumberOfPoints(MaxPoints);
   reader->UpdateInformation();
@@ -83,7 +74,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 
   vtkImageData* out = reader->GetOutput();
   const vtkIdType points = out->GetNumberOfPoints();
-  if (errors > 0)
+  if (errors.Count > 0)
   {
     if (points != 0)
     {

@@ -2,7 +2,12 @@
 #ifndef vsFuzzVTK_h
 #define vsFuzzVTK_h
 
+#include "vtkAlgorithm.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkExecutive.h"
 #include "vtkLogger.h"
+#include "vtkNew.h"
 #include "vtkOutputWindow.h"
 
 namespace vsfuzz
@@ -28,6 +33,28 @@ inline void SilenceVTK()
   w->Delete();
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
 }
+
+/* Counts the ErrorEvents of an algorithm and of its executive (the pipeline reports
+ * RequestData failures there). */
+class ErrorCount
+{
+public:
+  ErrorCount()
+  {
+    this->Observer->SetCallback(&ErrorCount::Increment);
+    this->Observer->SetClientData(&this->Count);
+  }
+  void Watch(vtkAlgorithm* algorithm)
+  {
+    algorithm->AddObserver(vtkCommand::ErrorEvent, this->Observer);
+    algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, this->Observer);
+  }
+  int Count = 0;
+
+private:
+  static void Increment(vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); }
+  vtkNew<vtkCallbackCommand> Observer;
+};
 
 }
 
