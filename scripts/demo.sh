@@ -13,7 +13,7 @@ t1=$(ms)
 t2=$(ms)
 mkdir -p "$build/demo"
 export LP_NUM_THREADS="${LP_NUM_THREADS:-$(nproc)}"
-PYTHONPATH="$build${PYTHONPATH:+:$PYTHONPATH}" xvfb-run -a -s "-screen 0 1280x1024x24" \
+PYTHONPATH="$build${PYTHONPATH:+:$PYTHONPATH}" xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
   /usr/bin/python3 "$root/Examples/Python/render_brain.py" \
   --volume /usr/share/mricron/templates/ch2.nii.gz --output "$build/demo/brain.png" --size 384 --spp 32
 t3=$(ms)

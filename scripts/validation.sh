@@ -18,7 +18,7 @@ if ! "$build/bin/vissweep" info | grep -q 'validation layers: *on'; then
 fi
 cd "$build"
 status=0
-xvfb-run -n "${VISSWEEP_XVFB_SERVER:-96}" -s "-screen 0 1280x1024x24" \
+xvfb-run -n "${VISSWEEP_XVFB_SERVER:-96}" -s "-screen 0 1280x1024x24 -noreset" \
   ctest -L "$labels" --output-on-failure --timeout 1500 || status=$?
 log="$build/Testing/Temporary/LastTest.log"
 messages=$(grep -c -E 'VisSweep Vulkan validation:|Validation (Error|Warning):' "$log" || true)
