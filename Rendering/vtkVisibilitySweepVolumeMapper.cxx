@@ -37,6 +37,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <chrono>
 
 vtkStandardNewMacro(vtkVisibilitySweepVolumeMapper);
@@ -56,6 +57,7 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   int GridUploads = -1;               // the volume upload the grid last saw (lazy updates)
   vs::VolumeGeometry GridGeometry;    // the geometry the grid is computed for (set each frame)
   vs::VisibilityUpdateScheduler Scheduler;
+  std::vector<uint8_t> Swept;         // per direction: swept since the last full update (maybe lazily stale)
   std::vector<double> ImageSignature; // what the accumulated image was rendered for
   vtkSmartPointer<vtkImageData> Radiance;
   vtkSmartPointer<vtkImageData> VisibilityImage;
@@ -555,11 +557,33 @@ std::vector<double> GridSignature(const vs::VisibilityGridParameters& gp, const 
 }
 }
 
-// Every direction when the grid is missing or anything but the data changed since the last full
-// sweep; after a data-only change, the directions the update scheme picks (maybe none).
+// The directions this render needs swept: all of them, except that Combined and TwoStep never
+// read the visibility of a direction whose environment importance at the grid's resolution is 0
+// (their product weight is visibility x importance), so with SkipUnlitDirections those are left
+// out (DESIGN.md: directions without environment radiance never need sweeping).
+std::vector<uint8_t> vtkVisibilitySweepVolumeMapper::RequiredDirections(int side)
+{
+  Internals& I = *this->Impl;
+  std::vector<uint8_t> required(size_t(side) * side, 1);
+  if (this->SkipUnlitDirections && (this->SamplingStrategy == Combined || this->SamplingStrategy == TwoStep))
+  {
+    const std::vector<float> importance = I.Environment->ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
+    for (size_t n = 0; n < required.size() && n < importance.size(); ++n)
+    {
+      required[n] = importance[n] > 0.0f;
+    }
+  }
+  return required;
+}
+
+// Every needed direction when the grid is missing or anything but the data changed since the
+// last full sweep; after a data-only change, the needed directions the update scheme picks (maybe
+// none); and any needed direction never swept since the last full sweep (the environment or the
+// strategy changed what is needed).
 void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid)
 {
   Internals& I = *this->Impl;
+  this->UnlitDirections = 0;
   if (!needGrid)
   {
     return;
@@ -567,14 +591,18 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid)
   const vs::VisibilityGridParameters gp = GridParameters(
     this->DirectionResolution, this->VoxelsPerCell, this->KernelResolution, this->Filtering, this->FilterAngleFraction);
   const std::vector<double> signature = GridSignature(gp, WorldPlanes(this->ClippingPlanes), I.GridGeometry);
+  const std::vector<uint8_t> required = this->RequiredDirections(gp.DirectionResolution);
+  this->UnlitDirections = int(std::count(required.begin(), required.end(), uint8_t(0)));
   if (!I.Grid)
   {
     I.Grid = std::make_unique<vs::VisibilityGrid>(I.Context);
   }
+  std::vector<uint32_t> directions;
   if (!I.Grid->Valid() || I.GridNeedsFull || signature != I.GridSignature)
   {
     vs::VisibilityGrid::CheckFits(*I.Context, I.GridGeometry, gp);
-    this->SweepDirections({});
+    I.Grid->Allocate(I.GridGeometry, gp, this->UnlitDirections > 0);
+    I.Swept.assign(required.size(), 0);
     I.GridSignature = signature;
     I.GridNeedsFull = false;
     I.Scheduler.OnFullUpdate();
@@ -591,13 +619,26 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid)
     {
       importance = I.Environment->ImportanceLevel(int(vs::shared::vs_log2_pow2(gp.DirectionResolution)));
     }
-    std::vector<uint32_t> directions = I.Scheduler.OnDataChange(schedule, gp.DirectionResolution, importance);
-    if (!directions.empty())
-    {
-      this->SweepDirections(directions);
-    }
+    directions = I.Scheduler.OnDataChange(schedule, gp.DirectionResolution, importance, required);
   }
   I.GridUploads = I.Scene->Uploads();
+  // Needed but never swept since the last full sweep (all of them right after one).
+  for (uint32_t n = 0; n < required.size(); ++n)
+  {
+    if (required[n] && !I.Swept[n] && std::find(directions.begin(), directions.end(), n) == directions.end())
+    {
+      directions.push_back(n);
+    }
+  }
+  if (!directions.empty())
+  {
+    std::sort(directions.begin(), directions.end());
+    this->SweepDirections(directions.size() == required.size() ? std::vector<unsigned int>() : directions);
+    for (uint32_t n : directions)
+    {
+      I.Swept[n] = 1;
+    }
+  }
 }
 
 // Sweeps `directions` of the grid (all when empty) for the current volume and transfer function.
@@ -662,6 +703,29 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetVisibilityGrid()
   if (!I.Grid || !I.Grid->Valid() || !I.Scene)
   {
     return nullptr;
+  }
+  // The renderer may have left directions without environment light unswept: a user asking for
+  // the grid gets every direction.
+  std::vector<unsigned int> missing;
+  for (uint32_t n = 0; n < I.Swept.size(); ++n)
+  {
+    if (!I.Swept[n])
+    {
+      missing.push_back(n);
+    }
+  }
+  if (!missing.empty())
+  {
+    try
+    {
+      this->SweepDirections(missing);
+    }
+    catch (const std::exception& e)
+    {
+      vtkErrorMacro("GetVisibilityGrid: sweeping the directions the render skipped failed: " << e.what());
+      return nullptr;
+    }
+    std::fill(I.Swept.begin(), I.Swept.end(), uint8_t(1));
   }
   if (!I.VisibilityImage)
   {
@@ -730,6 +794,8 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastMajorantSeconds: " << this->LastMajorantSeconds << "\n";
   os << indent << "CountLookups: " << this->CountLookups << "\n";
   os << indent << "UpdateScheme: " << this->GetUpdateSchemeAsString() << "\n";
+  os << indent << "SkipUnlitDirections: " << (this->SkipUnlitDirections ? "On" : "Off") << "\n";
+  os << indent << "UnlitDirections: " << this->UnlitDirections << "\n";
   os << indent << "DirectionsPerFrame: " << this->DirectionsPerFrame << "\n";
   os << indent << "StaticInterval: " << this->StaticInterval << "\n";
   os << indent << "DirectionsUpdatedLastFrame: " << this->DirectionsUpdatedLastFrame << "\n";

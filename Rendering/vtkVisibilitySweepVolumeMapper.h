@@ -36,6 +36,7 @@
 #include "vissweepRenderingModule.h"
 #include "vtkVolumeMapper.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -212,6 +213,19 @@ public:
   ///@}
 
   ///@{
+  /** Combined and TwoStep sample a direction of the grid with probability proportional to
+   *  visibility x environment importance, so a direction whose environment has no light at
+   *  the grid's resolution (e.g. the black ground of a sky-only map) is never sampled and its
+   *  visibility never read. On (default): such directions are not swept, and swept only when
+   *  a new environment or another strategy needs them; the image is the same bit for bit.
+   *  UnlitDirections: how many the last Render() left out (0 with other strategies). */
+  vtkSetMacro(SkipUnlitDirections, bool);
+  vtkGetMacro(SkipUnlitDirections, bool);
+  vtkBooleanMacro(SkipUnlitDirections, bool);
+  vtkGetMacro(UnlitDirections, int);
+  ///@}
+
+  ///@{
   /** Directions of the visibility grid swept by the last Render() (0 when none; D*D for a full
    *  update) and by all renders so far. */
   vtkGetMacro(DirectionsUpdatedLastFrame, int);
@@ -307,6 +321,8 @@ protected:
   int UpdateScheme = RoundRobin;
   int DirectionsPerFrame = 4;
   int StaticInterval = 16;
+  bool SkipUnlitDirections = true;
+  int UnlitDirections = 0;
   int DirectionsUpdatedLastFrame = 0;
   int DirectionsUpdatedTotal = 0;
   double LastUpdateSeconds = 0.0;
@@ -332,6 +348,7 @@ private:
   void RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol);
   void UpdateVisibilityGrid(bool needGrid);
   void SweepDirections(const std::vector<unsigned int>& directions);
+  std::vector<uint8_t> RequiredDirections(int side);
 
   struct Internals;
   std::unique_ptr<Internals> Impl;

@@ -175,6 +175,8 @@ int Run(const RenderOptions& o)
   stats["paths_per_second"] = renderSeconds > 0.0 ? pixels * reached / renderSeconds : 0.0;
   stats["paths_per_device_second"] = deviceSeconds > 0.0 ? pixels * reached / deviceSeconds : 0.0;
   stats["visibility_updates"] = mapper->GetVisibilityUpdateCount();
+  stats["directions_swept"] = mapper->GetDirectionsUpdatedTotal();
+  stats["unlit_directions"] = mapper->GetUnlitDirections(); // not swept: no environment light there
   stats["accumulation_resets"] = mapper->GetAccumulationResetCount();
 
   std::unique_ptr<PendingFile> jsonFile;
@@ -441,6 +443,10 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   if (v.Filtering)
   {
     mapper->SetFiltering(*v.Filtering);
+  }
+  if (v.SkipUnlitDirections)
+  {
+    mapper->SetSkipUnlitDirections(*v.SkipUnlitDirections);
   }
   if (v.FilterAngleFraction)
   {

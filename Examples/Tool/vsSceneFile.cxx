@@ -523,7 +523,7 @@ Scene::VisibilitySection ParseVisibility(const json& v)
   RequireObject(v, path);
   CheckKeys(v, path,
     { "direction_resolution", "voxels_per_cell", "kernel_resolution", "filtering", "filter_angle_fraction", "epsilon",
-      "cell_mode" });
+      "cell_mode", "skip_unlit_directions" });
   Scene::VisibilitySection s;
   if (v.contains("direction_resolution"))
   {
@@ -545,6 +545,10 @@ Scene::VisibilitySection ParseVisibility(const json& v)
   if (v.contains("filtering"))
   {
     s.Filtering = Boolean(v["filtering"], "visibility.filtering");
+  }
+  if (v.contains("skip_unlit_directions"))
+  {
+    s.SkipUnlitDirections = Boolean(v["skip_unlit_directions"], "visibility.skip_unlit_directions");
   }
   if (v.contains("filter_angle_fraction"))
   {
@@ -684,8 +688,9 @@ bool Scene::RenderSection::operator==(const RenderSection& o) const
 bool Scene::VisibilitySection::operator==(const VisibilitySection& o) const
 {
   return std::tie(DirectionResolution, VoxelsPerCell, KernelResolution, Filtering, FilterAngleFraction, Epsilon,
-           CellMode) == std::tie(o.DirectionResolution, o.VoxelsPerCell, o.KernelResolution, o.Filtering,
-                          o.FilterAngleFraction, o.Epsilon, o.CellMode);
+           CellMode, SkipUnlitDirections) == std::tie(o.DirectionResolution, o.VoxelsPerCell, o.KernelResolution,
+                                             o.Filtering, o.FilterAngleFraction, o.Epsilon, o.CellMode,
+                                             o.SkipUnlitDirections);
 }
 
 bool Scene::ClipPlane::operator==(const ClipPlane& o) const
@@ -865,6 +870,8 @@ json ToJson(const Scene& s)
     vis["epsilon"] = *v.Epsilon;
   if (v.CellMode)
     vis["cell_mode"] = *v.CellMode;
+  if (v.SkipUnlitDirections)
+    vis["skip_unlit_directions"] = *v.SkipUnlitDirections;
   if (!vis.empty())
   {
     j["visibility"] = vis;

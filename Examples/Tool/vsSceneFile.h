@@ -16,7 +16,8 @@
 //    (`vissweep render --frames`), "update_scheme" ("full", "round-robin" (default), "environment-guided",
 //    "static"), "directions_per_frame" (default 4) and "static_interval" (default 16).
 //  - "visibility": {"direction_resolution", "voxels_per_cell", "kernel_resolution",
-//    "filtering", "filter_angle_fraction", "epsilon", "cell_mode"}, each optional.
+//    "filtering", "filter_angle_fraction", "epsilon", "cell_mode", "skip_unlit_directions"},
+//    each optional.
 //  - "clip_planes": [{"origin": [..], "normal": [..]}, ...].
 #ifndef vsSceneFile_h
 #define vsSceneFile_h
@@ -107,6 +108,7 @@ struct Scene
     std::optional<double> FilterAngleFraction;
     std::optional<double> Epsilon;
     std::optional<std::string> CellMode; // "trilinear" | "stochastic"
+    std::optional<bool> SkipUnlitDirections; // default true: directions without light are not swept
     bool operator==(const VisibilitySection& o) const;
   };
   struct ClipPlane

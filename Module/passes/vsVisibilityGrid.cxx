@@ -95,6 +95,31 @@ void VisibilityGrid::CheckFits(Context& context, const VolumeGeometry& geometry,
   }
 }
 
+bool VisibilityGrid::Allocate(const VolumeGeometry& geometry, const VisibilityGridParameters& parameters, bool clear)
+{
+  parameters.Validate();
+  if (this->Image_ && SameLayout(parameters, this->Parameters_) && SameGeometry(geometry, this->Geometry_))
+  {
+    return false;
+  }
+  const auto& info = this->Context_->Info();
+  const uint64_t maxFloats = std::min<uint64_t>(info.MaxStorageBufferRange, 64ull << 20) / sizeof(float);
+  CheckFits(*this->Context_, geometry, parameters);
+  this->Image_.reset();
+  this->Plan_ = SweepPlan::Make(geometry, parameters, maxFloats, {}, 8, info.MaxImageDimension3D);
+  const auto& c = this->Plan_.Cells;
+  const uint32_t d = parameters.DirectionResolution;
+  this->Image_ = std::make_unique<Image3D>(this->Context_, c[0] * d, c[1] * d, c[2], ToVk(parameters.StorageFormat),
+    "visibility grid");
+  this->Parameters_ = parameters;
+  this->Geometry_ = geometry;
+  if (clear)
+  {
+    this->Image_->Clear(0.0f);
+  }
+  return true;
+}
+
 void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionTable& tf,
   const MajorantGrid& majorants, const VolumeGeometry& geometry, const std::vector<glm::dvec4>& worldClipPlanes,
   const VisibilityGridParameters& parameters, const std::vector<uint32_t>& requested, const Progress& progress)
@@ -108,21 +133,8 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
   const uint64_t maxFloats = std::min<uint64_t>(info.MaxStorageBufferRange, 64ull << 20) / sizeof(float);
 
   std::vector<uint32_t> directions = requested;
-  const bool reuse = this->Image_ && SameLayout(parameters, this->Parameters_) &&
-    SameGeometry(geometry, this->Geometry_);
-  if (!reuse)
-  {
-    directions.clear(); // a new layout needs every direction
-    CheckFits(*this->Context_, geometry, parameters);
-    this->Image_.reset();
-    this->Plan_ = SweepPlan::Make(geometry, parameters, maxFloats, {}, 8, info.MaxImageDimension3D);
-    const auto& c = this->Plan_.Cells;
-    const uint32_t d = parameters.DirectionResolution;
-    this->Image_ = std::make_unique<Image3D>(this->Context_, c[0] * d, c[1] * d, c[2], ToVk(parameters.StorageFormat),
-      "visibility grid");
-    this->Parameters_ = parameters;
-    this->Geometry_ = geometry;
-  }
+  // A new layout swept in part: the other directions read 0, never the fresh image's garbage.
+  this->Allocate(geometry, parameters, !directions.empty());
   if (directions.empty())
   {
     for (uint32_t n = 0; n < parameters.DirectionResolution * parameters.DirectionResolution; ++n)

@@ -36,13 +36,20 @@ public:
   explicit VisibilityGrid(std::shared_ptr<Context> context);
   ~VisibilityGrid();
 
-  /** Computes the grid, or only `directions` of it (lazy updates) when the grid already has
-   *  this geometry and these parameters. worldClipPlanes: (n, w) keeping dot(n, x) + w >= 0;
+  /** Computes the grid, or only `directions` of it (all when empty). With a subset the other
+   *  directions keep what they held (lazy updates: the grid already has this geometry and these
+   *  parameters) or, in a new layout, read 0 (directions the renderer never needs, such as those
+   *  without environment light). worldClipPlanes: (n, w) keeping dot(n, x) + w >= 0;
    *  voxels on the removed side do not occlude. Throws InputError / DeviceLimitError. */
   void Compute(const DeviceVolume& volume, const TransferFunctionTable& tf, const MajorantGrid& majorants,
     const VolumeGeometry& geometry, const std::vector<glm::dvec4>& worldClipPlanes,
     const VisibilityGridParameters& parameters, const std::vector<uint32_t>& directions = {},
     const Progress& progress = Progress());
+
+  /** Makes the image for this geometry and these parameters unless the grid already has them;
+   *  a new image reads 0 everywhere when `clear`. Returns whether it made one. No sweeps: for a
+   *  renderer that needs none of the directions (no environment light anywhere). */
+  bool Allocate(const VolumeGeometry& geometry, const VisibilityGridParameters& parameters, bool clear = true);
 
   /** Throws DeviceLimitError when the grid for this geometry and these parameters cannot exist. */
   static void CheckFits(Context& context, const VolumeGeometry& geometry, const VisibilityGridParameters& p);

@@ -19,40 +19,75 @@ std::vector<uint32_t> VisibilityUpdateScheduler::AllDirections(uint32_t side)
   return all;
 }
 
-std::vector<uint32_t> VisibilityUpdateScheduler::OnDataChange(
-  const UpdateSchedule& schedule, uint32_t side, const std::vector<float>& importance)
+std::vector<uint32_t> VisibilityUpdateScheduler::OnDataChange(const UpdateSchedule& schedule, uint32_t side,
+  const std::vector<float>& importance, const std::vector<uint8_t>& eligible)
 {
   if (side < 1 || side > 64 || (side & (side - 1)) != 0)
   {
     throw InputError("lazy visibility updates need a power-of-two direction resolution, got " + std::to_string(side));
   }
+  if (!eligible.empty() && eligible.size() != size_t(side) * side)
+  {
+    throw InputError("lazy visibility updates need " + std::to_string(side * side) +
+      " eligibility flags (one per direction), got " + std::to_string(eligible.size()));
+  }
+  auto isEligible = [&](uint32_t n) { return eligible.empty() || eligible[n] != 0; };
+  auto allEligible = [&]() {
+    std::vector<uint32_t> out;
+    for (uint32_t n : AllDirections(side))
+    {
+      if (isEligible(n))
+      {
+        out.push_back(n);
+      }
+    }
+    return out;
+  };
   const uint32_t k = std::max(1u, schedule.DirectionsPerFrame);
   switch (schedule.Scheme)
   {
     case UpdateScheme::RoundRobin:
-      return this->NextRoundRobin(side, k);
+      return this->NextRoundRobin(side, k, eligible);
     case UpdateScheme::EnvironmentGuided:
-      return this->DrawFromEnvironment(side, k, importance, schedule.Seed);
+    {
+      if (eligible.empty())
+      {
+        return this->DrawFromEnvironment(side, k, importance, schedule.Seed);
+      }
+      std::vector<float> masked = importance;
+      for (size_t n = 0; n < masked.size() && n < eligible.size(); ++n)
+      {
+        masked[n] = eligible[n] ? masked[n] : 0.0f;
+      }
+      return this->DrawFromEnvironment(side, k, masked, schedule.Seed);
+    }
     case UpdateScheme::Static:
       if (++this->SinceRefresh_ < std::max(1u, schedule.StaticInterval))
       {
         return {};
       }
       this->SinceRefresh_ = 0;
-      return AllDirections(side);
+      return allEligible();
     default:
-      return AllDirections(side);
+      return allEligible();
   }
 }
 
-std::vector<uint32_t> VisibilityUpdateScheduler::NextRoundRobin(uint32_t side, uint32_t k)
+// The next k eligible directions of the update order; ineligible ones are passed over (they
+// still advance the position, so the order stays the same cycle whatever is eligible).
+std::vector<uint32_t> VisibilityUpdateScheduler::NextRoundRobin(
+  uint32_t side, uint32_t k, const std::vector<uint8_t>& eligible)
 {
   const uint32_t count = side * side;
   std::vector<uint32_t> out;
-  for (uint32_t i = 0; i < std::min(k, count); ++i)
+  for (uint32_t step = 0; step < count && out.size() < k; ++step)
   {
-    out.push_back(shared::vs_round_robin_direction(uint32_t(this->RoundRobinNext_ % count), side));
+    const uint32_t n = shared::vs_round_robin_direction(uint32_t(this->RoundRobinNext_ % count), side);
     ++this->RoundRobinNext_;
+    if (eligible.empty() || eligible[n])
+    {
+      out.push_back(n);
+    }
   }
   return out;
 }

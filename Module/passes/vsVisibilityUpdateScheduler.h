@@ -40,8 +40,13 @@ class VISSWEEPCORE_EXPORT VisibilityUpdateScheduler
 public:
   /** The directions (indices n = y * side + x) to re-sweep after a data-only change; empty = none.
    *  `importance`: side * side non-negative weights (row-major texels), used by EnvironmentGuided.
-   *  Throws InputError for a side that is not a power of two or an importance of the wrong size. */
-  std::vector<uint32_t> OnDataChange(const UpdateSchedule& schedule, uint32_t side, const std::vector<float>& importance);
+   *  `eligible`: side * side flags, or empty for all; only eligible directions are returned (the
+   *  renderer passes the directions it needs, e.g. not those without environment light), and
+   *  RoundRobin still returns k of them while any are eligible.
+   *  Throws InputError for a side that is not a power of two, or an importance or eligibility of
+   *  the wrong size. */
+  std::vector<uint32_t> OnDataChange(const UpdateSchedule& schedule, uint32_t side,
+    const std::vector<float>& importance, const std::vector<uint8_t>& eligible = {});
   /** A full recompute happened (first grid, new geometry, parameters, clipping or extinction):
    *  Static's interval starts over. */
   void OnFullUpdate() { this->SinceRefresh_ = 0; }
@@ -52,7 +57,7 @@ public:
   static std::vector<uint32_t> AllDirections(uint32_t side);
 
 private:
-  std::vector<uint32_t> NextRoundRobin(uint32_t side, uint32_t k);
+  std::vector<uint32_t> NextRoundRobin(uint32_t side, uint32_t k, const std::vector<uint8_t>& eligible);
   std::vector<uint32_t> DrawFromEnvironment(uint32_t side, uint32_t k, const std::vector<float>& importance, uint32_t seed);
 
   uint64_t RoundRobinNext_ = 0;

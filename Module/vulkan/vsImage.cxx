@@ -202,6 +202,22 @@ void Image3D::UploadSlices(const void* data, uint32_t z0, uint32_t count)
   }
 }
 
+void Image3D::Clear(float value)
+{
+  RunOnce(*this->Context_, [&](vk::CommandBuffer cmd) {
+    Transition(cmd, this->Image_, vk::ImageLayout::eGeneral, vk::ImageLayout::eTransferDstOptimal);
+    VkClearColorValue color{};
+    for (float& c : color.float32)
+    {
+      c = value;
+    }
+    const vk::ImageSubresourceRange range{ vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1 };
+    cmd.clearColorImage(this->Image_, vk::ImageLayout::eTransferDstOptimal,
+      reinterpret_cast<const vk::ClearColorValue&>(color), range);
+    Transition(cmd, this->Image_, vk::ImageLayout::eTransferDstOptimal, vk::ImageLayout::eGeneral);
+  });
+}
+
 void Image3D::Upload(const void* data, uint64_t bytes)
 {
   if (bytes != this->Bytes())

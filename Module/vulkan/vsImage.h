@@ -36,6 +36,8 @@ public:
   /** Whole-image transfers, tightly packed x fastest, in the image's texel format. */
   void Upload(const void* data, uint64_t bytes);
   void Download(void* data, uint64_t bytes) const;
+  /** Sets every texel to `value` (every channel; unorm formats clamp it to [0, 1]). */
+  void Clear(float value);
   /** Uploads only slices [z0, z0 + count). */
   void UploadSlices(const void* data, uint32_t z0, uint32_t count);
 

@@ -283,6 +283,33 @@ TEST(VisibilityGrid, LazyUpdateOfSomeDirections)
   EXPECT_EQ(grid.Download(), full); // same data: re-sweeping two directions changes nothing
 }
 
+// A new layout swept in part (the renderer skips directions without environment light): the
+// swept directions hold what a full computation gives, the others exactly 0, not whatever the
+// fresh image's memory held.
+TEST(VisibilityGrid, PartialFirstComputationZeroesTheOtherDirections)
+{
+  VisibilityScene scene({ { 17, 17, 17 } }, [](int x, int, int) { return x > 8 ? 1.0f : 0.0f; }, 0.3);
+  VisibilityGridParameters p;
+  p.StorageFormat = VisibilityGridParameters::Format::Float32;
+  vs::VisibilityGrid reference(scene.Context);
+  const std::vector<float> full = scene.Grid(reference, p);
+  const std::vector<uint32_t> subset = { 0, 9, 31, 63 };
+  vs::VisibilityGrid grid(scene.Context);
+  grid.Compute(*scene.Volume, *scene.TF, *scene.Majorants, scene.Geometry, {}, p, subset);
+  EXPECT_EQ(grid.DirectionsComputed(), subset.size());
+  const std::vector<float> partial = grid.Download();
+  ASSERT_EQ(partial.size(), full.size());
+  size_t wrong = 0, nonzeroSwept = 0;
+  for (size_t i = 0; i < partial.size(); ++i)
+  {
+    const bool swept = std::find(subset.begin(), subset.end(), uint32_t(i % 64)) != subset.end();
+    wrong += partial[i] != (swept ? full[i] : 0.0f);
+    nonzeroSwept += swept && full[i] > 0.0f;
+  }
+  EXPECT_EQ(wrong, 0u);
+  EXPECT_GT(nonzeroSwept, 0u) << "the swept directions must see light for this test to mean anything";
+}
+
 // Lazy updates after new data (a new time step): sweeping a subset of directions with the new
 // volume rewrites exactly those directions, as a full computation for the new volume would, and
 // leaves the others as they were for the old volume. Both the sweeps and the brute force.

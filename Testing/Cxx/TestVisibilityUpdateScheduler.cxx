@@ -52,6 +52,48 @@ TEST(VisibilityUpdateScheduler, RoundRobinFollowsTheOrderAndCoversACycle)
   EXPECT_EQ(s.OnDataChange(Make(UpdateScheme::RoundRobin, 4), 8, {})[0], vs::shared::vs_round_robin_direction(64, 8));
 }
 
+// Only the directions the renderer needs (here: the upper half, as under a sky with a black
+// ground) are handed out: Full and Static return exactly them, RoundRobin k of them per change,
+// in the order, covering all of them in one cycle of the order; EnvironmentGuided never others.
+TEST(VisibilityUpdateScheduler, OnlyEligibleDirectionsAreReturned)
+{
+  std::vector<uint8_t> eligible(64, 0);
+  for (uint32_t n = 0; n < 32; ++n)
+    eligible[n] = 1;
+  VisibilityUpdateScheduler s;
+  auto full = s.OnDataChange(Make(UpdateScheme::Full), 8, {}, eligible);
+  EXPECT_EQ(full.size(), 32u);
+  for (uint32_t n : full)
+    EXPECT_TRUE(eligible[n]);
+  auto stat = s.OnDataChange(Make(UpdateScheme::Static, 4, 1), 8, {}, eligible);
+  EXPECT_EQ(stat, full);
+
+  std::vector<uint32_t> expected; // the order with the ineligible directions left out
+  for (uint32_t i = 0; i < 64; ++i)
+  {
+    const uint32_t n = vs::shared::vs_round_robin_direction(i, 8);
+    if (eligible[n])
+      expected.push_back(n);
+  }
+  std::vector<uint32_t> got;
+  for (int change = 0; change < 8; ++change)
+  {
+    auto d = s.OnDataChange(Make(UpdateScheme::RoundRobin, 4), 8, {}, eligible);
+    ASSERT_EQ(d.size(), 4u) << "k eligible directions per change";
+    got.insert(got.end(), d.begin(), d.end());
+  }
+  EXPECT_EQ(got, expected); // each eligible direction exactly once in 8 changes of k = 4
+
+  std::vector<float> importance(64, 1.0f);
+  for (int draw = 0; draw < 20; ++draw)
+    for (uint32_t n : s.OnDataChange(Make(UpdateScheme::EnvironmentGuided, 8), 8, importance, eligible))
+      EXPECT_TRUE(eligible[n]) << n;
+
+  const std::vector<uint8_t> none(64, 0);
+  EXPECT_TRUE(s.OnDataChange(Make(UpdateScheme::RoundRobin, 4), 8, {}, none).empty());
+  EXPECT_THROW(s.OnDataChange(Make(UpdateScheme::Full), 8, {}, std::vector<uint8_t>(10, 1)), vs::InputError);
+}
+
 TEST(VisibilityUpdateScheduler, StaticRefreshesAtTheIntervalOnly)
 {
   VisibilityUpdateScheduler s;

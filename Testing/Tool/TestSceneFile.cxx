@@ -38,7 +38,8 @@ json FullScene()
                "tone_mapping": false, "update_scheme": "round-robin", "directions_per_frame": 8,
                "static_interval": 12},
     "visibility": {"direction_resolution": 16, "voxels_per_cell": 8, "kernel_resolution": 64, "filtering": false,
-                   "filter_angle_fraction": 0.25, "epsilon": 0.02, "cell_mode": "trilinear"},
+                   "filter_angle_fraction": 0.25, "epsilon": 0.02, "cell_mode": "trilinear",
+                   "skip_unlit_directions": false},
     "clip_planes": [{"origin": [90, 108, 90], "normal": [1, 0, 0]}, {"origin": [0, 0, 0], "normal": [0, 0, -1]}]
   })");
 }
@@ -93,6 +94,7 @@ TEST(SceneFile, ParsesEverySection)
   EXPECT_EQ(s.Render.StaticInterval, 12);
   EXPECT_EQ(s.Visibility.DirectionResolution.value(), 16);
   EXPECT_EQ(s.Visibility.CellMode.value(), "trilinear");
+  EXPECT_FALSE(s.Visibility.SkipUnlitDirections.value());
   ASSERT_EQ(s.ClipPlanes.size(), 2u);
   EXPECT_EQ(s.ClipPlanes[1].Normal[2], -1.0);
 }
