@@ -72,6 +72,21 @@ vec3 env_radiance(vec3 w)
   return uEnv[t.y * gEnvSize + t.x].rgb * P.sampling2.y;
 }
 
+/* The environment seen directly (the background): bilinear between texels, so that it does not
+ * look blocky when a texel spans several pixels. */
+vec3 env_radiance_display(vec3 w)
+{
+  vec2 uv = vs_dir_to_octa(w);
+  vec3 sum = vec3(0.0);
+  for (uint c = 0u; c < 4u; ++c)
+  {
+    float weight;
+    uvec2 t = vs_octa_bilinear_texel(uv, gEnvSize, c, weight);
+    sum += weight * uEnv[t.y * gEnvSize + t.x].rgb;
+  }
+  return sum * P.sampling2.y;
+}
+
 float brick_majorant(ivec3 b)
 {
   VS_COUNT(1);
@@ -306,7 +321,7 @@ void main()
     }
     else if (tDepth >= 1e30 && P.background.w > 0.5)
     {
-      result = vec4(env_radiance(dw), 1.0);
+      result = vec4(env_radiance_display(dw), 1.0);
     }
     /* Non-finite contributions (should not happen) are dropped rather than poisoning the pixel. */
     if (any(isnan(result)) || any(isinf(result)))

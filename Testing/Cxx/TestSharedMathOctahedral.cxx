@@ -103,3 +103,83 @@ TEST(Octahedral, TexelLookupMatchesCentre)
     }
   }
 }
+
+// Folding across the edges: the texel one step beyond an edge is the texel the sphere reaches
+// by continuing across the seam. From a point just inside the edge (a thousandth of a texel) at
+// a texel centre's height, through the seam point at that height, on by as much again
+// (extrapolated on the sphere; the step is small, so the map's shear along the seam does not
+// move it by a texel): that direction's texel is vs_octa_wrap of the texel beyond the edge.
+// All four edges, every texel along them.
+TEST(Octahedral, WrapCrossesTheSeams)
+{
+  for (int n : { 8, 16, 64 })
+  {
+    int checked = 0;
+    for (int i = 0; i < n; ++i)
+    {
+      const float a = (float(i) + 0.5f) / float(n), e = 1e-3f / float(n);
+      // (inside uv, seam uv, texel beyond the edge)
+      const struct
+      {
+        vec2 inside, seam;
+        ivec2 beyond;
+      } cases[] = { { vec2(e, a), vec2(0.0f, a), ivec2(-1, i) }, { vec2(1.0f - e, a), vec2(1.0f, a), ivec2(n, i) },
+        { vec2(a, e), vec2(a, 0.0f), ivec2(i, -1) }, { vec2(a, 1.0f - e), vec2(a, 1.0f), ivec2(i, n) } };
+      for (const auto& c : cases)
+      {
+        const vec3 inside = vs_octa_to_dir(c.inside), seam = vs_octa_to_dir(c.seam);
+        const vec3 across = glm::normalize(2.0f * seam - inside);
+        const uvec2 expected = vs_dir_to_texel(across, uint(n));
+        const uvec2 got = vs_octa_wrap(c.beyond, n);
+        EXPECT_EQ(got, expected) << "n " << n << " beyond (" << c.beyond.x << ", " << c.beyond.y << ")";
+        ++checked;
+      }
+    }
+    EXPECT_EQ(checked, 4 * n);
+  }
+  // Inside the map, wrapping changes nothing.
+  EXPECT_EQ(vs_octa_wrap(ivec2(3, 5), 8), uvec2(3u, 5u));
+}
+
+// Bilinear lookup (the visible background): the weights are a partition of unity, and a smooth
+// function stored at texel centres is reproduced to O(1/n) everywhere, seams and corners
+// included (a wrong fold would leave errors of order 1 there).
+TEST(Octahedral, BilinearLookupIsSeamless)
+{
+  auto f = [](vec3 d) { return 2.0f + d.x + 0.5f * d.y - 1.5f * d.z + d.x * d.y; };
+  for (uint n : { 16u, 64u })
+  {
+    std::vector<float> map(n * n);
+    for (uint y = 0; y < n; ++y)
+      for (uint x = 0; x < n; ++x)
+        map[y * n + x] = f(vs_texel_dir(uvec2(x, y), n));
+    VsRng rng = vs_rng_init(uvec2(n, 1u), 0u, 9u);
+    double worst = 0.0, worstSeam = 0.0;
+    for (int i = 0; i < 100000; ++i)
+    {
+      vec2 uv = vs_rng_vec2(rng);
+      if (i % 4 == 0)
+        uv.x = (i % 8 == 0) ? 0.3f / float(n) * uv.x : 1.0f - 0.3f / float(n) * uv.x; // within a texel of an edge
+      float sum = 0.0f, weights = 0.0f;
+      for (uint c = 0; c < 4; ++c)
+      {
+        float w;
+        uvec2 t = vs_octa_bilinear_texel(uv, n, c, w);
+        ASSERT_GE(w, 0.0f);
+        ASSERT_LE(w, 1.0f);
+        ASSERT_LT(t.x, n);
+        ASSERT_LT(t.y, n);
+        sum += w * map[t.y * n + t.x];
+        weights += w;
+      }
+      ASSERT_NEAR(weights, 1.0f, 1e-5f);
+      const double err = std::abs(double(sum) - double(f(vs_octa_to_dir(uv))));
+      worst = std::max(worst, err);
+      if (i % 4 == 0)
+        worstSeam = std::max(worstSeam, err);
+    }
+    std::printf("n %u: worst bilinear error %.4f (next to an edge %.4f)\n", n, worst, worstSeam);
+    EXPECT_LT(worst, 12.0 / double(n));
+    EXPECT_LT(worstSeam, 12.0 / double(n));
+  }
+}

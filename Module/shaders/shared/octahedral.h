@@ -69,6 +69,36 @@ VS_FUNC vec3 vs_texel_dir(uvec2 t, uint n)
   return vs_octa_to_dir((vec2(t) + vec2(0.5f)) / float(n));
 }
 
+/* Texel t of an n x n map, with texels one step beyond an edge folded back across it as the
+ * sphere does: the edge u = 0 meets itself mirrored, (0, v) and (0, 1 - v) are one direction
+ * (likewise u = 1, v = 0, v = 1), so texel (-1, y) is texel (0, n - 1 - y). */
+VS_FUNC uvec2 vs_octa_wrap(ivec2 t, int n)
+{
+  if (t.x < 0)
+    t = ivec2(0, n - 1 - t.y);
+  else if (t.x >= n)
+    t = ivec2(n - 1, n - 1 - t.y);
+  if (t.y < 0)
+    t = ivec2(n - 1 - t.x, 0);
+  else if (t.y >= n)
+    t = ivec2(n - 1 - t.x, n - 1);
+  return uvec2(clamp(t, ivec2(0), ivec2(n - 1)));
+}
+
+/* Bilinear interpolation between texel centres of an n x n map at uv: corner c (0..3) of the
+ * four texels around uv, folded across the edges (vs_octa_wrap), and its weight; the four
+ * weights sum to 1. For display (the visible background), not for lighting: the lighting's
+ * environment is piecewise constant per texel, the function the sampling integrates. */
+VS_FUNC uvec2 vs_octa_bilinear_texel(vec2 uv, uint n, uint c, VS_OUT(float) weight)
+{
+  vec2 p = uv * float(n) - vec2(0.5f);
+  vec2 f = floor(p);
+  vec2 w = p - f;
+  ivec2 off = ivec2(int(c & 1u), int(c >> 1u));
+  weight = (off.x == 1 ? w.x : 1.0f - w.x) * (off.y == 1 ? w.y : 1.0f - w.y);
+  return vs_octa_wrap(ivec2(f) + off, int(n));
+}
+
 VS_NAMESPACE_END
 
 #endif
