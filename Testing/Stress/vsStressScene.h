@@ -24,6 +24,19 @@
 #include <functional>
 #include <string>
 
+// VS_STRESS_ASAN: built with AddressSanitizer (scripts/sanitize.sh); gcc defines
+// __SANITIZE_ADDRESS__, clang has __has_feature(address_sanitizer).
+#if defined(__SANITIZE_ADDRESS__)
+#define VS_STRESS_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define VS_STRESS_ASAN 1
+#endif
+#endif
+#ifndef VS_STRESS_ASAN
+#define VS_STRESS_ASAN 0
+#endif
+
 namespace vsstress
 {
 /** A volume of dims voxels with values f(x, y, z) (index coordinates). */
@@ -51,6 +64,7 @@ class Scene
 {
 public:
   Scene(vtkImageData* volume, int size = 16);
+  ~Scene();
 
   vtkVisibilitySweepVolumeMapper* Mapper() { return this->M; }
   vtkVolumeProperty* Property() { return this->P; }
