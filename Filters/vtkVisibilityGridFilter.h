@@ -72,7 +72,8 @@ public:
   vtkGetMacro(VoxelsPerCell, double);
   ///@}
   ///@{
-  /** Kernel rays along the longer side of the projected volume; 0 (default) = automatic. */
+  /** Kernel rays along the longer side of the projected volume; 0 (default) = automatic: one
+   *  per voxel of the longest axis, 2 to 128. */
   vtkSetClampMacro(KernelResolution, int, 0, 1 << 14);
   vtkGetMacro(KernelResolution, int);
   ///@}

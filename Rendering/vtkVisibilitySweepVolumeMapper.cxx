@@ -531,6 +531,7 @@ vs::VisibilityGridParameters GridParameters(int directionResolution, double voxe
   gp.DirectionResolution = uint32_t(std::max(0, directionResolution));
   gp.VoxelsPerCell = voxelsPerCell;
   gp.KernelResolution = uint32_t(kernelResolution);
+  gp.AutoKernelRaysPerCell = vs::RendererKernelRaysPerCell; // the renderer only samples by the grid
   gp.Filtering = filtering;
   gp.FilterAngleFraction = filterAngleFraction;
   return gp;

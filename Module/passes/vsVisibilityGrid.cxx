@@ -40,7 +40,7 @@ bool SameLayout(const VisibilityGridParameters& a, const VisibilityGridParameter
     a.KernelResolution == b.KernelResolution && a.StepSize == b.StepSize && a.Filtering == b.Filtering &&
     a.FilterAngleFraction == b.FilterAngleFraction && a.Algorithm == b.Algorithm &&
     a.BruteForceSamples == b.BruteForceSamples && a.StorageFormat == b.StorageFormat &&
-    a.StopTransmittance == b.StopTransmittance;
+    a.StopTransmittance == b.StopTransmittance && a.AutoKernelRaysPerCell == b.AutoKernelRaysPerCell;
 }
 
 bool SameGeometry(const VolumeGeometry& a, const VolumeGeometry& b)

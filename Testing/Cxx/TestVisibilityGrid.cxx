@@ -270,6 +270,36 @@ TEST(VisibilityGrid, CellsGrowToFitTheDevice)
   EXPECT_EQ(vs::SweepPlan::CellCount(g, p.VoxelsPerCell, p.DirectionResolution)[0], 4095u);
 }
 
+// The automatic kernel: one ray per voxel of the longest axis for an accurate grid (the filters),
+// RendererKernelRaysPerCell per cell of the longest axis for the renderer's; 2 to 128 rays along
+// the longer side of every direction's kernel.
+TEST(VisibilityGrid, AutomaticKernelResolution)
+{
+  auto longestKernel = [](const vs::VolumeGeometry& g, const VisibilityGridParameters& p) {
+    const vs::SweepPlan plan = vs::SweepPlan::Make(g, p, 1ull << 30);
+    uint32_t rays = 0;
+    for (const auto& d : plan.Directions)
+      rays = std::max({ rays, d.kernel.x, d.kernel.y });
+    return std::make_pair(rays, *std::max_element(plan.Cells.begin(), plan.Cells.end()));
+  };
+  VisibilityGridParameters accurate, renderer;
+  renderer.AutoKernelRaysPerCell = vs::RendererKernelRaysPerCell;
+  const auto mri = vs::VolumeGeometry::Axis({ { 181, 217, 181 } });
+  EXPECT_EQ(longestKernel(mri, accurate).first, 128u); // 217 voxels, capped
+  const auto [mriRays, mriCells] = longestKernel(mri, renderer);
+  EXPECT_EQ(mriCells, 54u); // 216 index units / 4
+  EXPECT_EQ(mriRays, 68u); // ceil(1.25 * 54)
+  const auto small = vs::VolumeGeometry::Axis({ { 16, 16, 16 } });
+  EXPECT_EQ(longestKernel(small, accurate).first, 16u);
+  EXPECT_EQ(longestKernel(small, renderer).first, 5u); // ceil(1.25 * 4)
+  const auto tiny = vs::VolumeGeometry::Axis({ { 2, 2, 2 } });
+  EXPECT_EQ(longestKernel(tiny, renderer).first, 2u);
+  renderer.KernelResolution = 40; // an explicit resolution wins
+  EXPECT_EQ(longestKernel(mri, renderer).first, 40u);
+  renderer.AutoKernelRaysPerCell = -1.0;
+  EXPECT_THROW(renderer.Validate(), vs::InputError);
+}
+
 TEST(VisibilityGrid, LazyUpdateOfSomeDirections)
 {
   VisibilityScene scene({ { 17, 17, 17 } }, [](int x, int, int) { return x > 8 ? 1.0f : 0.0f; }, 0.3);
