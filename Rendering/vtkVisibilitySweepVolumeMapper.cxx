@@ -21,6 +21,7 @@
 #include "vtkCamera.h"
 #include "vtkCommand.h"
 #include "vtkEnvironmentMapAlgorithm.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkPointData.h"
@@ -39,6 +40,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 vtkStandardNewMacro(vtkVisibilitySweepVolumeMapper);
 
@@ -404,8 +406,12 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   p.viewport = glm::uvec4(w, h, 0u, static_cast<uint32_t>(this->Seed));
   uint32_t strategy = emptyVolume ? uint32_t(Uniform) : uint32_t(this->SamplingStrategy);
   p.sampling = glm::uvec4(strategy, 1u, uint32_t(this->CellMode), uint32_t(I.Environment->FinestLevel()));
+  // The variance's squares are of radiance relative to the brightest light (no underflow for dim maps).
+  const double brightest = I.Environment->MaxLuminance() * this->EnvironmentIntensity;
+  const float squareScale = brightest > 0.0 && std::isfinite(1.0 / brightest) && 1.0 / brightest < 1e37
+    ? float(1.0 / brightest) : 1.0f;
   p.sampling2 = glm::vec4(float(this->VisibilityEpsilon), float(this->EnvironmentIntensity),
-    float(I.Scene->Majorants().BrickSize()), 0.0f);
+    float(I.Scene->Majorants().BrickSize()), squareScale);
   if (needGrid)
   {
     auto c = I.Grid->Cells();
@@ -687,8 +693,9 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)
   }
   if (variance)
   {
-    std::vector<float> var = I.MC->Variance();
-    vtkNew<vtkFloatArray> v;
+    // Double: the variance of radiance below ~1e-19 (a dim map in physical units) is below float's range.
+    std::vector<double> var = I.MC->Variance();
+    vtkNew<vtkDoubleArray> v;
     v->SetName("Variance");
     v->SetNumberOfComponents(4);
     v->SetNumberOfTuples(vtkIdType(var.size() / 4));

@@ -177,7 +177,7 @@ public:
 
   /** The linear HDR radiance of the last render as image data (width x height, point array
    *  "Radiance" with 3 floats and "Alpha"), rows bottom-up; nullptr before the first render.
-   *  With `variance`, also "Variance" (per-sample variance of each channel). */
+   *  With `variance`, also "Variance" (per-sample variance of each channel, 4 components, double). */
   vtkImageData* GetRadiance(bool variance = false);
 
   /** The visibility grid the renderer uses, as vtkVisibilityGridFilter outputs it (nullptr before

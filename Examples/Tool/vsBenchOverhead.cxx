@@ -91,7 +91,7 @@ Measurement Measure(SceneObjects& objects, const Options& o, const std::string& 
   m.PathsPerSecond = m.SecondsPerFrame > 0.0 ? pixels * o.Spp / m.SecondsPerFrame : 0.0;
 
   vtkImageData* radiance = mapper->GetRadiance(true);
-  auto* var = vtkFloatArray::SafeDownCast(radiance->GetPointData()->GetArray("Variance"));
+  vtkDataArray* var = radiance->GetPointData()->GetArray("Variance");
   auto* rgb = vtkFloatArray::SafeDownCast(radiance->GetPointData()->GetArray("Radiance"));
   double v = 0.0, mean = 0.0;
   for (vtkIdType i = 0; i < var->GetNumberOfTuples(); ++i)

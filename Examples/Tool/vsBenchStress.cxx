@@ -5,6 +5,7 @@
 
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkPiecewiseFunction.h"
@@ -148,7 +149,8 @@ int Run(const Options& o)
     const auto t0 = std::chrono::steady_clock::now();
     while (m->GetAccumulatedSamples() < half)
       s.Window->Render();
-    vtkNew<vtkFloatArray> first, firstVar;
+    vtkNew<vtkFloatArray> first;
+    vtkNew<vtkDoubleArray> firstVar;
     first->DeepCopy(m->GetRadiance(true)->GetPointData()->GetArray("Radiance"));
     firstVar->DeepCopy(m->GetRadiance(true)->GetPointData()->GetArray("Variance"));
     while (m->GetAccumulatedSamples() < 2 * half)

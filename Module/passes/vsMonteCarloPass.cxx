@@ -159,6 +159,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   this->LastSeconds_ = batch.Seconds("render");
   this->TotalSeconds_ += this->LastSeconds_;
   this->Samples_ += params.sampling.y;
+  this->SquareScale_ = params.sampling2.w > 0.0f ? params.sampling2.w : 1.0f;
   if (this->CountLookups_)
   {
     uint32_t counts[3];
@@ -184,10 +185,10 @@ std::vector<float> MonteCarloPass::Mean() const
   return sum;
 }
 
-std::vector<float> MonteCarloPass::Variance() const
+std::vector<double> MonteCarloPass::Variance() const
 {
   const uint64_t n = uint64_t(this->Width_) * this->Height_ * 4;
-  std::vector<float> var(n, 0.0f);
+  std::vector<double> var(n, 0.0);
   if (!this->Sum_ || this->Samples_ < 2)
   {
     return var;
@@ -196,10 +197,12 @@ std::vector<float> MonteCarloPass::Variance() const
   this->Squares_->Download(sq.data(), n * 4);
   std::vector<float> mean = this->Mean();
   const double N = this->Samples_;
+  const double s = this->SquareScale_;
   for (uint64_t i = 0; i < n; ++i)
   {
-    double m = mean[i];
-    var[i] = float(std::max(0.0, (double(sq[i]) / N - m * m) * N / (N - 1.0)));
+    const double m = mean[i] * (i % 4 < 3 ? s : 1.0); // the squares are of scaled radiance (not alpha)
+    const double v = std::max(0.0, (double(sq[i]) / N - m * m) * N / (N - 1.0));
+    var[i] = i % 4 < 3 ? v / (s * s) : v;
   }
   return var;
 }

@@ -43,7 +43,7 @@ public:
   /** Per pixel (rgb, alpha) means, rows bottom-up. */
   std::vector<float> Mean() const;
   /** Per pixel variance of one sample of (rgb, alpha) (for standard errors: variance / samples). */
-  std::vector<float> Variance() const;
+  std::vector<double> Variance() const; // double: radiance² leaves float's range below ~1e-19
 
   uint32_t Samples() const { return this->Samples_; }
   uint32_t Width() const { return this->Width_; }
@@ -70,6 +70,7 @@ private:
   std::unique_ptr<Buffer> Params_, Depth_, Sum_, Comp_, Squares_;
   std::vector<float> LastDepth_;
   uint32_t Width_ = 0, Height_ = 0, Samples_ = 0;
+  float SquareScale_ = 1.0f; // radiance scale of the sums of squares (render_params.h, sampling2.w)
   double LastSeconds_ = 0.0, TotalSeconds_ = 0.0;
 };
 }

@@ -254,7 +254,11 @@ void accumulate(uint idx, vec4 v)
   vec4 t = s + y;
   uComp[idx] = (t - s) - y;
   uSum[idx] = t;
-  uSq[idx] += v * v;
+  /* Squares of the radiance scaled to the environment's brightest texel: radiance below ~1e-19
+   * (a dim map in physical units) would square to 0 in float and report no variance. */
+  float scale = P.sampling2.w > 0.0 ? P.sampling2.w : 1.0;
+  vec4 w = v * vec4(scale, scale, scale, 1.0);
+  uSq[idx] += w * w;
 }
 
 void main()

@@ -69,7 +69,7 @@ struct RenderScene : VisibilityScene
   }
 
   /** Renders `frames` x params.sampling.y samples; returns (mean, variance) per pixel and channel. */
-  std::pair<std::vector<float>, std::vector<float>> Render(vs::shared::VsRenderParams p, int frames)
+  std::pair<std::vector<float>, std::vector<double>> Render(vs::shared::VsRenderParams p, int frames)
   {
     vs::MonteCarloPass pass(this->Context);
     pass.Reset(p.viewport.x, p.viewport.y);

@@ -7,6 +7,7 @@
 
 #include "vtkColorTransferFunction.h"
 #include "vtkEnvironmentMapSource.h"
+#include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -94,7 +95,7 @@ Image Render(vtkImageData* data, Cut cut, int seed)
   }
   vtkImageData* radiance = m->GetRadiance(true);
   auto* rgb = vtkFloatArray::SafeDownCast(radiance->GetPointData()->GetArray("Radiance"));
-  auto* var = vtkFloatArray::SafeDownCast(radiance->GetPointData()->GetArray("Variance"));
+  vtkDataArray* var = radiance->GetPointData()->GetArray("Variance");
   for (vtkIdType i = 0; i < rgb->GetNumberOfTuples(); ++i)
   {
     out.Mean.push_back(rgb->GetComponent(i, 0));

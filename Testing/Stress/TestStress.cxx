@@ -3,6 +3,7 @@
 // physically impossible brightness (vsStressScene.h). Long variants: `vissweep bench stress`.
 #include "vsStressScene.h"
 
+#include "vtkDoubleArray.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
 #include "vtkPointData.h"
@@ -302,7 +303,7 @@ TEST(Stress, LongAccumulationDoesNotDrift)
   ASSERT_EQ(s.Mapper()->GetAccumulatedSamples(), half) << s.Mapper()->GetLastError();
   auto first = vtkSmartPointer<vtkFloatArray>::New();
   first->DeepCopy(s.Mapper()->GetRadiance(true)->GetPointData()->GetArray("Radiance"));
-  auto firstVar = vtkSmartPointer<vtkFloatArray>::New();
+  auto firstVar = vtkSmartPointer<vtkDoubleArray>::New();
   firstVar->DeepCopy(s.Mapper()->GetRadiance(true)->GetPointData()->GetArray("Variance"));
   s.Window()->Render();
   ASSERT_EQ(s.Mapper()->GetAccumulatedSamples(), 2 * half);

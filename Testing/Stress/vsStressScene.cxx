@@ -157,7 +157,7 @@ Result Scene::Render(int spp, double bound)
     return r;
   }
   auto* mean = vtkFloatArray::SafeDownCast(radiance->GetPointData()->GetArray("Radiance"));
-  auto* var = vtkFloatArray::SafeDownCast(radiance->GetPointData()->GetArray("Variance"));
+  vtkDataArray* var = radiance->GetPointData()->GetArray("Variance");
   const vtkIdType n = mean->GetNumberOfTuples();
   vtkDataArray* alpha = radiance->GetPointData()->GetArray("Alpha");
   for (vtkIdType i = 0; i < n; ++i)

@@ -26,7 +26,8 @@ struct VsRenderParams
   vec4 background;   /* rgb: constant background; w: 1 = escaping rays see the environment, 0 = transparent */
   uvec4 viewport;    /* width, height, index of the first sample of this frame, seed */
   uvec4 sampling;    /* x: strategy, y: samples per pixel this frame, z: cell mode, w: env finest level K */
-  vec4 sampling2;    /* x: epsilon added to visibility, y: environment intensity, z: majorant brick size, w: 0 */
+  vec4 sampling2;    /* x: epsilon added to visibility, y: environment intensity, z: majorant brick size,
+                        w: scale of the radiance in the sum of squares (0 = 1), see mc_render.glsl */
   uvec4 grid;        /* visibility cells (xyz), w: directions per side D (0 = no grid) */
   vec4 cellSize;     /* index units per visibility cell */
   uvec4 bricks;      /* majorant bricks (xyz), w: clip planes in use */
