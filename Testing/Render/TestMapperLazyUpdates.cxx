@@ -12,6 +12,7 @@
 //    ratio 1.00), so studentized z has a variance below 1 (chi2/n about 0.45) for any two
 //    unbiased renders; the bounds below assume var(z) = 1 and are conservative for it.
 #include "vtkVisibilitySweepVolumeMapper.h"
+#include "vsRenderTestUtilities.h"
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -38,15 +39,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << "\n";
-    ++failures;
-  }
-}
+using vstest::Check;
 
 const int NX = 20, NY = 18, NZ = 16;
 
@@ -119,7 +112,7 @@ struct Scene
     {
       this->Window->Render();
       Check(std::string(this->Mapper->GetLastError()).empty(), this->Mapper->GetLastError());
-    } while (!this->Mapper->IsConverged() && failures == 0);
+    } while (!this->Mapper->IsConverged() && vstest::Failures() == 0);
   }
 };
 
@@ -393,5 +386,5 @@ int TestMapperLazyUpdates(int, char*[])
   TestCounters();
   TestRoundRobinCycleRefreshesEverything();
   TestStaleGridIsUnbiased();
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vstest::ExitCode();
 }

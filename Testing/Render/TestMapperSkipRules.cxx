@@ -3,6 +3,7 @@
 // density scale, clipping: recompute majorants and visibility; environment: the light's pdf
 // only), and a volume empty under the transfer function skips the sweeps entirely.
 #include "vtkVisibilitySweepVolumeMapper.h"
+#include "vsRenderTestUtilities.h"
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -22,15 +23,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const char* what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << "\n";
-    ++failures;
-  }
-}
+using vstest::Check;
 }
 
 int TestMapperSkipRules(int, char*[])
@@ -169,5 +162,5 @@ int TestMapperSkipRules(int, char*[])
   win->Render();
   Check(std::string(m->GetLastError()).empty(), m->GetLastError());
   Check(m->GetVisibilityUpdateCount() == 8, "an empty volume skips the sweeps");
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vstest::ExitCode();
 }

@@ -10,6 +10,7 @@
 //  - lazy updates after new data sweep k lit directions;
 //  - a black environment sweeps nothing and renders black, without an error.
 #include "vtkVisibilitySweepVolumeMapper.h"
+#include "vsRenderTestUtilities.h"
 
 #include "vtkDataArray.h"
 #include "vtkEnvironmentMapSource.h"
@@ -31,15 +32,7 @@
 
 namespace
 {
-int failures = 0;
-void Check(bool ok, const std::string& what)
-{
-  if (!ok)
-  {
-    std::cerr << "FAILED: " << what << "\n";
-    ++failures;
-  }
-}
+using vstest::Check;
 
 const int N = 16;
 
@@ -221,5 +214,5 @@ int TestMapperUnlitDirections(int, char*[])
   TestEnvironmentAndStrategyChanges();
   TestLazyUpdatesSweepLitDirections();
   TestBlackEnvironment();
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return vstest::ExitCode();
 }

@@ -7,10 +7,36 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkVolumeProperty.h"
 
+#include <cstdlib>
 #include <cstring>
+#include <iostream>
 
 namespace vstest
 {
+namespace
+{
+int failures = 0;
+}
+
+void Check(bool ok, const std::string& what)
+{
+  if (!ok)
+  {
+    std::cerr << "FAILED: " << what << "\n";
+    ++failures;
+  }
+}
+
+int Failures()
+{
+  return failures;
+}
+
+int ExitCode()
+{
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
 std::string Argument(int argc, char* argv[], const char* flag)
 {
   for (int i = 0; i + 1 < argc; ++i)

@@ -24,6 +24,13 @@ vtkSmartPointer<vtkImageData> ReadBrain(const std::string& path);
 /** A fixed skin-and-brain transfer function for ch2 (0..255). */
 vtkSmartPointer<vtkVolumeProperty> BrainProperty();
 
+/** Soft assertions of the counter-and-image tests: Check() prints "FAILED: what" to stderr
+ *  and counts it; a test returns ExitCode() (EXIT_FAILURE after any failed check). One test
+ *  runs per process (ctest), so the count is that test's. */
+void Check(bool ok, const std::string& what);
+int Failures();
+int ExitCode();
+
 /** Records every ErrorEvent/WarningEvent message of the objects it observes. */
 class ErrorRecorder : public vtkCommand
 {
