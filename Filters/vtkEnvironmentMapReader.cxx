@@ -29,6 +29,8 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iomanip>
+#include <limits>
 #include <sstream>
 
 vtkStandardNewMacro(vtkEnvironmentMapReader);
@@ -105,12 +107,23 @@ public:
 /* "the <what> of <file> is W x H = N pixels, more than MaximumNumberOfPixels (M)", or "" when it fits. */
 std::string TooLarge(const char* fileName, const char* what, int64_t w, int64_t h, int64_t maxPixels)
 {
-  if (w * h <= maxPixels)
+  // Without multiplying first: a corrupt header's 32-bit extents overflow a 64-bit product.
+  if (w <= 0 || h <= 0 || w <= maxPixels / h)
   {
     return std::string();
   }
+  const bool representable = w <= std::numeric_limits<int64_t>::max() / h;
+  std::ostringstream pixels;
+  if (representable)
+  {
+    pixels << w * h;
+  }
+  else
+  {
+    pixels << std::setprecision(4) << double(w) * double(h);
+  }
   return "the " + std::string(what) + " of " + Quote(fileName) + " is " + std::to_string(w) + " x " +
-    std::to_string(h) + " = " + std::to_string(w * h) + " pixels, more than MaximumNumberOfPixels (" +
+    std::to_string(h) + " = " + pixels.str() + " pixels, more than MaximumNumberOfPixels (" +
     std::to_string(maxPixels) + ")";
 }
 
