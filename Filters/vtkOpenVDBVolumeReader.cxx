@@ -204,6 +204,16 @@ public:
     this->setLibraryVersion(is);
     this->setDataCompression(is);
     const uint32_t version = openvdb::io::getFormatVersion(is);
+    if (version < openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION)
+    {
+      // The tree walk below follows the node-mask-compressed layout of format 222 (OpenVDB 2.0,
+      // 2013) and later; an older tree would go to OpenVDB unchecked (a hand-made file with
+      // version 221 made it throw mid-tree and leak a node), so such files are refused.
+      OPENVDB_THROW(openvdb::IoError,
+        "file format version " << version << " predates OpenVDB 2.0 (format "
+                               << openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION
+                               << "), which is not supported");
+    }
     this->SkipMetaMap(is, "the file metadata");
 
     const int32_t count = this->ReadScalar<int32_t>(is, "the grid count");
@@ -249,8 +259,7 @@ public:
       if (gd.isInstance() ||
         (gd.gridName() != topologyGrid &&
           openvdb::io::GridDescriptor::nameAsString(gd.uniqueName()) != topologyGrid) ||
-        gd.gridType() != openvdb::FloatGrid::gridType() ||
-        version < openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION)
+        gd.gridType() != openvdb::FloatGrid::gridType())
       {
         continue;
       }

@@ -65,6 +65,8 @@
  * chunks, whose internal-node (tile) values it also decompresses: OpenVDB leaks the node it is
  * reading when a chunk fails to decompress mid-tree), reporting the file as truncated or
  * corrupt instead. Voxel values inside valid chunks are not checkable and are read as they are.
+ * Files without grid offsets (written by openvdb::io::Stream) and files older than format 222
+ * (OpenVDB 2.0) are refused: their trees cannot be checked.
  *
  * @code{.py}
  * import vissweep

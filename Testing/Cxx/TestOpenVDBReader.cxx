@@ -702,6 +702,20 @@ TEST_F(OpenVDBReader, Errors)
       "a Blosc chunk that does not decompress");
   }
 
+  // A file format older than 222 (OpenVDB 2.0) has a tree layout the structure check does not
+  // walk; it went to OpenVDB unchecked (a hand-made version-221 file leaked a node) and is
+  // now refused. The format version is the 32-bit word after the 8-byte magic number.
+  {
+    const std::string path = tmp.File("format221.vdb");
+    Write(path, { SmallGrid(ScaleTranslate(1, 1, 1, 0, 0, 0)) });
+    std::fstream io(path, std::ios::binary | std::ios::in | std::ios::out);
+    io.seekp(8);
+    const uint32_t version = 221;
+    io.write(reinterpret_cast<const char*>(&version), 4);
+    io.close();
+    ExpectErrorContaining(reader, path, { "format221.vdb", "file format version 221" }, "format 221");
+  }
+
   // A rotated transform.
   {
     openvdb::math::Transform::Ptr xform = openvdb::math::Transform::createLinearTransform(0.5);
