@@ -11,6 +11,7 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include <openvdb/io/Compression.h>
 #include <openvdb/io/DelayedLoadMetadata.h>
 #include <openvdb/io/File.h>
 #include <openvdb/io/GridDescriptor.h>
@@ -203,6 +204,16 @@ public:
     this->setLibraryVersion(is);
     this->setDataCompression(is);
     const uint32_t version = openvdb::io::getFormatVersion(is);
+    if (version < openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION)
+    {
+      // The tree walk below follows the node-mask-compressed layout of format 222 (OpenVDB 2.0,
+      // 2013) and later; an older tree would go to OpenVDB unchecked (a hand-made file with
+      // version 221 made it throw mid-tree and leak a node), so such files are refused.
+      OPENVDB_THROW(openvdb::IoError,
+        "file format version " << version << " predates OpenVDB 2.0 (format "
+                               << openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION
+                               << "), which is not supported");
+    }
     this->SkipMetaMap(is, "the file metadata");
 
     const int32_t count = this->ReadScalar<int32_t>(is, "the grid count");
@@ -248,8 +259,7 @@ public:
       if (gd.isInstance() ||
         (gd.gridName() != topologyGrid &&
           openvdb::io::GridDescriptor::nameAsString(gd.uniqueName()) != topologyGrid) ||
-        gd.gridType() != openvdb::FloatGrid::gridType() ||
-        version < openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION)
+        gd.gridType() != openvdb::FloatGrid::gridType())
       {
         continue;
       }
@@ -366,6 +376,36 @@ private:
     this->Skip(is, n, what);
   }
 
+  /* The values of an internal node (its tiles), as InternalNode::readTopology reads them:
+   * sizes checked first (SkipValues), then decoded by OpenVDB's own
+   * io::readCompressedValues into a scratch buffer. readTopology allocates each node before
+   * reading it and RootNode stores a child only after the child's readTopology returns, so an
+   * exception there (a Blosc or zip chunk of the right sizes whose data does not decompress:
+   * "Expected to decompress 4 bytes, got -1 bytes") leaks the level-2 node being filled and
+   * its children (found by fuzzing: 304 KB per file). Decoding here makes OpenVDB throw in the
+   * check, where nothing leaks, instead of mid-tree. Costs one more decompression of the tile
+   * values (at most 128 KB per level-2 node); leaf buffers (readBuffers, where the tree
+   * already owns every node) are not decoded twice. */
+  template <typename Mask>
+  void CheckNodeValues(std::istream& is, const Mask& valueMask, std::vector<float>& scratch,
+    uint32_t compression, bool half, const std::string& what)
+  {
+    const std::streamoff start = is.tellg();
+    this->SkipValues(is, Mask::SIZE, valueMask.countOn(), Mask::SIZE / 8, compression, half, what);
+    const std::streamoff end = is.tellg();
+    is.seekg(start);
+    scratch.resize(Mask::SIZE);
+    try
+    {
+      openvdb::io::readCompressedValues(is, scratch.data(), Mask::SIZE, valueMask, half);
+    }
+    catch (const std::exception& e)
+    {
+      OPENVDB_THROW(openvdb::IoError, "corrupt " << what << " (" << e.what() << ")");
+    }
+    this->Require(bool(is) && is.tellg() == end, what);
+  }
+
   /* Tree<RootNode<InternalNode<InternalNode<LeafNode<float,3>,4>,5>>>::readTopology then
    * readBuffers, as OpenVDB reads them (root children in key order; a leaf's buffer uses the
    * value mask of the topology, the stream being seekable). */
@@ -387,6 +427,7 @@ private:
       int64_t(tiles) * 17 + int64_t(children) * (12 + 8192) <= this->Remaining(is), what);
     this->Skip(is, int64_t(tiles) * 17, what);
     std::map<openvdb::Coord, std::vector<Node4>> roots;
+    std::vector<float> scratch;
     for (uint32_t c = 0; c < children; ++c)
     {
       int32_t origin[3];
@@ -395,7 +436,7 @@ private:
       openvdb::util::NodeMask<5> childMask, valueMask;
       this->Load(is, childMask, what);
       this->Load(is, valueMask, what);
-      this->SkipValues(is, 32768, valueMask.countOn(), 4096, compression, half, what);
+      this->CheckNodeValues(is, valueMask, scratch, compression, half, what);
       std::vector<Node4> nodes;
       for (auto it = childMask.beginOn(); it; ++it)
       {
@@ -403,7 +444,7 @@ private:
         openvdb::util::NodeMask<4> values4;
         this->Load(is, node.Children, what);
         this->Load(is, values4, what);
-        this->SkipValues(is, 4096, values4.countOn(), 512, compression, half, what);
+        this->CheckNodeValues(is, values4, scratch, compression, half, what);
         for (auto jt = node.Children.beginOn(); jt; ++jt)
         {
           openvdb::util::NodeMask<3> leafMask;

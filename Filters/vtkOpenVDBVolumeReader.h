@@ -62,8 +62,11 @@
  * its size). So before OpenVDB parses a file, the reader walks its structure and checks every
  * length, count and chunk size against the file (header, metadata, grid descriptors and grid
  * ends, transforms; and, before the voxels are read, the float tree's nodes and compressed
- * chunks), reporting the file as truncated or corrupt instead. Voxel values inside valid chunks
- * are not checkable and are read as they are.
+ * chunks, whose internal-node (tile) values it also decompresses: OpenVDB leaks the node it is
+ * reading when a chunk fails to decompress mid-tree), reporting the file as truncated or
+ * corrupt instead. Voxel values inside valid chunks are not checkable and are read as they are.
+ * Files without grid offsets (written by openvdb::io::Stream) and files older than format 222
+ * (OpenVDB 2.0) are refused: their trees cannot be checked.
  *
  * @code{.py}
  * import vissweep

@@ -5,10 +5,20 @@
 # build-fuzz/Testing/Fuzz/artifacts/. Usage: scripts/fuzz.sh [SECONDS] [TARGET...]
 #   TARGET: scene_file, environment_map, openvdb (default: all three).
 # The same runs are ctest tests labelled "fuzz" in build-fuzz (ctest -L fuzz).
+#
+# scripts/fuzz.sh --ctest: builds, then runs `ctest -L fuzz` in build-fuzz (what scripts/test.sh
+# does): each target over its seeds and regression inputs, then a short run of
+# VISSWEEP_FUZZ_SECONDS (a CMake cache variable, 20 s) each. Fails on any crash, sanitizer
+# report, leak, timeout or out-of-memory; ctest prints libFuzzer's output and the saved input.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${VISSWEEP_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 jobs="${VISSWEEP_JOBS:-$(nproc)}"
+ctest_mode=0
+if [ "${1:-}" = "--ctest" ]; then
+  ctest_mode=1
+  shift
+fi
 seconds="${1:-20}"
 shift || true
 targets=("$@")
@@ -21,6 +31,14 @@ if [ ! -f "$build/build.ninja" ]; then
 fi
 cmake --build "$build" -j "$jobs" --target vissweep_fuzz
 fuzz="$build/Testing/Fuzz"
+if [ $ctest_mode = 1 ]; then
+  status=0
+  (cd "$build" && ctest -L fuzz --output-on-failure) || status=$?
+  # Executions and speed of each short run (ctest shows libFuzzer's output only on failure).
+  awk '/^[0-9]+\/[0-9]+ Test: /{t=$3} /^stat::(number_of_executed_units|average_exec_per_sec):/{print t, $0}' \
+    "$build/Testing/Temporary/LastTest.log" 2>/dev/null || true
+  exit $status
+fi
 status=0
 for t in "${targets[@]}"; do
   case "$t" in

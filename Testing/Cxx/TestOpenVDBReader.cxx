@@ -663,6 +663,59 @@ TEST_F(OpenVDBReader, Errors)
       "stream");
   }
 
+  // Found by fuzzing: a Blosc chunk whose sizes are right but whose data does not decompress,
+  // in the tile values of a level-1 node of a grid without statistics (read in full while
+  // listing the grids). OpenVDB threw mid-tree ("Expected to decompress 4 bytes, got -1
+  // bytes") and leaked the level-2 node it was filling; the structure check now decodes the
+  // internal nodes' values itself, so the error comes from the check ("corrupt the tree").
+  {
+    openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(0.0f);
+    grid->setName("density");
+    grid->tree().addTile(1, openvdb::Coord(0, 0, 0), 2.0f, /*active=*/true); // one 8^3 tile
+    const std::string good = tmp.File("tile.vdb");
+    Write(good, { grid }, /*stats=*/false);
+    std::vector<char> data;
+    {
+      std::ifstream in(good, std::ios::binary);
+      data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    // The level-1 node's one active value: a Blosc header (version 2, then 1, flags, type
+    // size 4) for 4 uncompressed bytes, stored as a copy (flag 0x02, BLOSC_MEMCPYED).
+    std::size_t at = std::string::npos;
+    for (std::size_t i = 0; i + 8 <= data.size(); ++i)
+    {
+      if (data[i] == 2 && data[i + 1] == 1 && data[i + 3] == 4 && data[i + 4] == 4 &&
+        data[i + 5] == 0 && data[i + 6] == 0 && data[i + 7] == 0 && (data[i + 2] & 0x02))
+      {
+        ASSERT_EQ(at, std::string::npos) << "two candidate chunks";
+        at = i;
+      }
+    }
+    ASSERT_NE(at, std::string::npos) << "no 4-byte Blosc chunk in " << good;
+    EXPECT_TRUE(RunFile(reader, good)->Errors.empty());
+    EXPECT_EQ(reader->GetGridActiveVoxelCount(0), 512);
+    data[at + 2] = char(data[at + 2] & ~0x02); // now "compressed": 4 bytes that are not LZ4
+    const std::string bad = tmp.File("tile_bad_blosc.vdb");
+    std::ofstream(bad, std::ios::binary).write(data.data(), std::streamsize(data.size()));
+    ExpectErrorContaining(reader, bad,
+      { "tile_bad_blosc.vdb", "corrupt the tree of grid \"density\"", "decompress" },
+      "a Blosc chunk that does not decompress");
+  }
+
+  // A file format older than 222 (OpenVDB 2.0) has a tree layout the structure check does not
+  // walk; it went to OpenVDB unchecked (a hand-made version-221 file leaked a node) and is
+  // now refused. The format version is the 32-bit word after the 8-byte magic number.
+  {
+    const std::string path = tmp.File("format221.vdb");
+    Write(path, { SmallGrid(ScaleTranslate(1, 1, 1, 0, 0, 0)) });
+    std::fstream io(path, std::ios::binary | std::ios::in | std::ios::out);
+    io.seekp(8);
+    const uint32_t version = 221;
+    io.write(reinterpret_cast<const char*>(&version), 4);
+    io.close();
+    ExpectErrorContaining(reader, path, { "format221.vdb", "file format version 221" }, "format 221");
+  }
+
   // A rotated transform.
   {
     openvdb::math::Transform::Ptr xform = openvdb::math::Transform::createLinearTransform(0.5);
