@@ -69,7 +69,7 @@ void VisibilityGridToImage(const VisibilityGrid& grid, const VolumeGeometry& phy
   dirs->SetNumberOfTuples(dd);
   for (uint32_t d = 0; d < dd; ++d)
   {
-    glm::vec3 w = SweepPlan::Direction(d, side);
+    glm::vec3 w = SweepPlan::Direction(d, grid.Parameters()); // the direction each texel was swept along
     dirs->SetTuple3(d, w.x, w.y, w.z);
   }
   out->GetFieldData()->AddArray(dirs);

@@ -206,4 +206,22 @@ std::vector<double> MonteCarloPass::Variance() const
   }
   return var;
 }
+
+double MonteCarloPass::SquareSum() const
+{
+  if (!this->Sum_ || this->Samples_ == 0)
+  {
+    return 0.0;
+  }
+  const uint64_t n = uint64_t(this->Width_) * this->Height_ * 4;
+  std::vector<float> sq(n);
+  this->Squares_->Download(sq.data(), n * 4);
+  double sum = 0.0;
+  for (uint64_t i = 0; i < n; ++i)
+  {
+    sum += i % 4 < 3 ? double(sq[i]) : 0.0;
+  }
+  const double s = this->SquareScale_;
+  return sum / (3.0 * s * s);
+}
 }

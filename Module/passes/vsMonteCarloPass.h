@@ -45,6 +45,10 @@ public:
   /** Per pixel variance of one sample of (rgb, alpha) (for standard errors: variance / samples). */
   std::vector<double> Variance() const; // double: radiance² leaves float's range below ~1e-19
 
+  /** The sum over pixels of the accumulated squares of radiance (mean of r, g, b), in radiance²:
+   *  what Auto's strategy selector differences between frames (vsStrategySelector.h). */
+  double SquareSum() const;
+
   uint32_t Samples() const { return this->Samples_; }
   uint32_t Width() const { return this->Width_; }
   uint32_t Height() const { return this->Height_; }

@@ -15,6 +15,22 @@ void VisibilityGridParameters::Validate() const
   {
     throw InputError("DirectionResolution must be a power of two (4, 8 or 16), got " + std::to_string(d));
   }
+  if (!this->Directions.empty())
+  {
+    if (this->Directions.size() != size_t(d) * d)
+    {
+      throw InputError("Directions must hold one direction per texel (" + std::to_string(d * d) + "), got " +
+        std::to_string(this->Directions.size()));
+    }
+    for (const glm::vec3& w : this->Directions)
+    {
+      const float l = glm::length(w);
+      if (!std::isfinite(l) || std::abs(l - 1.0f) > 1e-3f)
+      {
+        throw InputError("Directions must be unit vectors");
+      }
+    }
+  }
   if (!(this->VoxelsPerCell >= 1.0) || !std::isfinite(this->VoxelsPerCell))
   {
     throw InputError("VoxelsPerCell must be at least 1, got " + std::to_string(this->VoxelsPerCell));
@@ -70,6 +86,11 @@ glm::vec3 SweepPlan::Direction(uint32_t n, uint32_t side)
   return shared::vs_texel_dir(glm::uvec2(n % side, n / side), side);
 }
 
+glm::vec3 SweepPlan::Direction(uint32_t n, const VisibilityGridParameters& p)
+{
+  return n < p.Directions.size() ? p.Directions[n] : Direction(n, p.DirectionResolution);
+}
+
 SweepPlan SweepPlan::Make(const VolumeGeometry& g, const VisibilityGridParameters& p,
   uint64_t maxBatchFloats, const std::vector<uint32_t>& requested, uint32_t maxBatchDirections, uint32_t maxImageSide)
 {
@@ -110,7 +131,7 @@ SweepPlan SweepPlan::Make(const VolumeGeometry& g, const VisibilityGridParameter
       throw InputError("direction index " + std::to_string(n) + " out of range");
     }
     shared::VsSweepDirection& s = plan.Directions[n];
-    const glm::dvec3 w(Direction(n, plan.Side));
+    const glm::dvec3 w(Direction(n, p));
     const glm::dvec3 d = toIndex * (-w); // light travel, index units per world unit
     // Eq. 6: the axis the light crosses cell slices fastest along; ties go to the lower axis.
     int k = 0;

@@ -60,6 +60,11 @@ struct VISSWEEPCORE_EXPORT VisibilityGridParameters
   Format StorageFormat = Format::Unorm8;
   /** Kernel rays stop marching below this transmittance (below the 8-bit resolution). */
   float StopTransmittance = 1e-6f;
+  /** The world light direction swept for each of the D x D directions (row-major); empty = the
+   *  texel centres (SweepPlan::Direction). The renderer sweeps each texel towards where its light
+   *  comes from (the environment's radiance-weighted mean direction inside the texel), so that a
+   *  sun off the texel's centre is swept along its own direction. */
+  std::vector<glm::vec3> Directions;
 
   /** Throws InputError naming the parameter when one is out of range. */
   void Validate() const;
@@ -85,6 +90,8 @@ struct VISSWEEPCORE_EXPORT SweepPlan
     const VolumeGeometry& g, double voxelsPerCell, uint32_t side = 1, uint32_t maxImageSide = 0);
   /** World light direction of direction index n (the centre of texel (n % D, n / D)). */
   static glm::vec3 Direction(uint32_t n, uint32_t side);
+  /** The direction swept for index n: p.Directions[n] when given, else the texel centre. */
+  static glm::vec3 Direction(uint32_t n, const VisibilityGridParameters& p);
 
   /** Plans the sweeps of `directions` (all when empty); maxBatchFloats bounds a batch's kernel. */
   static SweepPlan Make(const VolumeGeometry& g, const VisibilityGridParameters& p,

@@ -40,7 +40,8 @@ bool SameLayout(const VisibilityGridParameters& a, const VisibilityGridParameter
     a.KernelResolution == b.KernelResolution && a.StepSize == b.StepSize && a.Filtering == b.Filtering &&
     a.FilterAngleFraction == b.FilterAngleFraction && a.Algorithm == b.Algorithm &&
     a.BruteForceSamples == b.BruteForceSamples && a.StorageFormat == b.StorageFormat &&
-    a.StopTransmittance == b.StopTransmittance && a.AutoKernelRaysPerCell == b.AutoKernelRaysPerCell;
+    a.StopTransmittance == b.StopTransmittance && a.AutoKernelRaysPerCell == b.AutoKernelRaysPerCell &&
+    a.Directions == b.Directions;
 }
 
 bool SameGeometry(const VolumeGeometry& a, const VolumeGeometry& b)
@@ -95,7 +96,8 @@ void VisibilityGrid::CheckFits(Context& context, const VolumeGeometry& geometry,
   }
 }
 
-bool VisibilityGrid::Allocate(const VolumeGeometry& geometry, const VisibilityGridParameters& parameters, bool clear)
+bool VisibilityGrid::Allocate(
+  const VolumeGeometry& geometry, const VisibilityGridParameters& parameters, bool clear, float clearValue)
 {
   parameters.Validate();
   if (this->Image_ && SameLayout(parameters, this->Parameters_) && SameGeometry(geometry, this->Geometry_))
@@ -115,9 +117,18 @@ bool VisibilityGrid::Allocate(const VolumeGeometry& geometry, const VisibilityGr
   this->Geometry_ = geometry;
   if (clear)
   {
-    this->Image_->Clear(0.0f);
+    this->Image_->Clear(clearValue);
   }
   return true;
+}
+
+void VisibilityGrid::Clear(float value)
+{
+  if (!this->Image_)
+  {
+    throw InputError("the visibility grid has no image to clear");
+  }
+  this->Image_->Clear(std::clamp(value, 0.0f, 1.0f));
 }
 
 void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionTable& tf,

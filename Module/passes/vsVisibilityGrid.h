@@ -47,9 +47,13 @@ public:
     const Progress& progress = Progress());
 
   /** Makes the image for this geometry and these parameters unless the grid already has them;
-   *  a new image reads 0 everywhere when `clear`. Returns whether it made one. No sweeps: for a
-   *  renderer that needs none of the directions (no environment light anywhere). */
-  bool Allocate(const VolumeGeometry& geometry, const VisibilityGridParameters& parameters, bool clear = true);
+   *  a new image reads `clearValue` everywhere when `clear`. Returns whether it made one. No
+   *  sweeps: for a renderer that needs none of the directions yet (no environment light anywhere,
+   *  or a progressive fill-in that starts at visibility 1). */
+  bool Allocate(const VolumeGeometry& geometry, const VisibilityGridParameters& parameters, bool clear = true,
+    float clearValue = 0.0f);
+  /** Sets every entry of an allocated grid to `value` (in [0, 1]). */
+  void Clear(float value);
 
   /** Throws DeviceLimitError when the grid for this geometry and these parameters cannot exist. */
   static void CheckFits(Context& context, const VolumeGeometry& geometry, const VisibilityGridParameters& p);

@@ -1,0 +1,116 @@
+#include "vsStrategySelector.h"
+
+#include <algorithm>
+
+namespace vs
+{
+void StrategySelector::Reset()
+{
+  for (Stats& s : this->Stats_)
+  {
+    const double v = s.Variance, t = s.SecondsPerSample;
+    s = Stats();
+    // The estimates describe the scene, not the accumulation: keep them as a prior.
+    s.Variance = v;
+    s.SecondsPerSample = t;
+  }
+  this->Frame_ = 0;
+  this->EpochFrame_ = 0;
+  this->MeanSquare_ = 0.0;
+}
+
+void StrategySelector::ResetGrid()
+{
+  this->Reset();
+  for (Stats& s : this->Stats_)
+  {
+    s.Variance = 0.0;
+    s.SecondsPerSample = 0.0;
+  }
+  this->Preferred_ = EnvironmentEstimator;
+  this->GridWorth_ = true;
+  this->GridVerdict_ = false;
+  this->Decisions_ = 0;
+}
+
+double StrategySelector::GridEfficiencyRatio() const
+{
+  const Stats& e = this->Stats_[EnvironmentEstimator];
+  const Stats& g = this->Stats_[GridEstimator];
+  if (e.Variance <= 0.0 || g.Variance <= 0.0 || e.SecondsPerSample <= 0.0 || g.SecondsPerSample <= 0.0)
+  {
+    return 0.0;
+  }
+  return (e.Variance * e.SecondsPerSample) / (g.Variance * g.SecondsPerSample);
+}
+
+StrategySelector::Estimator StrategySelector::Choose(bool gridReady)
+{
+  if (!gridReady)
+  {
+    return EnvironmentEstimator;
+  }
+  if (this->Decisions_ == 0 || this->Stats_[GridEstimator].Variance <= 0.0)
+  {
+    // Not compared yet: alternate, the grid first.
+    return this->EpochFrame_ % 2 == 0 ? GridEstimator : EnvironmentEstimator;
+  }
+  const Estimator other = this->Preferred_ == GridEstimator ? EnvironmentEstimator : GridEstimator;
+  return this->Frame_ % ExplorationInterval == ExplorationInterval - 1 ? other : this->Preferred_;
+}
+
+void StrategySelector::Record(Estimator estimator, uint32_t spp, double deviceSeconds, uint64_t pixels,
+  double totalSamples, double sumOfSquares, double meanSquare)
+{
+  Stats& s = this->Stats_[estimator];
+  s.Samples = totalSamples;
+  s.SumOfSquares = sumOfSquares;
+  s.EpochSeconds += deviceSeconds;
+  s.EpochPixelSamples += double(spp) * double(pixels);
+  this->Pixels_ = pixels;
+  this->MeanSquare_ = meanSquare;
+  ++this->Frame_;
+  if (++this->EpochFrame_ >= EpochFrames)
+  {
+    this->EndEpoch(meanSquare);
+  }
+}
+
+void StrategySelector::EndEpoch(double meanSquare)
+{
+  bool measured[2] = { false, false };
+  for (int e = 0; e < 2; ++e)
+  {
+    Stats& s = this->Stats_[e];
+    const double added = s.Samples - s.EpochSamples0;
+    if (added > 0.0 && this->Pixels_ > 0 && s.EpochPixelSamples > 0.0)
+    {
+      const double secondMoment = (s.SumOfSquares - s.EpochSquares0) / (double(this->Pixels_) * added);
+      // Both estimate the same image: its mean square is shared. Clamped: variance >= 0.
+      const double v = std::max(secondMoment - meanSquare, 1e-30 * std::max(secondMoment, 1e-30));
+      const double t = s.EpochSeconds / s.EpochPixelSamples;
+      // The grid estimator improves while the grid fills in: the newest epoch counts most.
+      s.Variance = s.Variance > 0.0 ? 0.25 * s.Variance + 0.75 * v : v;
+      s.SecondsPerSample = s.SecondsPerSample > 0.0 ? 0.25 * s.SecondsPerSample + 0.75 * t : t;
+      measured[e] = true;
+    }
+    s.EpochSamples0 = s.Samples;
+    s.EpochSquares0 = s.SumOfSquares;
+    s.EpochSeconds = 0.0;
+    s.EpochPixelSamples = 0.0;
+  }
+  this->EpochFrame_ = 0;
+  const double ratio = this->GridEfficiencyRatio();
+  if (ratio > 0.0 && (measured[0] || measured[1]))
+  {
+    this->Preferred_ = ratio > 1.0 ? GridEstimator : EnvironmentEstimator;
+    ++this->Decisions_;
+    if (!this->GridVerdict_ && measured[GridEstimator])
+    {
+      this->GridWorth_ =
+        this->Stats_[GridEstimator].Variance < this->Stats_[EnvironmentEstimator].Variance;
+      this->GridVerdict_ = true;
+    }
+  }
+}
+}

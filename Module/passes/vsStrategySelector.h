@@ -1,0 +1,87 @@
+// vsStrategySelector.h — the Auto strategy's choice, frame by frame, between two unbiased
+// estimators of the same image: Environment sampling and TwoStep over the visibility grid.
+//
+// Each estimator accumulates into its own buffers; the image is the mean of all samples of both.
+// After every frame the renderer reports the frame's samples, its device time and the sums of
+// squares of the estimator's accumulator; per epoch of frames the selector estimates each
+// estimator's per-sample variance over the epoch's samples,
+//     v = (sum of squares added) / (pixels x samples added) - mean over pixels of m^2,
+// where m is the current mean image (the same for both: they estimate the same image), and picks
+// the one with the larger efficiency 1 / (v x device seconds per sample). The other still gets
+// one frame in ExplorationInterval, so its estimate stays current.
+//
+// Unbiasedness: a choice depends only on samples drawn before it, so each sample is unbiased
+// given the past (a martingale difference), and the mean over a number of samples that does not
+// depend on their values (a fixed spp, or a time budget) is unbiased.
+// Host-only, no device.
+#ifndef vsStrategySelector_h
+#define vsStrategySelector_h
+
+#include "vissweepCoreModule.h"
+
+#include <cstdint>
+
+namespace vs
+{
+class VISSWEEPCORE_EXPORT StrategySelector
+{
+public:
+  enum Estimator
+  {
+    EnvironmentEstimator = 0,
+    GridEstimator = 1
+  };
+
+  /** Accumulation restarted: forget everything but the grid verdict of this grid generation. */
+  void Reset();
+  /** A new visibility grid (full invalidation): the grid's worth is unknown again. */
+  void ResetGrid();
+
+  /** The estimator for the next frame. gridReady: the grid holds enough swept directions for
+   *  TwoStep to be worth measuring. */
+  Estimator Choose(bool gridReady);
+
+  /** After a frame of `estimator`: its samples per pixel, device seconds, and the accumulator's
+   *  totals: samples so far and the sum over pixels of the sum of squares (rgb mean) so far;
+   *  meanSquare: the mean over pixels of the squared mean image (rgb mean) now; pixels: count. */
+  void Record(Estimator estimator, uint32_t spp, double deviceSeconds, uint64_t pixels, double totalSamples,
+    double sumOfSquares, double meanSquare);
+
+  /** Whether sweeping more directions is worth it: false once TwoStep, measured with at least
+   *  half of the light's directions swept, showed no lower variance per sample than Environment. */
+  bool GridWorthSweeping() const { return this->GridWorth_; }
+
+  /** Measured per-sample variance and device seconds per sample of an estimator (0 = unknown). */
+  double Variance(Estimator e) const { return this->Stats_[e].Variance; }
+  double SecondsPerSample(Estimator e) const { return this->Stats_[e].SecondsPerSample; }
+  /** Efficiency of TwoStep over Environment, 1/(v t) ratio; 0 while unknown. */
+  double GridEfficiencyRatio() const;
+  Estimator Preferred() const { return this->Preferred_; }
+  uint32_t Decisions() const { return this->Decisions_; }
+
+  /** Frames per epoch, and one frame in ExplorationInterval for the estimator that lost. */
+  static constexpr uint32_t EpochFrames = 8;
+  static constexpr uint32_t ExplorationInterval = 16;
+
+private:
+  struct Stats
+  {
+    double Samples = 0.0, SumOfSquares = 0.0;           // accumulator totals at the last record
+    double EpochSamples0 = 0.0, EpochSquares0 = 0.0;    // at the start of the epoch
+    double EpochSeconds = 0.0, EpochPixelSamples = 0.0; // device time and pixel-samples this epoch
+    double Variance = 0.0, SecondsPerSample = 0.0;      // estimates (0 = unknown)
+  };
+  void EndEpoch(double meanSquare);
+
+  Stats Stats_[2];
+  Estimator Preferred_ = EnvironmentEstimator;
+  bool Comparing_ = false;    // both estimators measured in this epoch (the first epochs alternate)
+  bool GridWorth_ = true;
+  bool GridVerdict_ = false;  // GridWorth_ was decided for this grid
+  uint32_t Frame_ = 0, EpochFrame_ = 0, Decisions_ = 0;
+  uint64_t Pixels_ = 0;
+  double MeanSquare_ = 0.0;
+};
+}
+
+#endif

@@ -1,0 +1,223 @@
+#include "vsVisibilityGridUpdater.h"
+
+#include "vsContext.h"
+#include "vsError.h"
+#include "vsImage.h"
+#include "shared/update_order.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace vs
+{
+VisibilityGridUpdater::VisibilityGridUpdater(std::shared_ptr<Context> context)
+  : Context_(std::move(context))
+{
+}
+
+VisibilityGridUpdater::~VisibilityGridUpdater() = default;
+
+void VisibilityGridUpdater::Invalidate()
+{
+  this->Signature_.clear();
+  this->Swept_.clear();
+}
+
+uint32_t VisibilityGridUpdater::PendingDirections() const
+{
+  uint32_t pending = 0;
+  for (size_t n = 0; n < this->Swept_.size(); ++n)
+  {
+    pending += !this->Swept_[n] && (this->Required_.empty() || this->Required_[n]);
+  }
+  return pending;
+}
+
+uint32_t VisibilityGridUpdater::SweptDirections() const
+{
+  return uint32_t(std::count(this->Swept_.begin(), this->Swept_.end(), uint8_t(1)));
+}
+
+double VisibilityGridUpdater::SweptImportance() const
+{
+  double swept = 0.0, total = 0.0;
+  for (size_t n = 0; n < this->Swept_.size(); ++n)
+  {
+    if (!this->Required_.empty() && !this->Required_[n])
+    {
+      continue;
+    }
+    const double w = n < this->Importance_.size() ? double(this->Importance_[n]) : 1.0;
+    total += w;
+    swept += this->Swept_[n] ? w : 0.0;
+  }
+  return total > 0.0 ? swept / total : (this->Grid() ? 1.0 : 0.0);
+}
+
+std::vector<uint32_t> VisibilityGridUpdater::FillOrder(
+  uint32_t side, const std::vector<uint32_t>& candidates, const std::vector<float>& importance)
+{
+  // Rank of each direction in the bit-reversed Morton order: the tie-break.
+  const uint32_t count = side * side;
+  std::vector<uint32_t> rank(count, 0);
+  for (uint32_t k = 0; k < count; ++k)
+  {
+    rank[shared::vs_round_robin_direction(k, side)] = k;
+  }
+  std::vector<uint32_t> order = candidates;
+  auto weight = [&](uint32_t n) { return n < importance.size() ? importance[n] : 0.0f; };
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+    if (weight(a) != weight(b))
+    {
+      return weight(a) > weight(b);
+    }
+    return rank[a] < rank[b];
+  });
+  return order;
+}
+
+std::vector<double> VisibilityGridUpdater::Signature(const GridUpdateRequest& r)
+{
+  const VisibilityGridParameters& gp = r.Parameters;
+  std::vector<double> s = { double(gp.DirectionResolution), gp.VoxelsPerCell, double(gp.KernelResolution),
+    double(gp.Filtering), gp.FilterAngleFraction, gp.AutoKernelRaysPerCell, gp.StepSize, double(gp.Algorithm),
+    double(gp.StorageFormat), double(gp.BruteForceSamples), double(gp.StopTransmittance) };
+  for (const glm::vec3& w : gp.Directions)
+  {
+    s.insert(s.end(), { w.x, w.y, w.z });
+  }
+  for (const auto& pl : r.WorldPlanes)
+  {
+    s.insert(s.end(), { pl.x, pl.y, pl.z, pl.w });
+  }
+  for (int c = 0; c < 4; ++c)
+    for (int row = 0; row < 4; ++row)
+      s.push_back(r.Geometry.WorldToIndex[c][row]);
+  for (int i = 0; i < 3; ++i)
+  {
+    s.insert(s.end(), { r.Geometry.BoxMin[i], r.Geometry.BoxMax[i], double(r.Geometry.Dims[i]) });
+  }
+  return s;
+}
+
+GridUpdateResult VisibilityGridUpdater::Sweep(const DeviceVolume& volume, const TransferFunctionTable& tf,
+  const MajorantGrid& majorants, const GridUpdateRequest& request, std::vector<uint32_t> directions,
+  const VisibilityGrid::Progress& progress)
+{
+  GridUpdateResult result;
+  if (directions.empty())
+  {
+    return result;
+  }
+  std::sort(directions.begin(), directions.end());
+  const uint64_t before = this->Grid_->DirectionsComputed();
+  this->Grid_->Compute(volume, tf, majorants, request.Geometry, request.WorldPlanes, request.Parameters,
+    directions.size() == this->Swept_.size() ? std::vector<uint32_t>() : directions, progress);
+  result.DirectionsSwept = uint32_t(this->Grid_->DirectionsComputed() - before);
+  result.Seconds = this->Grid_->LastSeconds();
+  for (uint32_t n : directions)
+  {
+    this->Swept_[n] = 1;
+  }
+  if (result.DirectionsSwept > 0)
+  {
+    // A running estimate of one direction's cost, for the progressive budget.
+    const double perDirection = result.Seconds / double(result.DirectionsSwept);
+    this->SecondsPerDirection_ =
+      this->SecondsPerDirection_ > 0.0 ? 0.5 * (this->SecondsPerDirection_ + perDirection) : perDirection;
+  }
+  return result;
+}
+
+GridUpdateResult VisibilityGridUpdater::Update(const DeviceVolume& volume, const TransferFunctionTable& tf,
+  const MajorantGrid& majorants, const GridUpdateRequest& request, const VisibilityGrid::Progress& progress)
+{
+  const VisibilityGridParameters& gp = request.Parameters;
+  gp.Validate();
+  const uint32_t side = gp.DirectionResolution;
+  const uint32_t count = side * side;
+  if (!request.Required.empty() && request.Required.size() != count)
+  {
+    throw InputError("the visibility grid needs " + std::to_string(count) + " required-direction flags, got " +
+      std::to_string(request.Required.size()));
+  }
+  if (!this->Grid_)
+  {
+    this->Grid_ = std::make_unique<VisibilityGrid>(this->Context_);
+  }
+  GridUpdateResult result;
+  std::vector<uint32_t> lazy;
+  const std::vector<double> signature = Signature(request);
+  if (!this->Grid_->Valid() || request.FullUpdate || signature != this->Signature_ || this->Swept_.size() != count)
+  {
+    // A full invalidation: a new grid at visibility 1 (the product pdf is then environment
+    // sampling), every needed direction pending.
+    VisibilityGrid::CheckFits(*this->Context_, request.Geometry, gp);
+    if (!this->Grid_->Allocate(request.Geometry, gp, true, 1.0f))
+    {
+      this->Grid_->Clear(1.0f);
+    }
+    this->Swept_.assign(count, 0);
+    this->Signature_ = signature;
+    this->Scheduler_.OnFullUpdate();
+    ++this->Generation_;
+    result.NewGrid = true;
+  }
+  else if (request.DataVersion != this->DataVersion_)
+  {
+    lazy = this->Scheduler_.OnDataChange(request.Schedule, side, request.Importance, request.Required);
+  }
+  this->DataVersion_ = request.DataVersion;
+  this->Required_ = request.Required;
+  this->Importance_ = request.Importance;
+
+  // Needed but not swept since the last full update, brightest first.
+  std::vector<uint32_t> pending;
+  for (uint32_t n = 0; n < count; ++n)
+  {
+    if ((request.Required.empty() || request.Required[n]) && !this->Swept_[n] &&
+      std::find(lazy.begin(), lazy.end(), n) == lazy.end())
+    {
+      pending.push_back(n);
+    }
+  }
+  pending = FillOrder(side, pending, request.Importance);
+
+  std::vector<uint32_t> now = lazy;
+  if (request.FillIn && !request.Progressive)
+  {
+    now.insert(now.end(), pending.begin(), pending.end());
+  }
+  else if (request.FillIn && !pending.empty() && !result.NewGrid)
+  {
+    // Progressive (the call that makes a new grid sweeps nothing, so its frame does not wait):
+    // within the budget by the running estimate, and at least one direction per call so the grid
+    // always fills in.
+    const double per = this->SecondsPerDirection_;
+    size_t n = per > 0.0 ? size_t(std::max(0.0, request.BudgetSeconds) / per) : 1;
+    n = std::clamp<size_t>(n, 1, pending.size());
+    now.insert(now.end(), pending.begin(), pending.begin() + std::ptrdiff_t(n));
+  }
+  GridUpdateResult swept = this->Sweep(volume, tf, majorants, request, now, progress);
+  swept.NewGrid = result.NewGrid;
+  return swept;
+}
+
+GridUpdateResult VisibilityGridUpdater::Complete(const DeviceVolume& volume, const TransferFunctionTable& tf,
+  const MajorantGrid& majorants, const GridUpdateRequest& request, const VisibilityGrid::Progress& progress)
+{
+  if (!this->Grid())
+  {
+    throw InputError("the visibility grid is not computed yet");
+  }
+  std::vector<uint32_t> missing;
+  for (uint32_t n = 0; n < this->Swept_.size(); ++n)
+  {
+    if (!this->Swept_[n])
+    {
+      missing.push_back(n);
+    }
+  }
+  return this->Sweep(volume, tf, majorants, request, missing, progress);
+}
+}

@@ -1,0 +1,213 @@
+// The visibility grid's update policy (vsVisibilityGridUpdater) and the Auto strategy's choice
+// (vsStrategySelector):
+//  - a new grid reads visibility 1 everywhere until swept; the first progressive update sweeps
+//    nothing, later ones sweep the brightest directions first within the budget (at least one);
+//    once complete, the grid equals a grid swept all at once;
+//  - the fill-in order is by importance, ties in the bit-reversed Morton order;
+//  - the selector prefers the estimator with the lower variance x time and says whether the grid
+//    pays per sample.
+#include "vsVisibilityTestScene.h"
+
+#include "vsStrategySelector.h"
+#include "vsVisibilityGridUpdater.h"
+
+#include "shared/update_order.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+using vs::GridUpdateRequest;
+using vs::StrategySelector;
+using vs::VisibilityGridUpdater;
+using vstest::VisibilityScene;
+
+namespace
+{
+// A 16^3 box with an opaque slab: visibility well below 1 in many directions.
+VisibilityScene Slab()
+{
+  return VisibilityScene({ 16, 16, 16 }, [](int x, int, int) { return x >= 6 && x < 10 ? 1.0f : 0.1f; }, 0.8);
+}
+
+GridUpdateRequest Request(const VisibilityScene& s, const std::vector<float>& importance)
+{
+  GridUpdateRequest r;
+  r.Parameters.DirectionResolution = 4;
+  r.Geometry = s.Geometry;
+  r.Importance = importance;
+  r.Progressive = true;
+  r.BudgetSeconds = 0.0; // one direction per update
+  return r;
+}
+}
+
+TEST(VisibilityGridUpdater, FillOrderIsByImportanceThenMorton)
+{
+  const uint32_t side = 4;
+  std::vector<float> importance(16, 1.0f);
+  importance[5] = 9.0f;
+  importance[12] = 3.0f;
+  importance[0] = 0.0f;
+  std::vector<uint32_t> all(16);
+  for (uint32_t n = 0; n < 16; ++n)
+    all[n] = n;
+  const auto order = VisibilityGridUpdater::FillOrder(side, all, importance);
+  ASSERT_EQ(order.size(), 16u);
+  EXPECT_EQ(order[0], 5u);
+  EXPECT_EQ(order[1], 12u);
+  EXPECT_EQ(order.back(), 0u);
+  // Among equal weights, the round-robin order (most significant bits change first).
+  std::vector<uint32_t> ties(order.begin() + 2, order.end() - 1);
+  std::vector<uint32_t> morton;
+  for (uint32_t k = 0; k < 16; ++k)
+  {
+    const uint32_t n = vs::shared::vs_round_robin_direction(k, side);
+    if (n != 5 && n != 12 && n != 0)
+      morton.push_back(n);
+  }
+  EXPECT_EQ(ties, morton);
+}
+
+TEST(VisibilityGridUpdater, ProgressiveFillInStartsVisibleAndEndsEqualToAFullSweep)
+{
+  VisibilityScene s = Slab();
+  std::vector<float> importance(16, 1.0f);
+  importance[7] = 50.0f; // the "sun"
+  VisibilityGridUpdater updater(s.Context);
+  GridUpdateRequest r = Request(s, importance);
+
+  // First update: a new grid, nothing swept, every entry visibility 1.
+  auto first = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
+  EXPECT_TRUE(first.NewGrid);
+  EXPECT_EQ(first.DirectionsSwept, 0u);
+  ASSERT_NE(updater.Grid(), nullptr);
+  EXPECT_EQ(updater.PendingDirections(), 16u);
+  EXPECT_DOUBLE_EQ(updater.SweptImportance(), 0.0);
+  for (float v : updater.Grid()->Download())
+    ASSERT_EQ(v, 1.0f);
+
+  // Second: the brightest direction, alone (budget 0 = one direction).
+  auto second = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
+  EXPECT_FALSE(second.NewGrid);
+  EXPECT_EQ(second.DirectionsSwept, 1u);
+  EXPECT_EQ(updater.PendingDirections(), 15u);
+  EXPECT_NEAR(updater.SweptImportance(), 50.0 / 65.0, 1e-9);
+  {
+    const auto g = updater.Grid()->Download();
+    float minSun = 1.0f, minOther = 1.0f;
+    for (size_t i = 0; i < g.size(); ++i)
+      (i % 16 == 7 ? minSun : minOther) = std::min(i % 16 == 7 ? minSun : minOther, g[i]);
+    EXPECT_LT(minSun, 0.5f) << "the swept direction sees the slab";
+    EXPECT_EQ(minOther, 1.0f) << "unswept directions stay fully visible";
+  }
+
+  // A large budget sweeps many at once; then it completes.
+  r.BudgetSeconds = 1e6;
+  auto third = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
+  EXPECT_EQ(third.DirectionsSwept, 15u);
+  EXPECT_TRUE(updater.IsComplete());
+  auto idle = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
+  EXPECT_EQ(idle.DirectionsSwept, 0u) << "nothing changed, nothing swept";
+
+  vs::VisibilityGrid full(s.Context);
+  const auto reference = s.Grid(full, r.Parameters);
+  EXPECT_EQ(updater.Grid()->Download(), reference) << "filled in progressively = swept at once";
+}
+
+TEST(VisibilityGridUpdater, NonProgressiveSweepsEverythingAndChangesInvalidate)
+{
+  VisibilityScene s = Slab();
+  VisibilityGridUpdater updater(s.Context);
+  GridUpdateRequest r = Request(s, std::vector<float>(16, 1.0f));
+  r.Progressive = false;
+  auto first = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
+  EXPECT_EQ(first.DirectionsSwept, 16u);
+  const uint64_t generation = updater.Generation();
+  // A data-only change: the lazy scheme's k directions.
+  r.DataVersion = 1;
+  r.Schedule.Scheme = vs::UpdateScheme::RoundRobin;
+  r.Schedule.DirectionsPerFrame = 4;
+  EXPECT_EQ(updater.Update(*s.Volume, *s.TF, *s.Majorants, r).DirectionsSwept, 4u);
+  EXPECT_EQ(updater.Generation(), generation) << "lazy updates keep the grid's generation";
+  // A full change (opacity): a new generation, everything again.
+  r.FullUpdate = true;
+  auto full = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
+  EXPECT_TRUE(full.NewGrid);
+  EXPECT_EQ(full.DirectionsSwept, 16u);
+  EXPECT_EQ(updater.Generation(), generation + 1);
+  // Required directions only; FillIn off sweeps none of the pending ones.
+  r.FullUpdate = true;
+  r.Progressive = true;
+  r.FillIn = false;
+  r.Required.assign(16, 0);
+  r.Required[3] = r.Required[9] = 1;
+  updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
+  r.FullUpdate = false;
+  EXPECT_EQ(updater.Update(*s.Volume, *s.TF, *s.Majorants, r).DirectionsSwept, 0u);
+  EXPECT_EQ(updater.PendingDirections(), 2u);
+  r.FillIn = true;
+  r.BudgetSeconds = 1e6;
+  EXPECT_EQ(updater.Update(*s.Volume, *s.TF, *s.Majorants, r).DirectionsSwept, 2u);
+  EXPECT_TRUE(updater.IsComplete());
+  EXPECT_EQ(updater.SweptDirections(), 2u);
+  // Complete() sweeps the directions the renderer did not need.
+  EXPECT_EQ(updater.Complete(*s.Volume, *s.TF, *s.Majorants, r).DirectionsSwept, 14u);
+}
+
+namespace
+{
+// Feeds the selector frames of two synthetic estimators with per-sample variances ve, vg and
+// device seconds per sample te, tg, on a constant image of mean square m2; returns how many of
+// the last 64 frames used the grid.
+int GridFramesOfLast64(StrategySelector& s, double ve, double vg, double te, double tg, bool ready = true)
+{
+  const double m2 = 0.25, pixels = 100;
+  double n[2] = { 0, 0 }, sq[2] = { 0, 0 };
+  int grid = 0;
+  for (int frame = 0; frame < 256; ++frame)
+  {
+    const auto e = s.Choose(ready);
+    const double v = e == StrategySelector::GridEstimator ? vg : ve;
+    const double t = e == StrategySelector::GridEstimator ? tg : te;
+    n[e] += 1;
+    sq[e] += pixels * (v + m2); // one sample per pixel: E[x^2] = v + m^2
+    s.Record(e, 1, t * pixels, uint64_t(pixels), n[e], sq[e], m2);
+    grid += frame >= 192 && e == StrategySelector::GridEstimator;
+  }
+  return grid;
+}
+}
+
+TEST(StrategySelector, PrefersTheMoreEfficientEstimatorAndKeepsExploring)
+{
+  {
+    StrategySelector s;
+    const int grid = GridFramesOfLast64(s, 1.0, 0.3, 1.0, 1.2); // grid: 0.36 vs 1.0
+    EXPECT_EQ(s.Preferred(), StrategySelector::GridEstimator);
+    EXPECT_GE(grid, 64 - 64 / int(StrategySelector::ExplorationInterval));
+    EXPECT_LT(grid, 64) << "the loser still gets exploration frames";
+    EXPECT_NEAR(s.GridEfficiencyRatio(), 1.0 / 0.36, 1e-6);
+    EXPECT_TRUE(s.GridWorthSweeping());
+  }
+  {
+    StrategySelector s;
+    const int grid = GridFramesOfLast64(s, 1.0, 0.9, 1.0, 1.3); // grid: 1.17 vs 1.0
+    EXPECT_EQ(s.Preferred(), StrategySelector::EnvironmentEstimator);
+    EXPECT_LE(grid, 64 / int(StrategySelector::ExplorationInterval));
+    EXPECT_GT(grid, 0);
+    EXPECT_TRUE(s.GridWorthSweeping()) << "lower variance per sample: the grid may still pay once complete";
+  }
+  {
+    StrategySelector s;
+    GridFramesOfLast64(s, 1.0, 1.5, 1.0, 1.1);
+    EXPECT_EQ(s.Preferred(), StrategySelector::EnvironmentEstimator);
+    EXPECT_FALSE(s.GridWorthSweeping()) << "no gain per sample: stop sweeping";
+  }
+  {
+    StrategySelector s;
+    EXPECT_EQ(GridFramesOfLast64(s, 1.0, 0.1, 1.0, 1.0, false), 0) << "no grid yet: Environment only";
+    EXPECT_EQ(s.Decisions(), 0u);
+  }
+}
