@@ -5,10 +5,12 @@
 #include "vsDeviceVolume.h"
 #include "vsEmissionAbsorptionPass.h"
 #include "vsEnvironmentMap.h"
+#include "vsLightDirections.h"
 #include "vsMajorantGrid.h"
 #include "vsMonteCarloPass.h"
+#include "vsStrategySelector.h"
 #include "vsVisibilityGrid.h"
-#include "vsVisibilityUpdateScheduler.h"
+#include "vsVisibilityGridUpdater.h"
 #include "shared/update_order.h"
 #include "vsVisibilityImage.h"
 #include "vsError.h"
@@ -50,16 +52,19 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::unique_ptr<vs::VolumeScene> Scene;
   std::unique_ptr<vs::EmissionAbsorptionPass> EA;
   std::unique_ptr<vs::MonteCarloPass> MC, Interactive;
-  std::unique_ptr<vs::VisibilityGrid> Grid;
+  std::unique_ptr<vs::MonteCarloPass> MCGrid; // Auto: the TwoStep samples (MC holds Environment's)
+  std::unique_ptr<vs::VisibilityGridUpdater> Grid;
   std::unique_ptr<vs::DeviceEnvironment> Environment;
+  std::shared_ptr<const vs::EnvironmentMap> EnvironmentSource;
   vtkMTimeType EnvironmentTime = 0;
   bool DefaultEnvironment = false;
-  std::vector<double> GridSignature;  // what the grid was computed for (besides extinction)
   bool GridNeedsFull = true;          // extinction or geometry changed since the last full sweep
-  int GridUploads = -1;               // the volume upload the grid last saw (lazy updates)
   vs::VolumeGeometry GridGeometry;    // the geometry the grid is computed for (set each frame)
-  vs::VisibilityUpdateScheduler Scheduler;
-  std::vector<uint8_t> Swept;         // per direction: swept since the last full update (maybe lazily stale)
+  vs::GridUpdateRequest LastGridRequest;
+  vs::StrategySelector Selector;      // Auto: Environment or TwoStep, frame by frame
+  std::vector<glm::vec3> LightDirections; // per grid texel, where its light comes from
+  std::pair<int, int> LightDirectionsKey{ -1, -1 }; // (environment upload, D) they were made for
+  double LastRenderSeconds = 0.0;     // device seconds of the last Monte Carlo frame (the sweep budget)
   std::vector<double> ImageSignature; // what the accumulated image was rendered for
   vtkSmartPointer<vtkImageData> Radiance;
   vtkSmartPointer<vtkImageData> VisibilityImage;
@@ -342,6 +347,13 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       throw vs::InputError("the environment input (port 1) has no map; check its reader for errors");
     }
   }
+  // The renderer's direction map holds at most 16 x 16 values (mc_render.glsl).
+  const int side = this->DirectionResolution;
+  if (side != 2 && side != 4 && side != 8 && side != 16)
+  {
+    throw vs::InputError("DirectionResolution " + std::to_string(side) +
+      " is not supported by the renderer: use 2, 4, 8 or 16 directions per side");
+  }
   if (!I.Environment || (envImage && envImage->GetMTime() != I.EnvironmentTime) || (!envImage && !I.DefaultEnvironment))
   {
     std::shared_ptr<const vs::EnvironmentMap> map;
@@ -359,18 +371,32 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       map = std::make_shared<vs::EnvironmentMap>(vs::EnvironmentMap::Constant(16, glm::vec3(1.0f)));
     }
     I.Environment.reset();
-    I.Environment = std::make_unique<vs::DeviceEnvironment>(I.Context, *map, std::max(8, this->DirectionResolution));
+    I.EnvironmentSource = map;
+    I.Environment = std::make_unique<vs::DeviceEnvironment>(I.Context, *map, std::max(8, side));
     I.EnvironmentTime = envImage ? envImage->GetMTime() : 0;
     I.DefaultEnvironment = envImage == nullptr;
+    ++this->EnvironmentUploadCount;
+  }
+  else if (I.Environment->Size() < side)
+  {
+    // The direction resolution grew past the map's: the product needs importance level log2(D).
+    I.Environment.reset();
+    I.Environment = std::make_unique<vs::DeviceEnvironment>(I.Context, *I.EnvironmentSource, side);
     ++this->EnvironmentUploadCount;
   }
 
   // The visibility grid, only for the strategies that use it.
   const std::vector<glm::dvec4> planes = WorldPlanes(this->ClippingPlanes);
   const bool emptyVolume = I.Scene->Majorants().MaxMajorant() <= 0.0f || croppedAway;
-  const bool needGrid = this->SamplingStrategy >= Visibility && !emptyVolume;
+  const bool autoStrategy = this->SamplingStrategy == Auto;
+  // Auto skips the grid of a volume too thin to shadow: with the largest extinction along the
+  // whole box diagonal the transmittance stays above exp(-0.05) = 0.95 everywhere, so the
+  // visibility factor of the pdf would be flat.
+  const double diagonal = glm::length(glm::dvec3(geometry.IndexToWorld * glm::dvec4(geometry.BoxMax - geometry.BoxMin, 0.0)));
+  const bool thinVolume = double(I.Scene->Majorants().MaxMajorant()) * diagonal < 0.05;
+  const bool needGrid = this->SamplingStrategy >= Visibility && !emptyVolume && !(autoStrategy && thinVolume);
   I.GridGeometry = geometry;
-  this->UpdateVisibilityGrid(needGrid);
+  this->UpdateVisibilityGrid(needGrid, autoStrategy);
 
   // Parameters of this frame.
   View view = MakeView(ren);
@@ -404,19 +430,34 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   p.tf = glm::vec4(tf[0], tf[1], tf[2], tf[3]);
   p.background = glm::vec4(0.0f, 0.0f, 0.0f, this->EnvironmentVisible ? 1.0f : 0.0f);
   p.viewport = glm::uvec4(w, h, 0u, static_cast<uint32_t>(this->Seed));
-  uint32_t strategy = emptyVolume ? uint32_t(Uniform) : uint32_t(this->SamplingStrategy);
-  p.sampling = glm::uvec4(strategy, 1u, uint32_t(this->CellMode), uint32_t(I.Environment->FinestLevel()));
+  // Auto: which estimator renders this frame (Environment while the grid is mostly unswept or not
+  // needed; then the better one by measured efficiency).
+  const vs::VisibilityGrid* grid = needGrid && I.Grid ? I.Grid->Grid() : nullptr;
+  bool gridFrame = grid != nullptr;
+  int effective = emptyVolume ? int(Uniform) : this->SamplingStrategy;
+  vs::StrategySelector::Estimator estimator = vs::StrategySelector::EnvironmentEstimator;
+  if (autoStrategy && !emptyVolume)
+  {
+    const bool ready = grid && I.Grid->SweptImportance() >= 0.5;
+    estimator = interactive ? vs::StrategySelector::EnvironmentEstimator : I.Selector.Choose(ready);
+    gridFrame = estimator == vs::StrategySelector::GridEstimator;
+    effective = gridFrame ? int(TwoStep) : int(Environment);
+  }
+  this->EffectiveStrategy = effective;
+  // The signature sees the user's strategy: Auto's frame-by-frame choice does not restart accumulation.
+  p.sampling = glm::uvec4(uint32_t(autoStrategy && !emptyVolume ? int(Auto) : effective), 1u, uint32_t(this->CellMode),
+    uint32_t(I.Environment->FinestLevel()));
   // The variance's squares are of radiance relative to the brightest light (no underflow for dim maps).
   const double brightest = I.Environment->MaxLuminance() * this->EnvironmentIntensity;
   const float squareScale = brightest > 0.0 && std::isfinite(1.0 / brightest) && 1.0 / brightest < 1e37
     ? float(1.0 / brightest) : 1.0f;
   p.sampling2 = glm::vec4(float(this->VisibilityEpsilon), float(this->EnvironmentIntensity),
     float(I.Scene->Majorants().BrickSize()), squareScale);
-  if (needGrid)
+  if (grid)
   {
-    auto c = I.Grid->Cells();
-    p.grid = glm::uvec4(c[0], c[1], c[2], I.Grid->Side());
-    p.cellSize = glm::vec4(I.Grid->CellSize(), 0.0f);
+    auto c = grid->Cells();
+    p.grid = glm::uvec4(c[0], c[1], c[2], grid->Side());
+    p.cellSize = glm::vec4(grid->CellSize(), 0.0f);
   }
   auto b = I.Scene->Majorants().Bricks();
   p.bricks = glm::uvec4(b[0], b[1], b[2], uint32_t(planes.size()));
@@ -445,30 +486,49 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     {
       I.MC = std::make_unique<vs::MonteCarloPass>(I.Context);
     }
-    pass = I.MC.get();
-    // Everything the accumulated image depends on; any difference restarts accumulation.
+    if (autoStrategy && !I.MCGrid)
+    {
+      I.MCGrid = std::make_unique<vs::MonteCarloPass>(I.Context);
+    }
+    // Everything the accumulated image depends on; any difference restarts accumulation. The
+    // grid's generation, not its sweeps: a grid filling in (or updated lazily) changes the pdf,
+    // never the mean, so samples of every stage average into one estimate.
     std::vector<double> signature = RenderSignature(p);
     signature.push_back(double(I.Scene->TableBuilds()));
     signature.push_back(double(I.Scene->Uploads()));
     signature.push_back(double(this->EnvironmentUploadCount));
-    signature.push_back(double(this->VisibilityUpdateCount));
+    signature.push_back(double(I.Grid && needGrid ? I.Grid->Generation() : 0));
     signature.insert(signature.end(), depth.begin(), depth.end());
-    if (!NearlyEqual(signature, I.ImageSignature) || pass->Width() != w || pass->Height() != h)
+    if (!NearlyEqual(signature, I.ImageSignature) || I.MC->Width() != w || I.MC->Height() != h)
     {
-      pass->Reset(w, h);
+      I.MC->Reset(w, h);
+      if (I.MCGrid)
+      {
+        I.MCGrid->Reset(w, h);
+      }
+      I.Selector.Reset();
       I.ImageSignature = signature;
       ++this->AccumulationResetCount;
     }
+    pass = gridFrame && autoStrategy ? I.MCGrid.get() : I.MC.get();
+    if (pass == I.MCGrid.get())
+    {
+      // Its own random streams: sample k of both accumulators must not share random numbers.
+      p.viewport.w = static_cast<uint32_t>(this->Seed) ^ 0x5bd1e995u;
+    }
   }
-  const uint32_t remaining = uint32_t(std::max(0, this->MaximumSamples - int(pass->Samples())));
+  const uint32_t accumulated = interactive ? 0u : this->AccumulatedSamplesOf(autoStrategy);
+  const uint32_t remaining = uint32_t(std::max(0, this->MaximumSamples - int(accumulated)));
   const uint32_t spp = interactive ? 1u : std::min<uint32_t>(uint32_t(this->SamplesPerFrame), remaining);
   if (spp > 0)
   {
+    p.sampling.x = uint32_t(effective);
     p.sampling.y = spp;
     pass->SetCountLookups(this->CountLookups);
-    pass->Render(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), needGrid ? I.Grid.get() : nullptr,
+    pass->Render(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), gridFrame ? grid : nullptr,
       *I.Environment, p, depth);
     this->LastDeviceSeconds = pass->LastSeconds();
+    I.LastRenderSeconds = pass->LastSeconds();
     if (this->CountLookups)
     {
       auto n = pass->LastLookups();
@@ -477,10 +537,21 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       this->LastLookupCounts[2] = double(n[2]);
     }
   }
-  this->AccumulatedSamples = interactive ? 0 : int(pass->Samples());
+  this->AccumulatedSamples = interactive ? 0 : int(this->AccumulatedSamplesOf(autoStrategy));
 
   // Keep the linear radiance; show it tone mapped.
-  std::vector<float> mean = pass->Mean();
+  std::vector<float> mean = interactive ? pass->Mean() : this->CombinedMean(autoStrategy);
+  if (autoStrategy && !interactive && spp > 0 && !emptyVolume)
+  {
+    double meanSquare = 0.0;
+    for (size_t i = 0; i < mean.size(); i += 4)
+    {
+      meanSquare += (double(mean[i]) * mean[i] + double(mean[i + 1]) * mean[i + 1] + double(mean[i + 2]) * mean[i + 2]) / 3.0;
+    }
+    meanSquare /= std::max<double>(1.0, double(mean.size() / 4));
+    I.Selector.Record(estimator, spp, pass->LastSeconds(), uint64_t(w) * h, double(pass->Samples()), pass->SquareSum(),
+      meanSquare);
+  }
   if (!interactive)
   {
     if (!I.Radiance)
@@ -543,25 +614,6 @@ vs::VisibilityGridParameters GridParameters(int directionResolution, double voxe
   return gp;
 }
 
-// Everything the grid's layout depends on besides extinction: parameters, clipping, placement.
-std::vector<double> GridSignature(const vs::VisibilityGridParameters& gp, const std::vector<glm::dvec4>& planes,
-  const vs::VolumeGeometry& geometry)
-{
-  std::vector<double> signature = { double(gp.DirectionResolution), gp.VoxelsPerCell, double(gp.KernelResolution),
-    double(gp.Filtering), gp.FilterAngleFraction };
-  for (const auto& pl : planes)
-  {
-    signature.insert(signature.end(), { pl.x, pl.y, pl.z, pl.w });
-  }
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      signature.push_back(geometry.WorldToIndex[c][r]);
-  for (int i = 0; i < 3; ++i)
-  {
-    signature.insert(signature.end(), { geometry.BoxMin[i], geometry.BoxMax[i] });
-  }
-  return signature;
-}
 }
 
 // The directions this render needs swept: all of them, except that Combined and TwoStep never
@@ -583,11 +635,10 @@ std::vector<uint8_t> vtkVisibilitySweepVolumeMapper::RequiredDirections(int side
   return required;
 }
 
-// Every needed direction when the grid is missing or anything but the data changed since the
-// last full sweep; after a data-only change, the needed directions the update scheme picks (maybe
-// none); and any needed direction never swept since the last full sweep (the environment or the
-// strategy changed what is needed).
-void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid)
+// The grid's update policy lives in vs::VisibilityGridUpdater; the mapper says what the frame needs:
+// the grid's parameters and placement, the directions read (RequiredDirections), the environment's
+// importance (the fill-in order), the data version (lazy updates) and the sweep budget.
+void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool autoStrategy)
 {
   Internals& I = *this->Impl;
   this->UnlitDirections = 0;
@@ -595,78 +646,100 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid)
   {
     return;
   }
-  const vs::VisibilityGridParameters gp = GridParameters(
+  vs::GridUpdateRequest& r = I.LastGridRequest;
+  r.Parameters = GridParameters(
     this->DirectionResolution, this->VoxelsPerCell, this->KernelResolution, this->Filtering, this->FilterAngleFraction);
-  const std::vector<double> signature = GridSignature(gp, WorldPlanes(this->ClippingPlanes), I.GridGeometry);
-  const std::vector<uint8_t> required = this->RequiredDirections(gp.DirectionResolution);
-  this->UnlitDirections = int(std::count(required.begin(), required.end(), uint8_t(0)));
+  r.Geometry = I.GridGeometry;
+  r.WorldPlanes = WorldPlanes(this->ClippingPlanes);
+  const int side = int(r.Parameters.DirectionResolution);
+  if (this->LightWeightedDirections && I.EnvironmentSource && I.EnvironmentSource->Size >= side)
+  {
+    const std::pair<int, int> key(this->EnvironmentUploadCount, side);
+    if (I.LightDirectionsKey != key)
+    {
+      I.LightDirections = vs::LightWeightedDirections(*I.EnvironmentSource, uint32_t(side));
+      I.LightDirectionsKey = key;
+    }
+    r.Parameters.Directions = I.LightDirections;
+  }
+  r.Required = this->RequiredDirections(side);
+  this->UnlitDirections = int(std::count(r.Required.begin(), r.Required.end(), uint8_t(0)));
+  r.Importance = I.Environment->ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
+  r.DataVersion = uint64_t(I.Scene->Uploads());
+  r.FullUpdate = I.GridNeedsFull;
+  r.Schedule.Scheme = vs::UpdateScheme(this->UpdateScheme);
+  r.Schedule.DirectionsPerFrame = uint32_t(this->DirectionsPerFrame);
+  r.Schedule.StaticInterval = uint32_t(this->StaticInterval);
+  r.Schedule.Seed = uint32_t(this->Seed);
+  r.Progressive = this->ProgressiveVisibility;
+  r.BudgetSeconds = this->SweepFrameFraction * I.LastRenderSeconds;
+  // Auto stops filling in once TwoStep showed no gain per sample over Environment sampling with
+  // most of the light's directions swept; lazy updates and invalidations still happen.
+  r.FillIn = !autoStrategy || I.Selector.GridWorthSweeping();
   if (!I.Grid)
   {
-    I.Grid = std::make_unique<vs::VisibilityGrid>(I.Context);
+    I.Grid = std::make_unique<vs::VisibilityGridUpdater>(I.Context);
   }
-  std::vector<uint32_t> directions;
-  if (!I.Grid->Valid() || I.GridNeedsFull || signature != I.GridSignature)
+  const auto start = std::chrono::steady_clock::now();
+  const vs::GridUpdateResult result = I.Grid->Update(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), r,
+    [this](double f) { this->UpdateProgress(f); });
+  I.GridNeedsFull = false;
+  if (result.NewGrid)
   {
-    vs::VisibilityGrid::CheckFits(*I.Context, I.GridGeometry, gp);
-    I.Grid->Allocate(I.GridGeometry, gp, this->UnlitDirections > 0);
-    I.Swept.assign(required.size(), 0);
-    I.GridSignature = signature;
-    I.GridNeedsFull = false;
-    I.Scheduler.OnFullUpdate();
+    I.Selector.ResetGrid();
+    I.VisibilityImage = nullptr;
   }
-  else if (I.Scene->Uploads() != I.GridUploads)
+  if (result.DirectionsSwept > 0)
   {
-    vs::UpdateSchedule schedule;
-    schedule.Scheme = vs::UpdateScheme(this->UpdateScheme);
-    schedule.DirectionsPerFrame = uint32_t(this->DirectionsPerFrame);
-    schedule.StaticInterval = uint32_t(this->StaticInterval);
-    schedule.Seed = uint32_t(this->Seed);
-    std::vector<float> importance;
-    if (this->UpdateScheme == EnvironmentGuided)
-    {
-      importance = I.Environment->ImportanceLevel(int(vs::shared::vs_log2_pow2(gp.DirectionResolution)));
-    }
-    directions = I.Scheduler.OnDataChange(schedule, gp.DirectionResolution, importance, required);
-  }
-  I.GridUploads = I.Scene->Uploads();
-  // Needed but never swept since the last full sweep (all of them right after one).
-  for (uint32_t n = 0; n < required.size(); ++n)
-  {
-    if (required[n] && !I.Swept[n] && std::find(directions.begin(), directions.end(), n) == directions.end())
-    {
-      directions.push_back(n);
-    }
-  }
-  if (!directions.empty())
-  {
-    std::sort(directions.begin(), directions.end());
-    this->SweepDirections(directions.size() == required.size() ? std::vector<unsigned int>() : directions);
-    for (uint32_t n : directions)
-    {
-      I.Swept[n] = 1;
-    }
+    this->NoteSweeps(result.DirectionsSwept, result.Seconds,
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
 }
 
-// Sweeps `directions` of the grid (all when empty) for the current volume and transfer function.
-void vtkVisibilitySweepVolumeMapper::SweepDirections(const std::vector<unsigned int>& directions)
+// Counters and events of a render that swept visibility.
+void vtkVisibilitySweepVolumeMapper::NoteSweeps(unsigned int directions, double deviceSeconds, double wallSeconds)
 {
   Internals& I = *this->Impl;
-  const vs::VisibilityGridParameters gp = GridParameters(
-    this->DirectionResolution, this->VoxelsPerCell, this->KernelResolution, this->Filtering, this->FilterAngleFraction);
-  const auto start = std::chrono::steady_clock::now();
-  const uint64_t before = I.Grid->DirectionsComputed();
   this->InvokeEvent(vtkCommand::StartEvent);
-  I.Grid->Compute(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), I.GridGeometry,
-    WorldPlanes(this->ClippingPlanes), gp, directions, [this](double f) { this->UpdateProgress(f); });
   this->InvokeEvent(vtkCommand::EndEvent);
-  this->LastSweepSeconds = I.Grid->LastSeconds();
-  this->LastFrameSweepSeconds = I.Grid->LastSeconds();
-  this->DirectionsUpdatedLastFrame = int(I.Grid->DirectionsComputed() - before);
-  this->DirectionsUpdatedTotal += this->DirectionsUpdatedLastFrame;
-  this->LastUpdateSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  this->LastSweepSeconds = deviceSeconds;
+  this->LastFrameSweepSeconds = deviceSeconds;
+  this->DirectionsUpdatedLastFrame = int(directions);
+  this->DirectionsUpdatedTotal += int(directions);
+  this->LastUpdateSeconds += wallSeconds;
   ++this->VisibilityUpdateCount;
   I.VisibilityImage = nullptr;
+}
+
+int vtkVisibilitySweepVolumeMapper::GetPendingDirections()
+{
+  return this->Impl->Grid ? int(this->Impl->Grid->PendingDirections()) : 0;
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetSamplingStrategyName(int strategy)
+{
+  switch (strategy)
+  {
+    case Uniform:
+      return "Uniform";
+    case Environment:
+      return "Environment";
+    case Visibility:
+      return "Visibility";
+    case Combined:
+      return "Combined";
+    case TwoStep:
+      return "TwoStep";
+    case Auto:
+      return "Auto";
+    default:
+      return "Unknown";
+  }
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetSamplingStrategyAsString()
+{
+  return GetSamplingStrategyName(this->SamplingStrategy);
 }
 
 const char* vtkVisibilitySweepVolumeMapper::GetUpdateSchemeAsString()
@@ -684,6 +757,51 @@ const char* vtkVisibilitySweepVolumeMapper::GetUpdateSchemeAsString()
   }
 }
 
+uint32_t vtkVisibilitySweepVolumeMapper::AccumulatedSamplesOf(bool autoStrategy)
+{
+  Internals& I = *this->Impl;
+  uint32_t n = I.MC ? I.MC->Samples() : 0u;
+  return n + (autoStrategy && I.MCGrid ? I.MCGrid->Samples() : 0u);
+}
+
+// The mean of all samples: Auto's two accumulators weighted by their sample counts (equal weight
+// per sample: both are unbiased estimates of the same image).
+std::vector<float> vtkVisibilitySweepVolumeMapper::CombinedMean(bool autoStrategy)
+{
+  Internals& I = *this->Impl;
+  std::vector<float> mean = I.MC->Mean();
+  if (!autoStrategy || !I.MCGrid || I.MCGrid->Samples() == 0)
+  {
+    return mean;
+  }
+  const double ne = I.MC->Samples(), ng = I.MCGrid->Samples();
+  const std::vector<float> g = I.MCGrid->Mean();
+  for (size_t i = 0; i < mean.size() && i < g.size(); ++i)
+  {
+    mean[i] = float((ne * double(mean[i]) + ng * double(g[i])) / (ne + ng));
+  }
+  return mean;
+}
+
+// Per-sample variance of the combined mean, such that variance / samples is its squared standard
+// error: (n_e v_e + n_g v_g) / (n_e + n_g).
+std::vector<double> vtkVisibilitySweepVolumeMapper::CombinedVariance(bool autoStrategy)
+{
+  Internals& I = *this->Impl;
+  std::vector<double> var = I.MC->Variance();
+  if (!autoStrategy || !I.MCGrid || I.MCGrid->Samples() == 0)
+  {
+    return var;
+  }
+  const double ne = I.MC->Samples(), ng = I.MCGrid->Samples();
+  const std::vector<double> g = I.MCGrid->Variance();
+  for (size_t i = 0; i < var.size() && i < g.size(); ++i)
+  {
+    var[i] = (ne * var[i] + ng * g[i]) / (ne + ng);
+  }
+  return var;
+}
+
 vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)
 {
   Internals& I = *this->Impl;
@@ -694,7 +812,7 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)
   if (variance)
   {
     // Double: the variance of radiance below ~1e-19 (a dim map in physical units) is below float's range.
-    std::vector<double> var = I.MC->Variance();
+    std::vector<double> var = this->CombinedVariance(this->SamplingStrategy == Auto);
     vtkNew<vtkDoubleArray> v;
     v->SetName("Variance");
     v->SetNumberOfComponents(4);
@@ -708,39 +826,37 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)
 vtkImageData* vtkVisibilitySweepVolumeMapper::GetVisibilityGrid()
 {
   Internals& I = *this->Impl;
-  if (!I.Grid || !I.Grid->Valid() || !I.Scene)
+  if (!I.Grid || !I.Grid->Grid() || !I.Scene)
   {
     return nullptr;
   }
-  // The renderer may have left directions without environment light unswept: a user asking for
-  // the grid gets every direction.
-  std::vector<unsigned int> missing;
-  for (uint32_t n = 0; n < I.Swept.size(); ++n)
-  {
-    if (!I.Swept[n])
-    {
-      missing.push_back(n);
-    }
-  }
-  if (!missing.empty())
+  // The renderer may have left directions unswept (without environment light, or not yet filled
+  // in): a user asking for the grid gets every direction.
+  if (I.Grid->PendingDirections() > 0 || I.Grid->SweptDirections() < I.Grid->Grid()->Side() * I.Grid->Grid()->Side())
   {
     try
     {
-      this->SweepDirections(missing);
+      const auto start = std::chrono::steady_clock::now();
+      const vs::GridUpdateResult result = I.Grid->Complete(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(),
+        I.LastGridRequest, [this](double f) { this->UpdateProgress(f); });
+      if (result.DirectionsSwept > 0)
+      {
+        this->NoteSweeps(result.DirectionsSwept, result.Seconds,
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      }
     }
     catch (const std::exception& e)
     {
       vtkErrorMacro("GetVisibilityGrid: sweeping the directions the render skipped failed: " << e.what());
       return nullptr;
     }
-    std::fill(I.Swept.begin(), I.Swept.end(), uint8_t(1));
   }
   if (!I.VisibilityImage)
   {
     I.VisibilityImage = vtkSmartPointer<vtkImageData>::New();
     vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
     // In data coordinates (no prop matrix), over the box the grid covers (cropped or not).
-    vs::VisibilityGridToImage(*I.Grid, CroppedGeometry(this, vs::ComputeGeometry(input, nullptr)), I.VisibilityImage);
+    vs::VisibilityGridToImage(*I.Grid->Grid(), CroppedGeometry(this, vs::ComputeGeometry(input, nullptr)), I.VisibilityImage);
   }
   return I.VisibilityImage;
 }
@@ -777,7 +893,11 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RenderMode: " << (this->RenderMode == MonteCarlo ? "MonteCarlo" : "EmissionAbsorption") << "\n";
-  os << indent << "SamplingStrategy: " << this->SamplingStrategy << "\n";
+  os << indent << "SamplingStrategy: " << this->GetSamplingStrategyAsString() << "\n";
+  os << indent << "EffectiveStrategy: " << this->GetEffectiveStrategyAsString() << "\n";
+  os << indent << "ProgressiveVisibility: " << (this->ProgressiveVisibility ? "On" : "Off") << "\n";
+  os << indent << "SweepFrameFraction: " << this->SweepFrameFraction << "\n";
+  os << indent << "LightWeightedDirections: " << (this->LightWeightedDirections ? "On" : "Off") << "\n";
   os << indent << "CellMode: " << this->CellMode << "\n";
   os << indent << "SamplesPerFrame: " << this->SamplesPerFrame << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";

@@ -62,7 +62,8 @@ public:
     Environment = 1,
     Visibility = 2,
     Combined = 3,
-    TwoStep = 4
+    TwoStep = 4,
+    Auto = 5 // Environment or TwoStep, chosen by the variance measured while rendering
   };
   enum CellModes
   {
@@ -79,9 +80,21 @@ public:
   ///@}
 
   ///@{
-  /** The light-direction strategy at scatter events. Default TwoStep. */
-  vtkSetClampMacro(SamplingStrategy, int, Uniform, TwoStep);
+  /** The light-direction strategy at scatter events. Default Auto: Environment sampling from the
+   *  first frame while the visibility grid fills in between frames (no sweeps for a volume too
+   *  thin to shadow), then per frame the better of Environment and TwoStep by the efficiency
+   *  1 / (variance x time per sample) measured on earlier frames. A choice made from earlier
+   *  samples only applies to later ones, so every sample, and their mean, stays unbiased.
+   *  GetEffectiveStrategy() tells what the last frame used. */
+  vtkSetClampMacro(SamplingStrategy, int, Uniform, Auto);
   vtkGetMacro(SamplingStrategy, int);
+  const char* GetSamplingStrategyAsString();
+  static const char* GetSamplingStrategyName(int strategy);
+  /** The strategy the last Monte Carlo frame sampled with (SamplingStrategy unless that is Auto;
+   *  Uniform for a volume empty under the transfer function). */
+  vtkGetMacro(EffectiveStrategy, int);
+  const char* GetEffectiveStrategyAsString() { return GetSamplingStrategyName(this->EffectiveStrategy); }
+  void SetSamplingStrategyToAuto() { this->SetSamplingStrategy(Auto); }
   void SetSamplingStrategyToUniform() { this->SetSamplingStrategy(Uniform); }
   void SetSamplingStrategyToEnvironment() { this->SetSamplingStrategy(Environment); }
   void SetSamplingStrategyToVisibility() { this->SetSamplingStrategy(Visibility); }
@@ -229,6 +242,29 @@ public:
   ///@}
 
   ///@{
+  /** Progressive visibility (default on): a new visibility grid starts at visibility 1 in every
+   *  direction (where TwoStep is exactly environment sampling) and fills in between frames: the
+   *  first frame sweeps nothing, each later one sweeps the next directions, brightest
+   *  environment first, for at most SweepFrameFraction of the previous frame's render time (and
+   *  at least one direction). Accumulation does not restart as the grid fills in: samples of
+   *  every stage are unbiased and averaged with equal weights. Off: every needed direction is
+   *  swept before the frame that needs it. PendingDirections: directions still to sweep. */
+  vtkSetMacro(ProgressiveVisibility, bool);
+  vtkGetMacro(ProgressiveVisibility, bool);
+  vtkBooleanMacro(ProgressiveVisibility, bool);
+  vtkSetClampMacro(SweepFrameFraction, double, 0.0, 1000.0);
+  /** Sweep each direction texel towards where its light comes from (the environment's
+   *  luminance-weighted mean direction inside the texel) instead of its centre: the visibility
+   *  of a sun's texel is then the sun's own. Default on. The grid then depends on the
+   *  environment: a new or rotated environment sweeps the grid again (progressively). */
+  vtkSetMacro(LightWeightedDirections, bool);
+  vtkGetMacro(LightWeightedDirections, bool);
+  vtkBooleanMacro(LightWeightedDirections, bool);
+  vtkGetMacro(SweepFrameFraction, double);
+  int GetPendingDirections();
+  ///@}
+
+  ///@{
   /** Directions of the visibility grid swept by the last Render() (0 when none; D*D for a full
    *  update) and by all renders so far. */
   vtkGetMacro(DirectionsUpdatedLastFrame, int);
@@ -303,7 +339,11 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
   int RenderMode = MonteCarlo;
-  int SamplingStrategy = TwoStep;
+  int SamplingStrategy = Auto;
+  int EffectiveStrategy = Environment;
+  bool ProgressiveVisibility = true;
+  double SweepFrameFraction = 0.25;
+  bool LightWeightedDirections = true;
   int CellMode = StochasticCell;
   int SamplesPerFrame = 1;
   int MaximumSamples = 4096;
@@ -349,9 +389,12 @@ private:
   void ReportError(const std::string& message);
   void RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol);
   void RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol);
-  void UpdateVisibilityGrid(bool needGrid);
-  void SweepDirections(const std::vector<unsigned int>& directions);
+  void UpdateVisibilityGrid(bool needGrid, bool usesGridOnly);
   std::vector<uint8_t> RequiredDirections(int side);
+  void NoteSweeps(unsigned int directions, double deviceSeconds, double wallSeconds);
+  uint32_t AccumulatedSamplesOf(bool autoStrategy);
+  std::vector<float> CombinedMean(bool autoStrategy);
+  std::vector<double> CombinedVariance(bool autoStrategy);
 
   struct Internals;
   std::unique_ptr<Internals> Impl;

@@ -44,10 +44,11 @@ struct Options
   std::string ReferenceStrategy = "two-step";
   int ReferenceSpp = 4096;
   int Width = 128, Height = 128, Repeats = 2;
-  std::vector<std::string> Strategies{ "uniform", "environment", "visibility", "combined", "two-step" };
+  std::vector<std::string> Strategies{ "uniform", "environment", "visibility", "combined", "two-step", "auto" };
   std::vector<double> Budgets{ 1, 2, 4, 8, 16 };
   std::vector<int> SppList;
   bool Quick = false;
+  bool Blocking = false; // equal time: sweep the whole grid before the first sample (no progressive fill-in)
 };
 
 // Linear RGB, VTK row order (bottom-up), 3 floats per pixel.
@@ -132,6 +133,8 @@ struct Point
 {
   double Budget = 0.0; // seconds (equal time) or spp (equal spp)
   std::vector<double> Seconds, Spp, Mse, RelMse; // one per repeat
+  std::vector<double> SweepSeconds, Swept;         // device seconds of sweeps and directions swept so far
+  std::vector<std::string> Effective;              // the strategy of the last frame (Auto chooses)
 };
 
 double Mean(const std::vector<double>& v)
@@ -177,27 +180,25 @@ public:
     }
   }
 
-  /** Starts a fresh accumulation with this strategy and seed (one sample per pixel). Returns
-   *  the wall seconds of that first frame without any sweeping it did; the sweeps' device
-   *  seconds are kept in GridSeconds (the grid is the same for every grid strategy). */
-  double Start(const std::string& strategy, int seed)
+  /** Brings the device up to date (volume, environment, the kernels compiled) without sweeping
+   *  anything: one frame of TwoStep, whose new grid sweeps nothing in its first frame, and one of
+   *  Environment sampling. Then sets the strategy and seed of the run; its first frame starts a
+   *  fresh accumulation, and its grid (if any) starts empty, so every sweep of the run happens
+   *  inside the run's own time. progressive: the grid fills in between frames (else it is swept
+   *  whole in the run's first frame). */
+  void Start(const std::string& strategy, int seed, bool progressive)
   {
+    this->M->SetSamplesPerFrame(1);
+    this->M->SetProgressiveVisibility(true);
+    this->M->SetSamplingStrategy(vtkVisibilitySweepVolumeMapper::TwoStep);
+    this->Render();
+    this->M->SetSamplingStrategy(vtkVisibilitySweepVolumeMapper::Environment);
+    this->Render();
+    this->M->SetProgressiveVisibility(progressive);
     this->M->SetSamplingStrategy(StrategyIndex(strategy, "--strategies"));
     this->M->SetSeed(seed);
-    this->M->SetSamplesPerFrame(1);
-    const int sweeps = this->M->GetVisibilityUpdateCount();
-    const auto t0 = Clock::now();
-    this->Render(); // first sample (and the grid, the first time a grid strategy runs)
-    double first = std::chrono::duration<double>(Clock::now() - t0).count();
-    if (this->M->GetVisibilityUpdateCount() > sweeps)
-    {
-      this->GridSeconds = this->M->GetLastSweepSeconds();
-      first = std::max(0.0, first - this->GridSeconds);
-    }
-    return first;
   }
 
-  double GridSeconds = 0.0;
 
 private:
   const Options& O;
@@ -221,7 +222,7 @@ Rgb MakeReference(Runner& runner, const Options& o)
 {
   std::fprintf(stderr, "rendering the reference: %s, %d spp, %d x %d ...\n", o.ReferenceStrategy.c_str(),
     o.ReferenceSpp, o.Width, o.Height);
-  runner.Start(o.ReferenceStrategy, 100003); // a seed no measured run uses
+  runner.Start(o.ReferenceStrategy, 100003, true); // a seed no measured run uses
   auto* m = runner.Mapper();
   m->SetSamplesPerFrame(std::min(o.ReferenceSpp, 64));
   m->SetMaximumSamples(o.ReferenceSpp);
@@ -300,19 +301,20 @@ int Run(const Options& given)
         points.push_back({ b });
     for (int r = 0; r < o.Repeats; ++r)
     {
-      // One progressive run per repeat, its error read at every budget. The time of a grid
-      // strategy's budget includes the sweeps, charged to every run (the paper's adjusted
-      // equal-time comparison), although the mapper computes the grid only once.
-      const double first = runner.Start(strategy, 1 + r);
-      const bool usesGrid = strategy == "visibility" || strategy == "combined" || strategy == "two-step";
-      if (usesGrid && runner.GridSeconds == 0.0)
-      {
-        runner.GridSeconds = runner.Mapper()->GetLastSweepSeconds(); // swept while rendering the reference
-      }
-      const double sweep = usesGrid ? runner.GridSeconds : 0.0;
-      auto* m = runner.Mapper();
+      // One progressive run per repeat on a fresh mapper, its error read at every budget. The
+      // sweeps happen inside the run's clock: progressively between frames (the default), or all
+      // in the first frame (--blocking, and equal-spp mode, which compares the estimators with a
+      // complete grid).
+      Runner run(o, scene);
+      run.Start(strategy, 1 + r, !o.Blocking && !equalSpp);
+      auto* m = run.Mapper();
+      double sweepSeconds = 0.0;
       const auto t0 = Clock::now();
-      auto elapsed = [&]() { return sweep + first + std::chrono::duration<double>(Clock::now() - t0).count(); };
+      auto elapsed = [&]() { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+      auto frame = [&]() {
+        run.Render();
+        sweepSeconds += m->GetLastFrameSweepSeconds();
+      };
       for (auto& p : points)
       {
         if (equalSpp)
@@ -320,7 +322,7 @@ int Run(const Options& given)
           while (m->GetAccumulatedSamples() < int(p.Budget))
           {
             m->SetSamplesPerFrame(int(p.Budget) - m->GetAccumulatedSamples());
-            runner.Render();
+            frame();
           }
         }
         else
@@ -331,7 +333,7 @@ int Run(const Options& given)
             const double perSample = elapsed() / std::max(1, m->GetAccumulatedSamples());
             const int left = int((p.Budget - elapsed()) / std::max(perSample, 1e-6));
             m->SetSamplesPerFrame(std::clamp(left / 2, 1, 64));
-            runner.Render();
+            frame();
           }
         }
         Error e = Compare(Radiance(m), reference);
@@ -339,8 +341,13 @@ int Run(const Options& given)
         p.Spp.push_back(m->GetAccumulatedSamples());
         p.Mse.push_back(e.Mse);
         p.RelMse.push_back(e.RelMse);
-        std::fprintf(stderr, "  %-12s repeat %d: %s %g -> %d spp, %.2f s, MSE %.4g\n", strategy.c_str(), r,
-          equalSpp ? "spp" : "budget", p.Budget, m->GetAccumulatedSamples(), elapsed(), e.Mse);
+        p.SweepSeconds.push_back(sweepSeconds);
+        p.Swept.push_back(m->GetDirectionsUpdatedTotal());
+        p.Effective.push_back(m->GetEffectiveStrategyAsString());
+        std::fprintf(stderr, "  %-12s repeat %d: %s %g -> %d spp, %.2f s (sweeps %.2f s, %d directions), MSE %.4g, last "
+                             "frame %s\n",
+          strategy.c_str(), r, equalSpp ? "spp" : "budget", p.Budget, m->GetAccumulatedSamples(), elapsed(),
+          sweepSeconds, m->GetDirectionsUpdatedTotal(), e.Mse, m->GetEffectiveStrategyAsString());
       }
     }
     results[strategy] = points;
@@ -373,10 +380,11 @@ int Run(const Options& given)
   for (const auto& strategy : o.Strategies)
   {
     nlohmann::json js;
-    const bool usesGrid = strategy == "visibility" || strategy == "combined" || strategy == "two-step";
-    js["sweep_seconds"] = usesGrid ? runner.GridSeconds : 0.0;
     for (const auto& p : results[strategy])
     {
+      js["sweep_seconds"].push_back(Mean(p.SweepSeconds));
+      js["directions_swept"].push_back(Mean(p.Swept));
+      js["effective_strategy"].push_back(p.Effective);
       std::printf("%-12s %8g %9.2f %8.0f %12.4g %12.2g %10.4g\n", strategy.c_str(), p.Budget, Mean(p.Seconds),
         Mean(p.Spp), Mean(p.Mse), Spread(p.Mse), Mean(p.RelMse));
       csv << strategy << ',' << (equalSpp ? "spp" : "time") << ',' << p.Budget << ',' << Mean(p.Seconds) << ','
@@ -427,7 +435,7 @@ void AddBenchConvergence(CLI::App& bench)
   cmd->add_option("--reference-spp", o->ReferenceSpp, "samples per pixel of a rendered reference")
     ->check(CLI::Range(1, 1 << 20));
   cmd->add_option("--reference-strategy", o->ReferenceStrategy, "strategy of a rendered reference");
-  cmd->add_option("--strategies", o->Strategies, "strategies to compare (default: all five)")->delimiter(',');
+  cmd->add_option("--strategies", o->Strategies, "strategies to compare (default: all six)")->delimiter(',');
   cmd->add_option("--budgets", o->Budgets, "wall-clock budgets in seconds, sweeps included (default 1,2,4,8,16)")
     ->delimiter(',');
   cmd->add_option("--spp-list", o->SppList, "equal-spp mode: these samples per pixel instead of time budgets")
@@ -438,6 +446,8 @@ void AddBenchConvergence(CLI::App& bench)
   cmd->add_option("--json", o->Json, "write the figures as JSON");
   cmd->add_option("--csv", o->Csv, "write the figures as CSV");
   cmd->add_option("--plot", o->Plot, "draw error against time (log-log) to this PNG (matplotlib)");
+  cmd->add_flag("--blocking", o->Blocking,
+    "equal time: sweep the whole grid in each run's first frame instead of progressively between frames");
   cmd->add_flag("--quick", o->Quick, "32 x 32, budgets 0.5 and 1 s, one repeat, a 64-spp reference (for tests)");
   SetCommandRun(cmd, [o]() { return Run(*o); });
 }

@@ -133,6 +133,7 @@ int Run(const Options& given)
   SceneObjects objects = BuildScene(scene);
   vtkVisibilitySweepVolumeMapper* mapper = objects.Mapper;
   mapper->SetInteractiveUpdateRate(0.0); // always full-resolution frames
+  mapper->SetProgressiveVisibility(false); // per-sample figures of a complete grid: swept in the warm-up frame
 
   std::printf("scene %s, %d x %d, %d spp per timed frame, median of %d frames (device time of the render pass)\n",
     o.Scene.c_str(), o.Width, o.Height, o.Spp, o.Repeats);

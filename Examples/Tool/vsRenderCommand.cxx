@@ -153,6 +153,10 @@ int Run(const RenderOptions& o)
   stats["width"] = scene.Render.Width;
   stats["height"] = scene.Render.Height;
   stats["strategy"] = scene.Render.Strategy;
+  // What the last frame sampled with (Auto chooses per frame), and the grid's state.
+  stats["effective_strategy"] = mapper->GetEffectiveStrategyAsString();
+  stats["directions_swept"] = mapper->GetDirectionsUpdatedTotal();
+  stats["pending_directions"] = mapper->GetPendingDirections();
   stats["seed"] = scene.Render.Seed;
   stats["spp"] = reached;
   if (timed)
@@ -448,6 +452,18 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   {
     mapper->SetSkipUnlitDirections(*v.SkipUnlitDirections);
   }
+  if (v.Progressive)
+  {
+    mapper->SetProgressiveVisibility(*v.Progressive);
+  }
+  if (v.LightWeightedDirections)
+  {
+    mapper->SetLightWeightedDirections(*v.LightWeightedDirections);
+  }
+  if (v.SweepFrameFraction)
+  {
+    mapper->SetSweepFrameFraction(*v.SweepFrameFraction);
+  }
   if (v.FilterAngleFraction)
   {
     mapper->SetFilterAngleFraction(*v.FilterAngleFraction);
@@ -541,7 +557,7 @@ void AddRender(CLI::App& app)
   auto* budget = cmd->add_option("--time-budget", o->TimeBudget, "render for this many seconds instead of a fixed spp")
                    ->check(CLI::PositiveNumber);
   spp->excludes(budget);
-  cmd->add_option("--strategy", o->Strategy, "uniform, environment, visibility, combined or two-step (overrides the scene)");
+  cmd->add_option("--strategy", o->Strategy, "auto (the default), uniform, environment, visibility, combined or two-step (overrides the scene)");
   cmd->add_option("--seed", o->Seed, "random seed (overrides the scene)")->check(CLI::NonNegativeNumber);
   cmd->add_option("--samples-per-frame", o->SamplesPerFrame, "samples per pixel added by each progressive frame")
     ->check(CLI::Range(1, 1 << 16));

@@ -523,7 +523,8 @@ Scene::VisibilitySection ParseVisibility(const json& v)
   RequireObject(v, path);
   CheckKeys(v, path,
     { "direction_resolution", "voxels_per_cell", "kernel_resolution", "filtering", "filter_angle_fraction", "epsilon",
-      "cell_mode", "skip_unlit_directions" });
+      "cell_mode", "skip_unlit_directions", "progressive", "sweep_frame_fraction",
+      "light_weighted_directions" });
   Scene::VisibilitySection s;
   if (v.contains("direction_resolution"))
   {
@@ -549,6 +550,18 @@ Scene::VisibilitySection ParseVisibility(const json& v)
   if (v.contains("skip_unlit_directions"))
   {
     s.SkipUnlitDirections = Boolean(v["skip_unlit_directions"], "visibility.skip_unlit_directions");
+  }
+  if (v.contains("light_weighted_directions"))
+  {
+    s.LightWeightedDirections = Boolean(v["light_weighted_directions"], "visibility.light_weighted_directions");
+  }
+  if (v.contains("progressive"))
+  {
+    s.Progressive = Boolean(v["progressive"], "visibility.progressive");
+  }
+  if (v.contains("sweep_frame_fraction"))
+  {
+    s.SweepFrameFraction = NumberIn(v["sweep_frame_fraction"], "visibility.sweep_frame_fraction", 0.0, 1000.0, "fraction");
   }
   if (v.contains("filter_angle_fraction"))
   {
@@ -607,7 +620,7 @@ json Array3(const Vec3& v)
 
 const std::vector<std::string>& SceneStrategies()
 {
-  static const std::vector<std::string> names{ "uniform", "environment", "visibility", "combined", "two-step" };
+  static const std::vector<std::string> names{ "uniform", "environment", "visibility", "combined", "two-step", "auto" };
   return names;
 }
 
@@ -688,9 +701,9 @@ bool Scene::RenderSection::operator==(const RenderSection& o) const
 bool Scene::VisibilitySection::operator==(const VisibilitySection& o) const
 {
   return std::tie(DirectionResolution, VoxelsPerCell, KernelResolution, Filtering, FilterAngleFraction, Epsilon,
-           CellMode, SkipUnlitDirections) == std::tie(o.DirectionResolution, o.VoxelsPerCell, o.KernelResolution,
-                                             o.Filtering, o.FilterAngleFraction, o.Epsilon, o.CellMode,
-                                             o.SkipUnlitDirections);
+           CellMode, SkipUnlitDirections, Progressive, SweepFrameFraction, LightWeightedDirections) ==
+    std::tie(o.DirectionResolution, o.VoxelsPerCell, o.KernelResolution, o.Filtering, o.FilterAngleFraction, o.Epsilon,
+      o.CellMode, o.SkipUnlitDirections, o.Progressive, o.SweepFrameFraction, o.LightWeightedDirections);
 }
 
 bool Scene::ClipPlane::operator==(const ClipPlane& o) const
@@ -872,6 +885,12 @@ json ToJson(const Scene& s)
     vis["cell_mode"] = *v.CellMode;
   if (v.SkipUnlitDirections)
     vis["skip_unlit_directions"] = *v.SkipUnlitDirections;
+  if (v.Progressive)
+    vis["progressive"] = *v.Progressive;
+  if (v.LightWeightedDirections)
+    vis["light_weighted_directions"] = *v.LightWeightedDirections;
+  if (v.SweepFrameFraction)
+    vis["sweep_frame_fraction"] = *v.SweepFrameFraction;
   if (!vis.empty())
   {
     j["visibility"] = vis;

@@ -16,7 +16,8 @@
 //    (`vissweep render --frames`), "update_scheme" ("full", "round-robin" (default), "environment-guided",
 //    "static"), "directions_per_frame" (default 4) and "static_interval" (default 16).
 //  - "visibility": {"direction_resolution", "voxels_per_cell", "kernel_resolution",
-//    "filtering", "filter_angle_fraction", "epsilon", "cell_mode", "skip_unlit_directions"},
+//    "filtering", "filter_angle_fraction", "epsilon", "cell_mode", "skip_unlit_directions",
+//    "progressive", "sweep_frame_fraction", "light_weighted_directions"},
 //    each optional.
 //  - "clip_planes": [{"origin": [..], "normal": [..]}, ...].
 #ifndef vsSceneFile_h
@@ -90,7 +91,7 @@ struct Scene
     int Width = 512;
     int Height = 512;
     int Spp = 64;
-    std::string Strategy = "two-step";
+    std::string Strategy = "auto";
     int Seed = 1;
     double Exposure = 1.0;
     bool ToneMapping = true;
@@ -109,6 +110,9 @@ struct Scene
     std::optional<double> Epsilon;
     std::optional<std::string> CellMode; // "trilinear" | "stochastic"
     std::optional<bool> SkipUnlitDirections; // default true: directions without light are not swept
+    std::optional<bool> Progressive;         // default true: the grid fills in between frames
+    std::optional<double> SweepFrameFraction; // default 0.25: sweep time per frame / render time
+    std::optional<bool> LightWeightedDirections; // default true: sweep towards each texel's light
     bool operator==(const VisibilitySection& o) const;
   };
   struct ClipPlane

@@ -12,6 +12,7 @@
 //    ratio 1.00), so studentized z has a variance below 1 (chi2/n about 0.45) for any two
 //    unbiased renders; the bounds below assume var(z) = 1 and are conservative for it.
 #include "vtkVisibilitySweepVolumeMapper.h"
+#include "vsRenderTestStatistics.h"
 #include "vsRenderTestUtilities.h"
 
 #include "vtkCamera.h"
@@ -40,6 +41,11 @@
 namespace
 {
 using vstest::Check;
+using vstest::Compare;
+using vstest::ConsistentWithZeroMean;
+using vstest::Image;
+using vstest::MeanVariance;
+using vstest::ZStats;
 
 const int NX = 20, NY = 18, NZ = 16;
 
@@ -93,6 +99,10 @@ struct Scene
     this->Sky->SetOctahedralSize(16);
     this->Mapper->SetInputData(this->Image);
     this->Mapper->SetEnvironmentConnection(this->Sky->GetOutputPort());
+    // The lazy updates of animated volumes on a grid swept at once (TestMapperProgressive covers
+    // the progressive fill-in and the Auto strategy).
+    this->Mapper->SetSamplingStrategyToTwoStep();
+    this->Mapper->SetProgressiveVisibility(false);
     this->Volume->SetMapper(this->Mapper);
     this->Volume->SetProperty(this->Property);
     this->Renderer->AddVolume(this->Volume);
@@ -265,72 +275,6 @@ void TestRoundRobinCycleRefreshesEverything()
   Check(VisibilityValues(s.Mapper) == reference, "16 round-robin changes of 4 directions refresh the whole grid");
 }
 
-struct Image
-{
-  std::vector<double> Mean, Variance; // 4 per pixel (RGBA)
-  int Samples = 0;
-};
-
-Image Grab(Scene& s)
-{
-  Image out;
-  vtkImageData* r = s.Mapper->GetRadiance(true);
-  vtkDataArray* rgb = r->GetPointData()->GetArray("Radiance");
-  vtkDataArray* var = r->GetPointData()->GetArray("Variance");
-  for (vtkIdType i = 0; i < rgb->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      out.Mean.push_back(rgb->GetComponent(i, c));
-      out.Variance.push_back(var->GetComponent(i, c));
-    }
-  }
-  out.Samples = s.Mapper->GetAccumulatedSamples();
-  return out;
-}
-
-struct ZStats
-{
-  int Pixels = 0;
-  double MeanZ = 0.0, Chi2 = 0.0, Beyond3 = 0.0;
-};
-
-// Per-pixel z of the luminance-free green channel (pixels are independent; channels are not).
-ZStats Compare(const Image& x, const Image& y)
-{
-  ZStats s;
-  for (size_t i = 1; i < x.Mean.size(); i += 3)
-  {
-    const double se = std::sqrt(x.Variance[i] / x.Samples + y.Variance[i] / y.Samples);
-    if (se <= 0.0)
-      continue; // both deterministic (the sky seen directly)
-    const double z = (x.Mean[i] - y.Mean[i]) / se;
-    ++s.Pixels;
-    s.MeanZ += z;
-    s.Chi2 += z * z;
-    s.Beyond3 += std::abs(z) > 3.0;
-  }
-  s.MeanZ /= std::max(1, s.Pixels);
-  s.Beyond3 /= std::max(1, s.Pixels);
-  return s;
-}
-
-bool ConsistentWithZeroMean(const ZStats& z)
-{
-  const double n = z.Pixels;
-  // mean z: 4 standard errors; chi-square(n): 5 standard deviations; |z| > 3: 0.27 % expected.
-  return n >= 100 && std::abs(z.MeanZ) < 4.0 / std::sqrt(n) && z.Chi2 < n + 5.0 * std::sqrt(2.0 * n) &&
-    z.Beyond3 < 0.02;
-}
-
-double MeanVariance(const Image& x)
-{
-  double v = 0.0;
-  for (size_t i = 1; i < x.Variance.size(); i += 3)
-    v += x.Variance[i];
-  return v / double(x.Variance.size() / 3);
-}
-
 // Volume B rendered with a grid that is still (mostly or wholly) volume A's, against B with a
 // fresh grid: the same mean.
 void TestStaleGridIsUnbiased()
@@ -340,13 +284,13 @@ void TestStaleGridIsUnbiased()
   Scene fresh(b);
   fresh.Mapper->SetSeed(7);
   fresh.Converge(spp);
-  const Image reference = Grab(fresh);
+  const Image reference = vstest::Grab(fresh.Mapper);
 
   // Control: B with a fresh grid and another seed. Its z statistics are the baseline.
   Scene again(b);
   again.Mapper->SetSeed(5);
   again.Converge(spp);
-  const ZStats control = Compare(Grab(again), reference);
+  const ZStats control = Compare(vstest::Grab(again.Mapper), reference);
   std::printf("control, fresh vs fresh grid: %d pixels, mean z %.3f, chi2/n %.3f, |z|>3 %.3f\n", control.Pixels,
     control.MeanZ, control.Chi2 / std::max(1, control.Pixels), control.Beyond3);
   Check(ConsistentWithZeroMean(control), "two renders of the same scene must agree");
@@ -354,7 +298,7 @@ void TestStaleGridIsUnbiased()
   Scene other(a);
   other.Mapper->SetSeed(9);
   other.Converge(spp);
-  const ZStats power = Compare(Grab(other), reference);
+  const ZStats power = Compare(vstest::Grab(other.Mapper), reference);
   std::printf("volume A vs volume B: %d pixels, mean z %.3f, chi2/n %.3f, |z|>3 %.3f\n", power.Pixels, power.MeanZ,
     power.Chi2 / std::max(1, power.Pixels), power.Beyond3);
   Check(!ConsistentWithZeroMean(power), "the z statistic must reject two different volumes");
@@ -369,7 +313,7 @@ void TestStaleGridIsUnbiased()
     stale.Converge(spp);   // B with 4 (RoundRobin) or 0 (Static) of 64 directions swept for B
     Check(stale.Mapper->GetDirectionsUpdatedTotal() == 64 + (scheme == vtkVisibilitySweepVolumeMapper::RoundRobin ? 4 : 0),
       "the grid is stale while B renders");
-    const Image image = Grab(stale);
+    const Image image = vstest::Grab(stale.Mapper);
     const ZStats z = Compare(image, reference);
     std::printf("%s stale grid vs fresh grid: %d pixels, mean z %.3f, chi2/n %.3f, |z|>3 %.3f, "
                 "variance ratio %.3f\n",

@@ -1,7 +1,10 @@
 // DESIGN.md's skip rules, through the counters of the mapper: each change does the work it
 // needs and no more (camera/colour: restart accumulation only; opacity, data, unit distance,
 // density scale, clipping: recompute majorants and visibility; environment: the light's pdf
-// only), and a volume empty under the transfer function skips the sweeps entirely.
+// only, unless its light moved inside a direction texel: the grid is swept towards each
+// texel's light), and a volume empty under the transfer function skips the sweeps entirely.
+// The grid is swept whole in the frame that needs it here (progressive fill-in off; the
+// progressive path has its own counters in TestMapperProgressive).
 #include "vtkVisibilitySweepVolumeMapper.h"
 #include "vsRenderTestUtilities.h"
 
@@ -50,6 +53,8 @@ int TestMapperSkipRules(int, char*[])
   vtkNew<vtkVisibilitySweepVolumeMapper> m;
   m->SetInputData(image);
   m->SetEnvironmentConnection(env->GetOutputPort());
+  m->SetSamplingStrategyToTwoStep();
+  m->SetProgressiveVisibility(false);
   vtkNew<vtkVolume> volume;
   volume->SetMapper(m);
   volume->SetProperty(property);
@@ -162,5 +167,33 @@ int TestMapperSkipRules(int, char*[])
   win->Render();
   Check(std::string(m->GetLastError()).empty(), m->GetLastError());
   Check(m->GetVisibilityUpdateCount() == 8, "an empty volume skips the sweeps");
+
+  // The grid is swept towards each texel's light: a sun that moves sweeps the grid again, an
+  // environment only scaled in intensity does not; with LightWeightedDirections off neither does.
+  property->SetScalarOpacity(opacity);
+  env->SetTypeToSunDisk();
+  env->SetSkyColor(0.2, 0.25, 0.3); // every direction lit: which directions are needed never changes
+  env->SetSunDirection(0.3, 0.2, 0.9);
+  win->Render();
+  const int updates = m->GetVisibilityUpdateCount();
+  Check(updates == 9, "a new light's directions sweep the grid again");
+  double sun[3], sky[3];
+  env->GetSunRadiance(sun);
+  env->GetSkyColor(sky);
+  env->SetSunRadiance(2 * sun[0], 2 * sun[1], 2 * sun[2]);
+  env->SetSkyColor(2 * sky[0], 2 * sky[1], 2 * sky[2]);
+  win->Render();
+  Check(m->GetVisibilityUpdateCount() == updates, "an environment twice as bright everywhere keeps the grid");
+  env->SetSunDirection(0.5, 0.1, 0.85);
+  win->Render();
+  Check(m->GetVisibilityUpdateCount() == updates + 1, "a sun that moved sweeps the grid again");
+  m->LightWeightedDirectionsOff();
+  win->Render();
+  const int centres = m->GetVisibilityUpdateCount();
+  Check(centres == updates + 2, "texel centres instead of the light's directions: a new grid");
+  env->SetSunDirection(0.3, 0.2, 0.9);
+  win->Render();
+  Check(m->GetVisibilityUpdateCount() == centres, "texel centres: a moved sun keeps the grid");
+  Check(std::string(m->GetLastError()).empty(), m->GetLastError());
   return vstest::ExitCode();
 }

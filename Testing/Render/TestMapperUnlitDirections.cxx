@@ -73,6 +73,12 @@ struct Scene
     this->Mapper->SetInputData(this->Image);
     this->Mapper->SetEnvironmentConnection(this->Sky->GetOutputPort());
     this->Mapper->SetSamplingStrategyToTwoStep();
+    // Which directions are swept, on a grid swept whole in the frame that needs it, along the
+    // texel centres: a ground that lights up then changes only which directions are needed
+    // (with LightWeightedDirections, the default, it also moves the light's directions and sweeps
+    // a new grid: TestMapperSkipRules).
+    this->Mapper->SetProgressiveVisibility(false);
+    this->Mapper->SetLightWeightedDirections(false);
     this->Mapper->SetSkipUnlitDirections(skip);
     this->Mapper->SetSamplesPerFrame(16);
     this->Mapper->SetMaximumSamples(16);

@@ -116,7 +116,7 @@ TEST(SceneFile, DefaultsOfOptionalSections)
   EXPECT_FALSE(s.Camera.ParallelScale.has_value());
   EXPECT_EQ(s.Render.Width, 512);
   EXPECT_EQ(s.Render.Spp, 64);
-  EXPECT_EQ(s.Render.Strategy, "two-step");
+  EXPECT_EQ(s.Render.Strategy, "auto");
   EXPECT_EQ(s.Render.UpdateScheme, "round-robin"); // DESIGN.md: round-robin by default
   EXPECT_EQ(s.Render.DirectionsPerFrame, 4);
   EXPECT_EQ(s.Render.StaticInterval, 16);
@@ -323,7 +323,7 @@ TEST(SceneFile, BadValues)
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["spp"] = 0; }), "render.spp: samples per pixel 0");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["seed"] = -1; }), "render.seed: seed -1 not in");
   EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["strategy"] = "foo"; }),
-    "render.strategy: unknown strategy 'foo' (expected uniform, environment, visibility, combined, two-step)");
+    "render.strategy: unknown strategy 'foo' (expected uniform, environment, visibility, combined, two-step, auto)");
   EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["update_scheme"] = "lazy"; }),
     "render.update_scheme: unknown update scheme 'lazy' (expected full, round-robin, environment-guided, static)");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["update_scheme"] = 1; }),
