@@ -9,7 +9,10 @@
  *
  * Render modes:
  * - MonteCarlo (default): unbiased progressive single scattering under an HDR
- *   environment (seed 000): delta tracking, a light direction from the sampling
+ *   environment, after R. von Radziewsky, T. Kroes, M. Eisemann and E. Eisemann,
+ *   "Efficient stochastic rendering of static and animated volumes using visibility
+ *   sweeps", IEEE TVCG 2017 (cited below as von Radziewsky et al. 2017): delta
+ *   tracking, a light direction from the sampling
  *   strategy (TwoStep: environment x visibility, then the environment's own quadtree),
  *   ratio-tracked shadow rays. Each Render() adds SamplesPerFrame samples per pixel
  *   until MaximumSamples; any change that alters the image restarts accumulation,
@@ -22,7 +25,7 @@
  * with a vtkEnvironmentMapReader or vtkEnvironmentMapSource; without one, a constant
  * white sky of radiance 1.
  *
- * Conventions (DESIGN.md): world units are those of the image data (origin,
+ * Conventions (docs/reference.md): world units are those of the image data (origin,
  * spacing, direction matrix) under the vtkVolume's matrix; extinction is
  * sigma_t = -ln(1 - alpha) / unitDistance * DensityScale.
  *
@@ -106,7 +109,7 @@ public:
   ///@}
 
   ///@{
-  /** Added to the visibility before it shapes the pdf (seed 000: 0.01). */
+  /** Added to the visibility before it shapes the pdf (von Radziewsky et al. 2017: 0.01). */
   vtkSetClampMacro(VisibilityEpsilon, double, 1e-6, 1.0);
   vtkGetMacro(VisibilityEpsilon, double);
   ///@}
@@ -193,14 +196,14 @@ public:
   };
 
   ///@{
-  /** Lazy visibility updates for animated volumes (seed 000, Sec. 9). When only the volume's
+  /** Lazy visibility updates for animated volumes (von Radziewsky et al. 2017, Sec. 9). When only the volume's
    *  data changed (a new time step: same geometry, grid parameters, clipping planes and transfer
    *  function), the scheme chooses which directions of the visibility grid to sweep again; the
    *  others keep visibility of earlier data. That changes the variance, never the mean: the
    *  grid only shapes the sampling pdf. Any other change that alters extinction or the grid's
    *  layout recomputes every direction, and so does the first computation. Majorants are
-   *  always recomputed for new data and accumulation restarts. Default RoundRobin (DESIGN.md;
-   *  the paper's most robust scheme); k =
+   *  always recomputed for new data and accumulation restarts. Default RoundRobin (the
+   *  paper's most robust scheme); k =
    *  DirectionsPerFrame (default 4); StaticInterval default 16. */
   vtkSetClampMacro(UpdateScheme, int, FullUpdate, StaticUpdate);
   vtkGetMacro(UpdateScheme, int);

@@ -1,4 +1,4 @@
-// DESIGN.md's skip rules, through the counters of the mapper: each change does the work it
+// The skip rules (README, "How it works"), through the counters of the mapper: each change does the work it
 // needs and no more (camera/colour: restart accumulation only; opacity, data, unit distance,
 // density scale, clipping: recompute majorants and visibility; environment: the light's pdf
 // only), and a volume empty under the transfer function skips the sweeps entirely.
