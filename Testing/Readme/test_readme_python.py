@@ -39,8 +39,12 @@ class ReadmePython(unittest.TestCase):
             p, seconds = run(snippet("Python", "python"), d, timeout=300)
             self.assertNotEqual(p.returncode, 0, p.stdout)
             self.assertIn("render failed", p.stderr)
-            # One failed frame, not thousands: the mapper's error appears a handful of times at most.
-            self.assertLess(p.stderr.count("ERROR:"), 10, p.stderr[-2000:])
+            # One failed frame, not thousands: a handful of logged errors at most (VTK logs them as
+            # "ERR|" lines through loguru, or "ERROR:" through the plain output window).
+            errors = p.stderr.count("ERR|") + p.stderr.count("ERROR:")
+            self.assertGreater(errors, 0, p.stderr[-2000:])
+            self.assertLess(errors, 10, p.stderr[-2000:])
+            self.assertLess(seconds, 120)
 
 
 if __name__ == "__main__":

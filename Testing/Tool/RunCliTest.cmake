@@ -17,7 +17,7 @@ endif ()
 # name | arguments (space-separated) | what stderr must say
 set(cases
   "no subcommand||subcommand"
-  "unknown subcommand|frobnicate|frobnicate"
+  "unknown subcommand|frobnicate|subcommand"
   "unknown option|render ${SCENE} -o x.png --no-such-option|no-such-option"
   "missing value|render ${SCENE} -o|-o"
   "out of range|render ${SCENE} -o x.png --width 0|width"
