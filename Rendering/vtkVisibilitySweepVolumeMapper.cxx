@@ -7,6 +7,7 @@
 #include "vsEnvironmentMap.h"
 #include "vsMajorantGrid.h"
 #include "vsMonteCarloPass.h"
+#include "vsPropertyChecks.h"
 #include "vsVisibilityGrid.h"
 #include "vsVisibilityUpdateScheduler.h"
 #include "shared/update_order.h"
@@ -64,6 +65,7 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   vtkSmartPointer<vtkImageData> Radiance;
   vtkSmartPointer<vtkImageData> VisibilityImage;
   std::string LastError;
+  vs::PropertyChecks Checks; // the settings VisSweep ignores, warned once per change
   uint32_t Frame = 0;
 };
 
@@ -154,15 +156,42 @@ const char* vtkVisibilitySweepVolumeMapper::GetLastError()
 void vtkVisibilitySweepVolumeMapper::ReportError(const std::string& message)
 {
   this->Impl->LastError = message;
-  vtkErrorMacro(<< message);
+  if (this->Impl->Checks.IsNewError(message)) // once per change, not once per Render()
+  {
+    vtkErrorMacro(<< message);
+  }
 }
 
 void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow*)
 {
-  // The device resources are not tied to the OpenGL context: they stay until the mapper goes.
+  // VTK calls this when the window or the renderer lets go of the prop: free the device memory
+  // (passes first, they hold views of the volume and the grid) and forget what it held, so the
+  // next Render() uploads and sweeps again as a first render does.
+  Internals& I = *this->Impl;
+  I.Environment.reset();
+  I.Grid.reset();
+  I.Interactive.reset();
+  I.MC.reset();
+  I.EA.reset();
+  I.Scene.reset();
+  I.EnvironmentTime = 0;
+  I.DefaultEnvironment = false;
+  I.GridSignature.clear();
+  I.GridNeedsFull = true;
+  I.GridUploads = -1;
+  I.Swept.clear();
+  I.ImageSignature.clear();
+  this->AccumulatedSamples = 0;
 }
 
 void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+{
+  const auto start = std::chrono::steady_clock::now();
+  this->RenderAndCheck(ren, vol);
+  this->TimeToDraw = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
   vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
@@ -175,6 +204,11 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     this->ReportError("the input volume's scalars are cell data; VisSweep renders point scalars");
     return;
+  }
+  for (const auto& w : I.Checks.NewWarnings(vs::PropertyChecks::Ignored(
+         this, vol ? vol->GetProperty() : nullptr, ren, this->RenderMode == MonteCarlo)))
+  {
+    vtkWarningMacro(<< w);
   }
   try
   {
@@ -218,6 +252,7 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       this->RenderMonteCarlo(ren, vol);
     }
     I.LastError.clear();
+    I.Checks.ClearError();
   }
   catch (const std::exception& e)
   {
@@ -280,8 +315,8 @@ vs::VolumeGeometry CroppedGeometry(vtkVolumeMapper* mapper, const vs::VolumeGeom
   }
   if (mapper->GetCroppingRegionFlags() != VTK_CROP_SUBVOLUME)
   {
-    throw vs::InputError("only the cropping subvolume (CroppingRegionFlags = VTK_CROP_SUBVOLUME) is supported, got "
-                         "flags " + std::to_string(mapper->GetCroppingRegionFlags()));
+    throw vs::InputError("only the cropping subvolume (CroppingRegionFlags = VTK_CROP_SUBVOLUME) is supported, got " +
+      vs::PropertyChecks::CroppingFlagsName(mapper->GetCroppingRegionFlags()));
   }
   return vs::CropGeometry(full, vtkImageData::SafeDownCast(mapper->GetInput()), mapper->GetCroppingRegionPlanes());
 }
@@ -773,12 +808,37 @@ int vtkVisibilitySweepVolumeMapper::FillInputPortInformation(int port, vtkInform
   return this->Superclass::FillInputPortInformation(port, info);
 }
 
+void vtkVisibilitySweepVolumeMapper::SetDirectionResolution(int resolution)
+{
+  if (resolution != 2 && resolution != 4 && resolution != 8 && resolution != 16)
+  {
+    vtkErrorMacro(<< "DirectionResolution " << resolution << " is not supported (the renderer supports 2, 4, 8 or "
+                  << "16 directions per side); keeping " << this->DirectionResolution);
+    return;
+  }
+  if (this->DirectionResolution != resolution)
+  {
+    this->DirectionResolution = resolution;
+    this->Modified();
+  }
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetRenderModeAsString()
+{
+  return this->RenderMode == EmissionAbsorption ? "EmissionAbsorption" : "MonteCarlo";
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetCellModeAsString()
+{
+  return this->CellMode == TrilinearCells ? "TrilinearCells" : "StochasticCell";
+}
+
 void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "RenderMode: " << (this->RenderMode == MonteCarlo ? "MonteCarlo" : "EmissionAbsorption") << "\n";
+  os << indent << "RenderMode: " << this->GetRenderModeAsString() << "\n";
   os << indent << "SamplingStrategy: " << this->SamplingStrategy << "\n";
-  os << indent << "CellMode: " << this->CellMode << "\n";
+  os << indent << "CellMode: " << this->GetCellModeAsString() << "\n";
   os << indent << "SamplesPerFrame: " << this->SamplesPerFrame << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
   os << indent << "AccumulatedSamples: " << this->AccumulatedSamples << "\n";
@@ -786,21 +846,24 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DirectionResolution: " << this->DirectionResolution << "\n";
   os << indent << "VoxelsPerCell: " << this->VoxelsPerCell << "\n";
   os << indent << "KernelResolution: " << this->KernelResolution << "\n";
-  os << indent << "Filtering: " << this->Filtering << "\n";
+  os << indent << "Filtering: " << (this->Filtering ? "On" : "Off") << "\n";
   os << indent << "FilterAngleFraction: " << this->FilterAngleFraction << "\n";
   os << indent << "EnvironmentIntensity: " << this->EnvironmentIntensity << "\n";
-  os << indent << "EnvironmentVisible: " << this->EnvironmentVisible << "\n";
+  os << indent << "EnvironmentVisible: " << (this->EnvironmentVisible ? "On" : "Off") << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
-  os << indent << "ToneMapping: " << this->ToneMapping << "\n";
+  os << indent << "ToneMapping: " << (this->ToneMapping ? "On" : "Off") << "\n";
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "InteractiveSubsampling: " << this->InteractiveSubsampling << "\n";
-  os << indent << "SampleDistance: " << this->SampleDistance << "\n";
+  os << indent << "SampleDistance: " << this->SampleDistance
+     << " (EmissionAbsorption only: MonteCarlo tracking is exact and needs no step)\n";
   os << indent << "DensityScale: " << this->DensityScale << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "VolumeUploadCount: " << this->VolumeUploadCount << "\n";
   os << indent << "LastDeviceSeconds: " << this->LastDeviceSeconds << "\n";
   os << indent << "LastMajorantSeconds: " << this->LastMajorantSeconds << "\n";
-  os << indent << "CountLookups: " << this->CountLookups << "\n";
+  os << indent << "CountLookups: " << (this->CountLookups ? "On" : "Off") << "\n";
+  os << indent << "LastLookupCounts: " << this->LastLookupCounts[0] << " " << this->LastLookupCounts[1] << " "
+     << this->LastLookupCounts[2] << "\n";
   os << indent << "UpdateScheme: " << this->GetUpdateSchemeAsString() << "\n";
   os << indent << "SkipUnlitDirections: " << (this->SkipUnlitDirections ? "On" : "Off") << "\n";
   os << indent << "UnlitDirections: " << this->UnlitDirections << "\n";
@@ -809,4 +872,11 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DirectionsUpdatedLastFrame: " << this->DirectionsUpdatedLastFrame << "\n";
   os << indent << "DirectionsUpdatedTotal: " << this->DirectionsUpdatedTotal << "\n";
   os << indent << "VisibilityUpdateCount: " << this->VisibilityUpdateCount << "\n";
+  os << indent << "AccumulationResetCount: " << this->AccumulationResetCount << "\n";
+  os << indent << "EnvironmentUploadCount: " << this->EnvironmentUploadCount << "\n";
+  os << indent << "MajorantUpdateCount: " << this->GetMajorantUpdateCount() << "\n";
+  os << indent << "LastSweepSeconds: " << this->LastSweepSeconds << "\n";
+  os << indent << "LastUpdateSeconds: " << this->LastUpdateSeconds << "\n";
+  os << indent << "LastFrameSweepSeconds: " << this->LastFrameSweepSeconds << "\n";
+  os << indent << "LastError: " << (this->Impl->LastError.empty() ? "(none)" : this->Impl->LastError) << "\n";
 }

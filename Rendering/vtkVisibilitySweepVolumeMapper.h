@@ -79,6 +79,7 @@ public:
   vtkGetMacro(RenderMode, int);
   void SetRenderModeToEmissionAbsorption() { this->SetRenderMode(EmissionAbsorption); }
   void SetRenderModeToMonteCarlo() { this->SetRenderMode(MonteCarlo); }
+  const char* GetRenderModeAsString();
   ///@}
 
   ///@{
@@ -98,6 +99,7 @@ public:
   vtkGetMacro(CellMode, int);
   void SetCellModeToTrilinear() { this->SetCellMode(TrilinearCells); }
   void SetCellModeToStochastic() { this->SetCellMode(StochasticCell); }
+  const char* GetCellModeAsString();
   ///@}
 
   ///@{
@@ -115,14 +117,16 @@ public:
   ///@}
 
   ///@{
-  /** Visibility grid: directions per side (4, 8, 16; default 8), voxels per cell (default 4),
+  /** Visibility grid: directions per side (2, 4, 8 or 16, default 8: the renderer's direction
+   *  map holds 256 values; other values are refused with an error and the setting is kept),
+   *  voxels per cell (1 to 256, default 4),
    *  kernel rays (0 = automatic: 1.25 per cell of the longest axis, 2 to 128, coarser than
    *  vtkVisibilityGridFilter's one ray per voxel: the render error is the same at equal spp and
    *  the sweeps are 2.5-6x faster, docs/benchmarks.md), sweep-space filtering (default on) and
    *  its beta/alpha. */
-  vtkSetMacro(DirectionResolution, int);
+  virtual void SetDirectionResolution(int resolution);
   vtkGetMacro(DirectionResolution, int);
-  vtkSetMacro(VoxelsPerCell, double);
+  vtkSetClampMacro(VoxelsPerCell, double, 1.0, 256.0);
   vtkGetMacro(VoxelsPerCell, double);
   vtkSetClampMacro(KernelResolution, int, 0, 1 << 14);
   vtkGetMacro(KernelResolution, int);
@@ -258,7 +262,9 @@ public:
   vtkGetMacro(LastSweepSeconds, double);
 
   ///@{
-  /** Ray-marching step in world units; 0 (default) = half the smallest voxel edge. */
+  /** Ray-marching step of the EmissionAbsorption mode in world units; 0 (default) = half the
+   *  smallest voxel edge. The MonteCarlo mode does not use it: delta and ratio tracking sample
+   *  the exact free-flight distances and transmittance, so no step size enters the estimate. */
   vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(SampleDistance, double);
   ///@}
@@ -270,13 +276,19 @@ public:
   ///@}
 
   ///@{
-  /** Seed of the counter-based random numbers: a fixed seed reproduces an image bit for bit. */
-  vtkSetMacro(Seed, int);
+  /** Seed of the counter-based random numbers (0 to VTK_INT_MAX): a fixed seed reproduces an
+   *  image bit for bit. */
+  vtkSetClampMacro(Seed, int, 0, VTK_INT_MAX);
   vtkGetMacro(Seed, int);
   ///@}
 
-  /** Renders the volume into the renderer's viewport. */
+  /** Renders the volume into the renderer's viewport; TimeToDraw is then its wall seconds.
+   *  Settings VisSweep does not honour (nearest interpolation, gradient opacity, shading, blend
+   *  modes other than composite, depth peeling for volumes) are warned about once per change;
+   *  an error is logged once per change too (GetLastError() holds it on every failed render). */
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
+  /** Releases the device resources (volume, grids, environment, passes and their
+   *  accumulators); the next Render() re-creates them and starts accumulating again. */
   void ReleaseGraphicsResources(vtkWindow*) override;
 
   /** Device seconds of the last render pass (0 if the device has no timestamps). */
@@ -350,6 +362,7 @@ private:
   void operator=(const vtkVisibilitySweepVolumeMapper&) = delete;
 
   void ReportError(const std::string& message);
+  void RenderAndCheck(vtkRenderer* ren, vtkVolume* vol);
   void RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol);
   void RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol);
   void UpdateVisibilityGrid(bool needGrid);
