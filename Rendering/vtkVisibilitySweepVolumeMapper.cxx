@@ -166,8 +166,15 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow*)
 {
   // VTK calls this when the window or the renderer lets go of the prop: free the device memory
   // (passes first, they hold views of the volume and the grid) and forget what it held, so the
-  // next Render() uploads and sweeps again as a first render does.
+  // next Render() uploads and sweeps again as a first render does. What a user may still ask
+  // for once the window is gone stays on the host: the last radiance image (GetRadiance(),
+  // without variance; AccumulatedSamples still counts its samples) and the visibility grid
+  // (downloaded now, every direction, if there is one).
   Internals& I = *this->Impl;
+  if (I.Grid && I.Grid->Valid() && I.Scene)
+  {
+    this->GetVisibilityGrid();
+  }
   I.Environment.reset();
   I.Grid.reset();
   I.Interactive.reset();
@@ -181,7 +188,6 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow*)
   I.GridUploads = -1;
   I.Swept.clear();
   I.ImageSignature.clear();
-  this->AccumulatedSamples = 0;
 }
 
 void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
@@ -722,7 +728,7 @@ const char* vtkVisibilitySweepVolumeMapper::GetUpdateSchemeAsString()
 vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)
 {
   Internals& I = *this->Impl;
-  if (!I.Radiance || !I.MC)
+  if (!I.Radiance || (!I.MC && variance)) // after ReleaseGraphicsResources: the radiance, not its variance
   {
     return nullptr;
   }
@@ -745,7 +751,7 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetVisibilityGrid()
   Internals& I = *this->Impl;
   if (!I.Grid || !I.Grid->Valid() || !I.Scene)
   {
-    return nullptr;
+    return I.Grid ? nullptr : I.VisibilityImage.Get(); // after ReleaseGraphicsResources: its copy
   }
   // The renderer may have left directions without environment light unswept: a user asking for
   // the grid gets every direction.

@@ -287,8 +287,8 @@ public:
    *  modes other than composite, depth peeling for volumes) are warned about once per change;
    *  an error is logged once per change too (GetLastError() holds it on every failed render). */
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
-  /** Releases the device resources (volume, grids, environment, passes and their
-   *  accumulators); the next Render() re-creates them and starts accumulating again. */
+  /** Frees the device resources; the next Render() re-creates them and accumulates anew. The last
+   *  GetRadiance() (no variance) and GetVisibilityGrid() stay on the host, e.g. after the window goes. */
   void ReleaseGraphicsResources(vtkWindow*) override;
 
   /** Device seconds of the last render pass (0 if the device has no timestamps). */

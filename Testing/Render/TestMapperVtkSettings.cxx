@@ -217,7 +217,8 @@ int TestMapperVtkSettings(int, char*[])
   const int uploads = m->GetVolumeUploadCount();
   const int environmentUploads = m->GetEnvironmentUploadCount();
   m->ReleaseGraphicsResources(win);
-  Check(m->GetAccumulatedSamples() == 0, "the accumulator goes with the device resources");
+  Check(MeanRadiance(m) == before, "the last radiance stays available after the release");
+  Check(m->GetRadiance(true) == nullptr, "its variance went with the device accumulator");
   RenderTimes(win, 4);
   Check(std::string(m->GetLastError()).empty(), std::string("renders after the release: ") + m->GetLastError());
   Check(m->GetVolumeUploadCount() == uploads + 1, "the volume is uploaded again after the release");
