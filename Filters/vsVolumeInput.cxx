@@ -37,7 +37,9 @@ std::string CheckImage(vtkImageData* image, vtkDataArray* scalars)
     std::ostringstream os;
     os << "the input scalars '" << (scalars->GetName() ? scalars->GetName() : "")
        << "' have " << scalars->GetNumberOfComponents()
-       << " components; only single-component scalars are supported";
+       << " components; only single-component scalars are supported (neither independent components with their "
+          "own transfer functions nor dependent RGBA / luminance-alpha data are rendered yet: extract one "
+          "component, e.g. with vtkImageExtractComponents)";
     return os.str();
   }
   switch (scalars->GetDataType())

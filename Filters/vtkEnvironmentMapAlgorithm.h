@@ -3,7 +3,7 @@
  * @brief   Base of the environment map sources: the octahedral map as vtkImageData.
  *
  * The common output of vtkEnvironmentMapReader and vtkEnvironmentMapSource: an
- * equal-area octahedral environment map (DESIGN.md, "Directions on the sphere")
+ * equal-area octahedral environment map (docs/reference.md, "Environment light and its orientation")
  * of Size x Size texels, as a vtkImageData of Size x Size x 1 points, one point
  * per texel, with
  *  - point data "Radiance" (3 floats, the active scalars): the mean linear RGB

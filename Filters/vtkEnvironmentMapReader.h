@@ -3,7 +3,7 @@
  * @brief   Reads an equirectangular HDR environment into an octahedral map.
  *
  * Reads a lat-long (equirectangular) environment of linear radiance, in the
- * orientation of DESIGN.md (column u in [0,1) is the azimuth phi = 2 pi (0.5 - u)
+ * orientation of docs/reference.md (column u in [0,1) is the azimuth phi = 2 pi (0.5 - u)
  * from +X towards +Y, row v the polar angle theta = pi v from +Z: +Z is up and
  * the image centre looks along +X), and converts it to the equal-area octahedral
  * map the renderer samples, by integrating the source over each texel (not by

@@ -1,6 +1,6 @@
 /**
  * @class   vtkVisibilityGridFilter
- * @brief   The 5D visibility grid of a volume (seed 000): transmittance towards D x D directions per cell.
+ * @brief   The 5D visibility grid of a volume (von Radziewsky et al. 2017): transmittance towards D x D directions per cell.
  *
  * Input: a vtkImageData volume with point scalars and, via SetVolumeProperty(), the
  * transfer function that turns them into extinction (sigma_t = -ln(1 - alpha) / unit

@@ -8,6 +8,7 @@
 #include "vsLightDirections.h"
 #include "vsMajorantGrid.h"
 #include "vsMonteCarloPass.h"
+#include "vsPropertyChecks.h"
 #include "vsStrategySelector.h"
 #include "vsVisibilityGrid.h"
 #include "vsVisibilityGridUpdater.h"
@@ -69,6 +70,7 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   vtkSmartPointer<vtkImageData> Radiance;
   vtkSmartPointer<vtkImageData> VisibilityImage;
   std::string LastError;
+  vs::PropertyChecks Checks; // the settings VisSweep ignores, warned once per change
   uint32_t Frame = 0;
 };
 
@@ -159,15 +161,52 @@ const char* vtkVisibilitySweepVolumeMapper::GetLastError()
 void vtkVisibilitySweepVolumeMapper::ReportError(const std::string& message)
 {
   this->Impl->LastError = message;
-  vtkErrorMacro(<< message);
+  if (this->Impl->Checks.IsNewError(message)) // once per change, not once per Render()
+  {
+    vtkErrorMacro(<< message);
+  }
 }
 
 void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow*)
 {
-  // The device resources are not tied to the OpenGL context: they stay until the mapper goes.
+  // VTK calls this when the window or the renderer lets go of the prop: free the device memory
+  // (passes first, they hold views of the volume and the grid) and forget what it held, so the
+  // next Render() uploads and sweeps again as a first render does. What a user may still ask
+  // for once the window is gone stays on the host: the last radiance image (GetRadiance(),
+  // without variance; AccumulatedSamples still counts its samples) and the visibility grid
+  // (downloaded now, every direction, if there is one).
+  Internals& I = *this->Impl;
+  if (I.Grid && I.Grid->Grid() && I.Scene)
+  {
+    this->GetVisibilityGrid(); // completes a grid still filling in, then downloads it
+  }
+  I.Environment.reset();
+  I.EnvironmentSource.reset();
+  I.Grid.reset();
+  I.Interactive.reset();
+  I.MC.reset();
+  I.MCGrid.reset();
+  I.EA.reset();
+  I.Scene.reset();
+  I.EnvironmentTime = 0;
+  I.DefaultEnvironment = false;
+  I.GridNeedsFull = true;
+  I.LastGridRequest = vs::GridUpdateRequest();
+  I.Selector.ResetGrid();
+  I.LastRenderSeconds = 0.0;
+  I.LightDirections.clear();
+  I.LightDirectionsKey = { -1, -1 };
+  I.ImageSignature.clear();
 }
 
 void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+{
+  const auto start = std::chrono::steady_clock::now();
+  this->RenderAndCheck(ren, vol);
+  this->TimeToDraw = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
   vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
@@ -180,6 +219,11 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     this->ReportError("the input volume's scalars are cell data; VisSweep renders point scalars");
     return;
+  }
+  for (const auto& w : I.Checks.NewWarnings(vs::PropertyChecks::Ignored(
+         this, vol ? vol->GetProperty() : nullptr, ren, this->RenderMode == MonteCarlo)))
+  {
+    vtkWarningMacro(<< w);
   }
   try
   {
@@ -223,6 +267,7 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       this->RenderMonteCarlo(ren, vol);
     }
     I.LastError.clear();
+    I.Checks.ClearError();
   }
   catch (const std::exception& e)
   {
@@ -285,8 +330,8 @@ vs::VolumeGeometry CroppedGeometry(vtkVolumeMapper* mapper, const vs::VolumeGeom
   }
   if (mapper->GetCroppingRegionFlags() != VTK_CROP_SUBVOLUME)
   {
-    throw vs::InputError("only the cropping subvolume (CroppingRegionFlags = VTK_CROP_SUBVOLUME) is supported, got "
-                         "flags " + std::to_string(mapper->GetCroppingRegionFlags()));
+    throw vs::InputError("only the cropping subvolume (CroppingRegionFlags = VTK_CROP_SUBVOLUME) is supported, got " +
+      vs::PropertyChecks::CroppingFlagsName(mapper->GetCroppingRegionFlags()));
   }
   return vs::CropGeometry(full, vtkImageData::SafeDownCast(mapper->GetInput()), mapper->GetCroppingRegionPlanes());
 }
@@ -805,7 +850,7 @@ std::vector<double> vtkVisibilitySweepVolumeMapper::CombinedVariance(bool autoSt
 vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)
 {
   Internals& I = *this->Impl;
-  if (!I.Radiance || !I.MC)
+  if (!I.Radiance || (!I.MC && variance)) // after ReleaseGraphicsResources: the radiance, not its variance
   {
     return nullptr;
   }
@@ -828,7 +873,7 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetVisibilityGrid()
   Internals& I = *this->Impl;
   if (!I.Grid || !I.Grid->Grid() || !I.Scene)
   {
-    return nullptr;
+    return I.Grid ? nullptr : I.VisibilityImage.Get(); // after ReleaseGraphicsResources: its copy
   }
   // The renderer may have left directions unswept (without environment light, or not yet filled
   // in): a user asking for the grid gets every direction.
@@ -889,16 +934,50 @@ int vtkVisibilitySweepVolumeMapper::FillInputPortInformation(int port, vtkInform
   return this->Superclass::FillInputPortInformation(port, info);
 }
 
+void vtkVisibilitySweepVolumeMapper::SetDirectionResolution(int resolution)
+{
+  if (resolution != 2 && resolution != 4 && resolution != 8 && resolution != 16)
+  {
+    vtkErrorMacro(<< "DirectionResolution " << resolution << " is not supported (the renderer supports 2, 4, 8 or "
+                  << "16 directions per side); keeping " << this->DirectionResolution);
+    return;
+  }
+  if (this->DirectionResolution != resolution)
+  {
+    this->DirectionResolution = resolution;
+    this->Modified();
+  }
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetRenderModeAsString()
+{
+  return this->RenderMode == EmissionAbsorption ? "EmissionAbsorption" : "MonteCarlo";
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetCellModeAsString()
+{
+  return this->CellMode == TrilinearCells ? "TrilinearCells" : "StochasticCell";
+}
+
 void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "RenderMode: " << (this->RenderMode == MonteCarlo ? "MonteCarlo" : "EmissionAbsorption") << "\n";
-  os << indent << "SamplingStrategy: " << this->GetSamplingStrategyAsString() << "\n";
-  os << indent << "EffectiveStrategy: " << this->GetEffectiveStrategyAsString() << "\n";
-  os << indent << "ProgressiveVisibility: " << (this->ProgressiveVisibility ? "On" : "Off") << "\n";
-  os << indent << "SweepFrameFraction: " << this->SweepFrameFraction << "\n";
-  os << indent << "LightWeightedDirections: " << (this->LightWeightedDirections ? "On" : "Off") << "\n";
-  os << indent << "CellMode: " << this->CellMode << "\n";
+  os << indent << "RenderMode: " << this->GetRenderModeAsString() << "
+";
+  os << indent << "SamplingStrategy: " << this->GetSamplingStrategyAsString() << "
+";
+  os << indent << "EffectiveStrategy: " << this->GetEffectiveStrategyAsString() << "
+";
+  os << indent << "ProgressiveVisibility: " << (this->ProgressiveVisibility ? "On" : "Off") << "
+";
+  os << indent << "SweepFrameFraction: " << this->SweepFrameFraction << "
+";
+  os << indent << "LightWeightedDirections: " << (this->LightWeightedDirections ? "On" : "Off") << "
+";
+  os << indent << "PendingDirections: " << this->GetPendingDirections() << "
+";
+  os << indent << "CellMode: " << this->GetCellModeAsString() << "
+";
   os << indent << "SamplesPerFrame: " << this->SamplesPerFrame << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
   os << indent << "AccumulatedSamples: " << this->AccumulatedSamples << "\n";
@@ -906,21 +985,24 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DirectionResolution: " << this->DirectionResolution << "\n";
   os << indent << "VoxelsPerCell: " << this->VoxelsPerCell << "\n";
   os << indent << "KernelResolution: " << this->KernelResolution << "\n";
-  os << indent << "Filtering: " << this->Filtering << "\n";
+  os << indent << "Filtering: " << (this->Filtering ? "On" : "Off") << "\n";
   os << indent << "FilterAngleFraction: " << this->FilterAngleFraction << "\n";
   os << indent << "EnvironmentIntensity: " << this->EnvironmentIntensity << "\n";
-  os << indent << "EnvironmentVisible: " << this->EnvironmentVisible << "\n";
+  os << indent << "EnvironmentVisible: " << (this->EnvironmentVisible ? "On" : "Off") << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
-  os << indent << "ToneMapping: " << this->ToneMapping << "\n";
+  os << indent << "ToneMapping: " << (this->ToneMapping ? "On" : "Off") << "\n";
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "InteractiveSubsampling: " << this->InteractiveSubsampling << "\n";
-  os << indent << "SampleDistance: " << this->SampleDistance << "\n";
+  os << indent << "SampleDistance: " << this->SampleDistance
+     << " (EmissionAbsorption only: MonteCarlo tracking is exact and needs no step)\n";
   os << indent << "DensityScale: " << this->DensityScale << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "VolumeUploadCount: " << this->VolumeUploadCount << "\n";
   os << indent << "LastDeviceSeconds: " << this->LastDeviceSeconds << "\n";
   os << indent << "LastMajorantSeconds: " << this->LastMajorantSeconds << "\n";
-  os << indent << "CountLookups: " << this->CountLookups << "\n";
+  os << indent << "CountLookups: " << (this->CountLookups ? "On" : "Off") << "\n";
+  os << indent << "LastLookupCounts: " << this->LastLookupCounts[0] << " " << this->LastLookupCounts[1] << " "
+     << this->LastLookupCounts[2] << "\n";
   os << indent << "UpdateScheme: " << this->GetUpdateSchemeAsString() << "\n";
   os << indent << "SkipUnlitDirections: " << (this->SkipUnlitDirections ? "On" : "Off") << "\n";
   os << indent << "UnlitDirections: " << this->UnlitDirections << "\n";
@@ -929,4 +1011,11 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DirectionsUpdatedLastFrame: " << this->DirectionsUpdatedLastFrame << "\n";
   os << indent << "DirectionsUpdatedTotal: " << this->DirectionsUpdatedTotal << "\n";
   os << indent << "VisibilityUpdateCount: " << this->VisibilityUpdateCount << "\n";
+  os << indent << "AccumulationResetCount: " << this->AccumulationResetCount << "\n";
+  os << indent << "EnvironmentUploadCount: " << this->EnvironmentUploadCount << "\n";
+  os << indent << "MajorantUpdateCount: " << this->GetMajorantUpdateCount() << "\n";
+  os << indent << "LastSweepSeconds: " << this->LastSweepSeconds << "\n";
+  os << indent << "LastUpdateSeconds: " << this->LastUpdateSeconds << "\n";
+  os << indent << "LastFrameSweepSeconds: " << this->LastFrameSweepSeconds << "\n";
+  os << indent << "LastError: " << (this->Impl->LastError.empty() ? "(none)" : this->Impl->LastError) << "\n";
 }

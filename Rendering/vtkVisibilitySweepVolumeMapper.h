@@ -9,7 +9,10 @@
  *
  * Render modes:
  * - MonteCarlo (default): unbiased progressive single scattering under an HDR
- *   environment (seed 000): delta tracking, a light direction from the sampling
+ *   environment, after R. von Radziewsky, T. Kroes, M. Eisemann and E. Eisemann,
+ *   "Efficient stochastic rendering of static and animated volumes using visibility
+ *   sweeps", IEEE TVCG 2017 (cited below as von Radziewsky et al. 2017): delta
+ *   tracking, a light direction from the sampling
  *   strategy (TwoStep: environment x visibility, then the environment's own quadtree),
  *   ratio-tracked shadow rays. Each Render() adds SamplesPerFrame samples per pixel
  *   until MaximumSamples; any change that alters the image restarts accumulation,
@@ -22,7 +25,7 @@
  * with a vtkEnvironmentMapReader or vtkEnvironmentMapSource; without one, a constant
  * white sky of radiance 1.
  *
- * Conventions (DESIGN.md): world units are those of the image data (origin,
+ * Conventions (docs/reference.md): world units are those of the image data (origin,
  * spacing, direction matrix) under the vtkVolume's matrix; extinction is
  * sigma_t = -ln(1 - alpha) / unitDistance * DensityScale.
  *
@@ -77,6 +80,7 @@ public:
   vtkGetMacro(RenderMode, int);
   void SetRenderModeToEmissionAbsorption() { this->SetRenderMode(EmissionAbsorption); }
   void SetRenderModeToMonteCarlo() { this->SetRenderMode(MonteCarlo); }
+  const char* GetRenderModeAsString();
   ///@}
 
   ///@{
@@ -108,6 +112,7 @@ public:
   vtkGetMacro(CellMode, int);
   void SetCellModeToTrilinear() { this->SetCellMode(TrilinearCells); }
   void SetCellModeToStochastic() { this->SetCellMode(StochasticCell); }
+  const char* GetCellModeAsString();
   ///@}
 
   ///@{
@@ -119,20 +124,22 @@ public:
   ///@}
 
   ///@{
-  /** Added to the visibility before it shapes the pdf (seed 000: 0.01). */
+  /** Added to the visibility before it shapes the pdf (von Radziewsky et al. 2017: 0.01). */
   vtkSetClampMacro(VisibilityEpsilon, double, 1e-6, 1.0);
   vtkGetMacro(VisibilityEpsilon, double);
   ///@}
 
   ///@{
-  /** Visibility grid: directions per side (4, 8, 16; default 8), voxels per cell (default 4),
+  /** Visibility grid: directions per side (2, 4, 8 or 16, default 8: the renderer's direction
+   *  map holds 256 values; other values are refused with an error and the setting is kept),
+   *  voxels per cell (1 to 256, default 4),
    *  kernel rays (0 = automatic: 1.25 per cell of the longest axis, 2 to 128, coarser than
    *  vtkVisibilityGridFilter's one ray per voxel: the render error is the same at equal spp and
    *  the sweeps are 2.5-6x faster, docs/benchmarks.md), sweep-space filtering (default on) and
    *  its beta/alpha. */
-  vtkSetMacro(DirectionResolution, int);
+  virtual void SetDirectionResolution(int resolution);
   vtkGetMacro(DirectionResolution, int);
-  vtkSetMacro(VoxelsPerCell, double);
+  vtkSetClampMacro(VoxelsPerCell, double, 1.0, 256.0);
   vtkGetMacro(VoxelsPerCell, double);
   vtkSetClampMacro(KernelResolution, int, 0, 1 << 14);
   vtkGetMacro(KernelResolution, int);
@@ -206,14 +213,14 @@ public:
   };
 
   ///@{
-  /** Lazy visibility updates for animated volumes (seed 000, Sec. 9). When only the volume's
+  /** Lazy visibility updates for animated volumes (von Radziewsky et al. 2017, Sec. 9). When only the volume's
    *  data changed (a new time step: same geometry, grid parameters, clipping planes and transfer
    *  function), the scheme chooses which directions of the visibility grid to sweep again; the
    *  others keep visibility of earlier data. That changes the variance, never the mean: the
    *  grid only shapes the sampling pdf. Any other change that alters extinction or the grid's
    *  layout recomputes every direction, and so does the first computation. Majorants are
-   *  always recomputed for new data and accumulation restarts. Default RoundRobin (DESIGN.md;
-   *  the paper's most robust scheme); k =
+   *  always recomputed for new data and accumulation restarts. Default RoundRobin (the
+   *  paper's most robust scheme); k =
    *  DirectionsPerFrame (default 4); StaticInterval default 16. */
   vtkSetClampMacro(UpdateScheme, int, FullUpdate, StaticUpdate);
   vtkGetMacro(UpdateScheme, int);
@@ -291,7 +298,9 @@ public:
   vtkGetMacro(LastSweepSeconds, double);
 
   ///@{
-  /** Ray-marching step in world units; 0 (default) = half the smallest voxel edge. */
+  /** Ray-marching step of the EmissionAbsorption mode in world units; 0 (default) = half the
+   *  smallest voxel edge. The MonteCarlo mode does not use it: delta and ratio tracking sample
+   *  the exact free-flight distances and transmittance, so no step size enters the estimate. */
   vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(SampleDistance, double);
   ///@}
@@ -303,13 +312,19 @@ public:
   ///@}
 
   ///@{
-  /** Seed of the counter-based random numbers: a fixed seed reproduces an image bit for bit. */
-  vtkSetMacro(Seed, int);
+  /** Seed of the counter-based random numbers (0 to VTK_INT_MAX): a fixed seed reproduces an
+   *  image bit for bit. */
+  vtkSetClampMacro(Seed, int, 0, VTK_INT_MAX);
   vtkGetMacro(Seed, int);
   ///@}
 
-  /** Renders the volume into the renderer's viewport. */
+  /** Renders the volume into the renderer's viewport; TimeToDraw is then its wall seconds.
+   *  Settings VisSweep does not honour (nearest interpolation, gradient opacity, shading, blend
+   *  modes other than composite, depth peeling for volumes) are warned about once per change;
+   *  an error is logged once per change too (GetLastError() holds it on every failed render). */
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
+  /** Frees the device resources; the next Render() re-creates them and accumulates anew. The last
+   *  GetRadiance() (no variance) and GetVisibilityGrid() stay on the host, e.g. after the window goes. */
   void ReleaseGraphicsResources(vtkWindow*) override;
 
   /** Device seconds of the last render pass (0 if the device has no timestamps). */
@@ -387,6 +402,7 @@ private:
   void operator=(const vtkVisibilitySweepVolumeMapper&) = delete;
 
   void ReportError(const std::string& message);
+  void RenderAndCheck(vtkRenderer* ren, vtkVolume* vol);
   void RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol);
   void RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol);
   void UpdateVisibilityGrid(bool needGrid, bool usesGridOnly);

@@ -41,6 +41,7 @@ int main(int argc, char* argv[])
   vtkNew<vtkVolumeProperty> property;
   property->SetScalarOpacity(opacity);
   property->SetColor(albedo);
+  property->SetInterpolationTypeToLinear(); // what VisSweep does (VTK defaults to nearest)
 
   vtkNew<vtkVisibilitySweepVolumeMapper> mapper;
   mapper->SetInputConnection(reader->GetOutputPort());
@@ -73,7 +74,7 @@ int main(int argc, char* argv[])
   refine->SetCallback([](vtkObject* caller, unsigned long, void* client, void*) {
     auto* m = static_cast<vtkVisibilitySweepVolumeMapper*>(client);
     auto* iren = static_cast<vtkRenderWindowInteractor*>(caller);
-    if (!m->IsConverged())
+    if (!m->IsConverged() && !*m->GetLastError()) // after an error, only interaction renders again
     {
       iren->GetRenderWindow()->Render();
     }

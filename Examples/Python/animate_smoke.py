@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Renders the Mantaflow smoke sequence (Data/smoke: 12 time steps, 41x41x62 voxels) under
 the CC0 city HDRI as numbered PNG frames, updating the visibility grid lazily between time
-steps (seed 000, Sec. 9), and prints each frame's update time (upload, majorants, sweeps)
+steps (von Radziewsky et al. 2017, Sec. 9), and prints each frame's update time (upload, majorants, sweeps)
 and render time.
 
     PYTHONPATH=build xvfb-run -a /usr/bin/python3 Examples/Python/animate_smoke.py \\

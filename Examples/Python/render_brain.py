@@ -29,6 +29,7 @@ def brain_property():
     color.AddRGBPoint(255, 1.0, 1.0, 0.9)
     prop.SetScalarOpacity(opacity)
     prop.SetColor(color)
+    prop.SetInterpolationTypeToLinear()  # what VisSweep does (VTK defaults to nearest)
     prop.SetScalarOpacityUnitDistance(1.0)
     return prop
 
@@ -91,7 +92,8 @@ def main():
         iren.Initialize()
         # Keep refining while the view is still: a repeating timer renders until converged.
         def refine(obj, event):
-            if not args.emission_absorption and not mapper.IsConverged():
+            # after an error, only interaction renders again (no spinning on a failed render)
+            if not args.emission_absorption and not mapper.IsConverged() and not mapper.GetLastError():
                 win.Render()
         iren.AddObserver("TimerEvent", refine)
         iren.CreateRepeatingTimer(30)

@@ -8,6 +8,7 @@
 #include "vsRenderCommand.h"
 #include "vsContext.h"
 #include "vsError.h"
+#include "vsToolCommand.h"
 
 #include <CLI/CLI.hpp>
 
@@ -16,6 +17,7 @@
 int main(int argc, char** argv)
 {
   CLI::App app{ "VisSweep: physically based volume rendering with visibility sweeps (Vulkan compute)" };
+  app.set_version_flag("--version", std::string("vissweep ") + VISSWEEP_VERSION);
   app.require_subcommand(1);
   bool all = false;
   auto* info = app.add_subcommand("info", "print the Vulkan device VisSweep uses and the limits that matter");
@@ -39,7 +41,8 @@ int main(int argc, char** argv)
   }
   catch (const CLI::ParseError& e)
   {
-    return app.exit(e);
+    // --help and --version exit 0; a command line CLI11 rejects exits 2, like every other error.
+    return app.exit(e) == 0 ? 0 : 2;
   }
   catch (const std::exception& e)
   {
@@ -61,6 +64,7 @@ int main(int argc, char** argv)
       auto ctx = vs::Context::Default();
       std::cout << "VisSweep computes on:\n" << ctx->Info().Describe();
       std::cout << "  validation layers:       " << (ctx->ValidationEnabled() ? "on" : "off") << "\n";
+      std::cout << "vissweep " << VISSWEEP_VERSION << ", data in " << vstool::DataRoot().string() << "\n";
       return 0;
     }
   }

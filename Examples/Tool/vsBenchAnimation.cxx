@@ -22,10 +22,6 @@
 #include <string>
 #include <vector>
 
-#ifndef VISSWEEP_BENCHMARKS
-#define VISSWEEP_BENCHMARKS ""
-#endif
-
 namespace vstool
 {
 namespace
@@ -213,7 +209,7 @@ int Run(const AnimationOptions& o)
     if (!o.Plot.empty())
     {
       // matplotlib (python3-matplotlib) draws it from the JSON.
-      const std::string cmd = "/usr/bin/python3 '" + std::string(VISSWEEP_BENCHMARKS) + "/plot_animation.py' '" + json +
+      const std::string cmd = "/usr/bin/python3 '" + BenchmarksDir() + "/plot_animation.py' '" + json +
         "' '" + o.Plot + "'";
       if (std::system(cmd.c_str()) != 0)
       {
@@ -228,7 +224,7 @@ int Run(const AnimationOptions& o)
 void AddBenchAnimation(CLI::App& bench)
 {
   auto o = std::make_shared<AnimationOptions>();
-  auto* cmd = bench.add_subcommand("animation", "lazy visibility updates at equal time per frame (seed 000, Sec. 9)");
+  auto* cmd = bench.add_subcommand("animation", "lazy visibility updates at equal time per frame (von Radziewsky et al. 2017, Sec. 9)");
   cmd->add_option("scene", o->SceneFile, "a scene with a volume 'files' sequence")->required();
   cmd->add_option("--frames", o->Frames, "time steps A:B (default: all)");
   cmd->add_option("--budget-per-frame", o->Budget, "seconds per frame, update + render (default 2)")

@@ -1,5 +1,5 @@
 // vsBenchAnimation.h — `vissweep bench animation SCENE.json [--frames A:B] [--budget-per-frame S]
-// [--reference-spp N] [--json OUT]`: lazy visibility updates at equal time per frame (seed 000,
+// [--reference-spp N] [--json OUT]`: lazy visibility updates at equal time per frame (von Radziewsky et al. 2017,
 // Sec. 9). For each method (Full, RoundRobin, EnvironmentGuided, Static with TwoStep sampling,
 // and Environment sampling without any sweep), every time step of the scene's volume sequence
 // is rendered with the same wall time per frame (update + render, the paper's adjusted

@@ -26,10 +26,6 @@
 #include <functional>
 #include <sstream>
 
-#ifndef VISSWEEP_BENCHMARKS
-#define VISSWEEP_BENCHMARKS ""
-#endif
-
 namespace vstool
 {
 namespace
@@ -40,7 +36,7 @@ using Clock = std::chrono::steady_clock;
 struct Options
 {
   std::string Scene, Reference, Json, Csv, Plot;
-  std::string ReferenceDir = std::string(VISSWEEP_BENCHMARKS) + "/references";
+  std::string ReferenceDir = BenchmarksDir() + "/references";
   std::string ReferenceStrategy = "two-step";
   int ReferenceSpp = 4096;
   int Width = 128, Height = 128, Repeats = 2;
@@ -415,7 +411,7 @@ int Run(const Options& given)
     std::string json = o.Json.empty() ? o.Plot + ".json" : o.Json;
     if (o.Json.empty())
       write(json, report.dump(2) + "\n");
-    const std::string script = (fs::path(VISSWEEP_BENCHMARKS) / "plot_convergence.py").string();
+    const std::string script = (fs::path(BenchmarksDir()) / "plot_convergence.py").string();
     const std::string cmd = "/usr/bin/python3 '" + script + "' '" + json + "' '" + o.Plot + "'";
     if (std::system(cmd.c_str()) != 0)
       throw std::runtime_error("plotting failed: " + cmd);

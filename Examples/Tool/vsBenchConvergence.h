@@ -1,6 +1,6 @@
 // vsBenchConvergence.h — `vissweep bench convergence SCENE.json`: error against run time
 // (and against samples per pixel) for each sampling strategy, against a reference image
-// (seed 000's Figs. 9 and 10 on this machine).
+// (von Radziewsky et al. 2017, Figs. 9 and 10 on this machine).
 #ifndef vsBenchConvergence_h
 #define vsBenchConvergence_h
 

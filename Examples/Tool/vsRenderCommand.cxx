@@ -4,6 +4,7 @@
 #include "vsPendingFile.h"
 #include "vsRenderFrames.h"
 #include "vsToolVolume.h"
+#include "vsContext.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
@@ -148,6 +149,8 @@ int Run(const RenderOptions& o)
 
   const double pixels = double(scene.Render.Width) * scene.Render.Height;
   nlohmann::json stats;
+  stats["version"] = VISSWEEP_VERSION;
+  stats["device"] = DeviceJson();
   stats["scene"] = o.SceneFile;
   stats["outputs"] = o.Outputs;
   stats["width"] = scene.Render.Width;
@@ -222,6 +225,12 @@ int Run(const RenderOptions& o)
 }
 }
 
+nlohmann::json DeviceJson()
+{
+  const vs::DeviceInfo& d = vs::Context::Default()->Info();
+  return { { "name", d.Name }, { "type", d.Type }, { "driver", d.Driver }, { "vulkan", d.ApiVersion } };
+}
+
 Scene LoadScene(const RenderOptions& o)
 {
   Scene scene = ReadSceneFile(o.SceneFile);
@@ -239,8 +248,7 @@ Scene LoadScene(const RenderOptions& o)
   }
   if (!o.Strategy.empty())
   {
-    StrategyIndex(o.Strategy, "--strategy");
-    scene.Render.Strategy = o.Strategy;
+    scene.Render.Strategy = SceneStrategies()[StrategyIndex(o.Strategy, "--strategy")];
   }
   if (o.Seed >= 0)
   {
@@ -533,6 +541,10 @@ SceneObjects BuildScene(const Scene& scene)
     camera->SetParallelScale(*scene.Camera.ParallelScale);
   }
   camera->OrthogonalizeViewUp();
+  if (scene.Camera.Reset)
+  {
+    o.Renderer->ResetCamera(); // keeps the default direction (+Y, +Z up), frames the volume's bounds
+  }
   o.Renderer->ResetCameraClippingRange();
 
   vs::RequireDisplay();
@@ -548,7 +560,10 @@ void AddRender(CLI::App& app)
 {
   auto o = std::make_shared<RenderOptions>();
   auto* cmd = app.add_subcommand("render", "render a scene file (Monte Carlo, progressive) to EXR and/or PNG");
-  cmd->add_option("scene", o->SceneFile, "the scene file (JSON, see DESIGN.md)")->required();
+  cmd->add_option("scene", o->SceneFile,
+       "the scene file (JSON; its format and the conventions: docs/reference.md, installed as "
+       "share/doc/vissweep/reference.md)")
+    ->required();
   cmd->add_option("-o,--output", o->Outputs, "output image: .exr (linear float RGBA) or .png (tone mapped); repeat for both")
     ->required();
   cmd->add_option("--width", o->Width, "image width (overrides the scene)")->check(CLI::Range(1, 16384));
@@ -557,7 +572,9 @@ void AddRender(CLI::App& app)
   auto* budget = cmd->add_option("--time-budget", o->TimeBudget, "render for this many seconds instead of a fixed spp")
                    ->check(CLI::PositiveNumber);
   spp->excludes(budget);
-  cmd->add_option("--strategy", o->Strategy, "auto (the default), uniform, environment, visibility, combined or two-step (overrides the scene)");
+  cmd->add_option("--strategy", o->Strategy,
+    "auto (the default), uniform, environment, visibility, combined or two-step, or the API's spelling (TwoStep) "
+    "(overrides the scene)");
   cmd->add_option("--seed", o->Seed, "random seed (overrides the scene)")->check(CLI::NonNegativeNumber);
   cmd->add_option("--samples-per-frame", o->SamplesPerFrame, "samples per pixel added by each progressive frame")
     ->check(CLI::Range(1, 1 << 16));

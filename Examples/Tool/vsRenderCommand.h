@@ -70,6 +70,8 @@ struct ProgressiveResult
   double SweepSeconds = 0.0;    // sweeps on the device
 };
 
+/** The Vulkan device the renders run on (name, type, driver, Vulkan version), for --json. */
+nlohmann::json DeviceJson();
 /** Reads the scene file and applies the command line's overrides (size, spp, strategy, seed). */
 Scene LoadScene(const RenderOptions& options);
 /** Renders until `target` spp (or `timeBudget` seconds when > 0); throws std::runtime_error on

@@ -176,6 +176,8 @@ int RunFrames(const RenderOptions& o)
   }
 
   nlohmann::json stats;
+  stats["version"] = VISSWEEP_VERSION;
+  stats["device"] = DeviceJson();
   stats["scene"] = o.SceneFile;
   stats["width"] = scene.Render.Width;
   stats["height"] = scene.Render.Height;

@@ -1,6 +1,7 @@
 #include "vsSceneFile.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -484,8 +485,7 @@ Scene::RenderSection ParseRender(const json& v)
   }
   if (v.contains("strategy"))
   {
-    s.Strategy = String(v["strategy"], "render.strategy");
-    StrategyIndex(s.Strategy, "render.strategy");
+    s.Strategy = SceneStrategies()[StrategyIndex(String(v["strategy"], "render.strategy"), "render.strategy")];
   }
   if (v.contains("seed"))
   {
@@ -624,10 +624,28 @@ const std::vector<std::string>& SceneStrategies()
   return names;
 }
 
+namespace
+{
+// "Two-Step", "two_step", "TwoStep" -> "twostep".
+std::string Folded(const std::string& name)
+{
+  std::string f;
+  for (const char c : name)
+  {
+    if (c != '-' && c != '_')
+    {
+      f += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+  }
+  return f;
+}
+}
+
 int StrategyIndex(const std::string& name, const std::string& key)
 {
   const auto& names = SceneStrategies();
-  auto it = std::find(names.begin(), names.end(), name);
+  auto it = std::find_if(
+    names.begin(), names.end(), [&](const std::string& n) { return Folded(n) == Folded(name); });
   if (it == names.end())
   {
     Fail(key, "unknown strategy '" + name + "' (expected " + List(names) + ")");
@@ -687,8 +705,8 @@ bool Scene::EnvironmentSection::operator==(const EnvironmentSection& o) const
 
 bool Scene::CameraSection::operator==(const CameraSection& o) const
 {
-  return std::tie(Position, FocalPoint, ViewUp, ViewAngle, ParallelScale) ==
-    std::tie(o.Position, o.FocalPoint, o.ViewUp, o.ViewAngle, o.ParallelScale);
+  return std::tie(Position, FocalPoint, ViewUp, ViewAngle, ParallelScale, Reset) ==
+    std::tie(o.Position, o.FocalPoint, o.ViewUp, o.ViewAngle, o.ParallelScale, o.Reset);
 }
 
 bool Scene::RenderSection::operator==(const RenderSection& o) const
@@ -733,7 +751,15 @@ Scene ParseScene(const json& j, const std::string& baseDir)
   {
     s.Environment = ParseEnvironment(j["environment"], baseDir);
   }
-  s.Camera = ParseCamera(Require(j, "", "camera"));
+  if (j.contains("camera"))
+  {
+    s.Camera = ParseCamera(j["camera"]);
+  }
+  else
+  {
+    s.Camera.Reset = true;
+    s.Camera.Position = { 0, -1, 0 }; // the direction; the renderer frames the volume along it
+  }
   if (j.contains("render"))
   {
     s.Render = ParseRender(j["render"]);
@@ -851,16 +877,19 @@ json ToJson(const Scene& s)
   env["background"] = Array3(e.Background);
   j["environment"] = env;
 
-  json cam = json::object();
-  cam["position"] = Array3(s.Camera.Position);
-  cam["focal_point"] = Array3(s.Camera.FocalPoint);
-  cam["view_up"] = Array3(s.Camera.ViewUp);
-  cam["view_angle"] = s.Camera.ViewAngle;
-  if (s.Camera.ParallelScale)
+  if (!s.Camera.Reset)
   {
-    cam["parallel_scale"] = *s.Camera.ParallelScale;
+    json cam = json::object();
+    cam["position"] = Array3(s.Camera.Position);
+    cam["focal_point"] = Array3(s.Camera.FocalPoint);
+    cam["view_up"] = Array3(s.Camera.ViewUp);
+    cam["view_angle"] = s.Camera.ViewAngle;
+    if (s.Camera.ParallelScale)
+    {
+      cam["parallel_scale"] = *s.Camera.ParallelScale;
+    }
+    j["camera"] = cam;
   }
-  j["camera"] = cam;
 
   j["render"] = { { "width", s.Render.Width }, { "height", s.Render.Height }, { "spp", s.Render.Spp },
     { "strategy", s.Render.Strategy }, { "seed", s.Render.Seed }, { "exposure", s.Render.Exposure },

@@ -1,17 +1,18 @@
-// vsSceneFile.h — the scene file of DESIGN.md ("Scene file") as a plain C++ value:
+// vsSceneFile.h — the scene file of docs/reference.md ("The scene file") as a plain C++ value:
 // parsing (strict: unknown keys and bad values throw std::runtime_error naming the
 // key path, e.g. "render.strategy: unknown strategy 'foo' (...)") and writing back
 // (ParseScene(ToJson(s), dir) == s). No VTK here: vsRenderCommand builds the
 // pipeline from a Scene.
 //
-// Extensions to DESIGN.md's example (all optional):
+// Beyond the basic example of docs/reference.md (all optional):
 //  - volume: "files" (a .vdb sequence, one file per time step) instead of "file",
 //    and "time_step" (which step to render, default 0).
 //  - environment: instead of "file", exactly one procedural environment:
 //    {"constant": [r,g,b]}, {"sun": {"direction": [x,y,z], "radius_deg": r,
 //    "radiance": [r,g,b], "sky": [r,g,b]}}, {"two_tone": {"upper": [..], "lower": [..]}};
 //    "octahedral_size" (0 = automatic). Without "environment": a constant white sky.
-//  - camera: "parallel_scale" (parallel projection when present).
+//  - camera: "parallel_scale" (parallel projection when present); the whole section is optional
+//    (without it the view frames the volume, as vtkRenderer::ResetCamera does).
 //  - render: "exposure" and "tone_mapping" (the PNG's display transform); for time ranges
 //    (`vissweep render --frames`), "update_scheme" ("full", "round-robin" (default), "environment-guided",
 //    "static"), "directions_per_frame" (default 4) and "static_interval" (default 16).
@@ -84,6 +85,7 @@ struct Scene
     Vec3 ViewUp{ 0, 0, 1 };
     double ViewAngle = 30.0;
     std::optional<double> ParallelScale;
+    bool Reset = false; // no "camera" in the file: look along +Y, +Z up, framing the volume (ResetCamera)
     bool operator==(const CameraSection& o) const;
   };
   struct RenderSection
@@ -95,7 +97,7 @@ struct Scene
     int Seed = 1;
     double Exposure = 1.0;
     bool ToneMapping = true;
-    std::string UpdateScheme = "round-robin"; // lazy visibility updates between time steps (DESIGN.md default)
+    std::string UpdateScheme = "round-robin"; // lazy visibility updates between time steps (the default)
     int DirectionsPerFrame = 4;
     int StaticInterval = 16;
     bool operator==(const RenderSection& o) const;
@@ -136,7 +138,8 @@ struct Scene
 
 /** The strategies of the scene file, in the mapper's enum order (uniform = 0 ... two-step = 4). */
 const std::vector<std::string>& SceneStrategies();
-/** The mapper's enum value of a strategy name; throws std::runtime_error naming `key` if unknown. */
+/** The mapper's enum value of a strategy name: the scene file's ("two-step") or the API's
+ *  ("TwoStep"; case, '-' and '_' do not matter); throws std::runtime_error naming `key` if unknown. */
 int StrategyIndex(const std::string& name, const std::string& key = "render.strategy");
 
 /** The update schemes of the scene file, in the mapper's enum order (full = 0 ... static = 3). */

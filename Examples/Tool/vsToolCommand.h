@@ -8,18 +8,32 @@
 
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
-
-#ifndef VISSWEEP_EXAMPLE_SCENES
-#define VISSWEEP_EXAMPLE_SCENES ""
-#endif
+#include <system_error>
 
 namespace vstool
 {
+/** The tool's data (example scenes, benchmark scenes and plot scripts, environment maps):
+ *  <folder of the executable>/../share/vissweep, in the build tree (links to the sources) as
+ *  in an install. No source-tree path is compiled in, so an installed tool works where it lands. */
+inline std::filesystem::path DataRoot()
+{
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::filesystem::path("share/vissweep") : exe.parent_path().parent_path() / "share" / "vissweep";
+}
+
 /** A scene of Examples/Scenes (the benchmarks' defaults), by file name. */
 inline std::string ExampleScene(const std::string& name)
 {
-  return std::string(VISSWEEP_EXAMPLE_SCENES) + "/" + name;
+  return (DataRoot() / "Examples" / "Scenes" / name).string();
+}
+
+/** The Benchmarks folder (benchmark scenes, plot scripts, the references' default cache). */
+inline std::string BenchmarksDir()
+{
+  return (DataRoot() / "Benchmarks").string();
 }
 
 template <class Run>

@@ -3,7 +3,7 @@
  * images converted to the equal-area octahedral map the renderer samples, and
  * the luminance importance pyramid (quadtree) built on it. No VTK types.
  *
- * Conventions (DESIGN.md, "Environment map file" and "Directions on the sphere"):
+ * Conventions (docs/reference.md, "Environment light and its orientation"):
  *  - Lat-long: column u in [0,1) left to right is the azimuth phi = 2 pi (0.5 - u),
  *    measured from +X towards +Y; row v in [0,1) top to bottom is the polar angle
  *    theta = pi v from +Z. +Z is up, the image centre looks along +X, u = 0.25 is +Y.

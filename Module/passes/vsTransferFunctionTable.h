@@ -1,5 +1,5 @@
 // vsTransferFunctionTable.h — the transfer function as a device lookup table of
-// (albedo r, g, b, extinction) over a scalar range (DESIGN.md conventions):
+// (albedo r, g, b, extinction) over a scalar range (docs/reference.md conventions):
 // sigma_t(s) = -ln(1 - alpha(s)) / unitDistance * densityScale, alpha clamped
 // below 1; the colour transfer function is the single-scattering albedo.
 #ifndef vsTransferFunctionTable_h

@@ -1,4 +1,4 @@
-// vsVisibilityGrid.h — the 5D visibility grid of seed 000 (Sec. 5, 6, 8) on the
+// vsVisibilityGrid.h — the 5D visibility grid of von Radziewsky et al. 2017 (Sec. 5, 6, 8) on the
 // device: V(cell, direction) = transmittance from the cell towards the light
 // direction, for D x D equal-area directions and cells of VoxelsPerCell^3 voxels.
 // Computed by plane sweeps (default) or by brute-force ray marching (the reference).

@@ -1,4 +1,4 @@
-// vsVisibilityUpdateScheduler.h — lazy visibility updates for animated volumes (seed 000,
+// vsVisibilityUpdateScheduler.h — lazy visibility updates for animated volumes (von Radziewsky et al. 2017,
 // Sec. 9): when only the volume's data changed (a new time step with the same geometry, grid
 // parameters, clipping and transfer function), which directions of the visibility grid to
 // re-sweep. The grid then mixes directions swept for different time steps; the renderer stays

@@ -81,7 +81,7 @@ vs::LatLongImage Spot(int w, int h, double u, double v)
 
 TEST(EnvironmentMapCore, LatLongConventions)
 {
-  // DESIGN.md: phi = 2 pi (0.5 - u) from +X towards +Y, theta = pi v from +Z.
+  // docs/reference.md: phi = 2 pi (0.5 - u) from +X towards +Y, theta = pi v from +Z.
   EXPECT_LT(glm::length(vs::LatLongToDirection(0.5, 0.5) - glm::vec3(1, 0, 0)), 1e-6f);
   EXPECT_LT(glm::length(vs::LatLongToDirection(0.25, 0.5) - glm::vec3(0, 1, 0)), 1e-6f);
   EXPECT_LT(glm::length(vs::LatLongToDirection(0.75, 0.5) - glm::vec3(0, -1, 0)), 1e-6f);

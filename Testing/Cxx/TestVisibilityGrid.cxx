@@ -1,4 +1,4 @@
-// The visibility grid (seed 000, Sec. 6 and 8) against analytic transmittance,
+// The visibility grid (von Radziewsky et al. 2017, Sec. 6 and 8) against analytic transmittance,
 // against the brute force, on the MRI, and on aliasing-prone thin occluders.
 #include "vsVisibilityTestScene.h"
 

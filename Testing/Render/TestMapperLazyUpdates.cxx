@@ -1,4 +1,4 @@
-// Lazy visibility updates (seed 000, Sec. 9) through the mapper's counters and images:
+// Lazy visibility updates (von Radziewsky et al. 2017, Sec. 9) through the mapper's counters and images:
 //  - counters: after a data-only change Full sweeps all 64 directions, RoundRobin the next k,
 //    EnvironmentGuided k, Static all at every StaticInterval-th change and none in between;
 //    anything else that changes extinction or the grid's layout sweeps everything; majorants
@@ -147,7 +147,7 @@ void TestCounters()
   {
     Scene s(a);
     Check(s.Mapper->GetUpdateScheme() == vtkVisibilitySweepVolumeMapper::RoundRobin,
-      "RoundRobin is the default (DESIGN.md)");
+      "RoundRobin is the default (docs/reference.md)");
     s.Mapper->SetUpdateSchemeToFull();
     s.Window->Render();
     Check(s.Mapper->GetDirectionsUpdatedLastFrame() == 64, "the first computation is full");

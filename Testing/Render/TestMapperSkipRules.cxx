@@ -1,4 +1,4 @@
-// DESIGN.md's skip rules, through the counters of the mapper: each change does the work it
+// The skip rules (README, "How it works"), through the counters of the mapper: each change does the work it
 // needs and no more (camera/colour: restart accumulation only; opacity, data, unit distance,
 // density scale, clipping: recompute majorants and visibility; environment: the light's pdf
 // only, unless its light moved inside a direction texel: the grid is swept towards each

@@ -1,4 +1,4 @@
-// Directions without environment light are not swept (DESIGN.md, "What must be skipped"):
+// Directions without environment light are not swept (README, "Skip rules"):
 // Combined and TwoStep pick a grid direction with probability visibility x importance, so the
 // visibility of a direction whose importance is 0 is never read. Under a sky with a black
 // ground:

@@ -73,6 +73,7 @@ vtkSmartPointer<vtkVolumeProperty> BrainProperty()
   property->SetScalarOpacity(opacity);
   property->SetColor(color);
   property->SetScalarOpacityUnitDistance(1.0);
+  property->SetInterpolationTypeToLinear(); // what VisSweep does; VTK's default (nearest) warns
   return property;
 }
 

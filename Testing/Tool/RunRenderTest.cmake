@@ -1,6 +1,7 @@
 # Drives `vissweep render` for the tool's ctests (cmake -P).
 #   -DVISSWEEP=<exe> -DCHECK_EXR=<exe> -DOUT_DIR=<dir> -DMODE=good|bad|budget
 #   good:   -DSCENE=<json>          renders 32x32, writes .exr + .png + stats, checks them
+#           [-DCHECK=framed]        and that the volume is centred in the view (vsCheckExr)
 #   budget: -DSCENE=<json>          --time-budget instead of --spp
 #   bad:    -DSCENE=<json> -DEXPECT=<text> [-DEXTRA=<args;...>]  exit code 2, message, no output
 #   frames: -DSCENE=<json> (a 3-step sequence, round-robin)  --frames 0:2 to numbered EXR + PNG,
@@ -27,7 +28,7 @@ if (MODE STREQUAL "good" OR MODE STREQUAL "budget")
   endif ()
   execute_process(
     COMMAND "${VISSWEEP}" render "${SCENE}" -o "${exr}" -o "${png}" --width 32 --height 32 ${amount}
-      --seed 3 --json "${stats}"
+      --seed 3 --json "${stats}" ${EXTRA}
     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   message(STATUS "stdout: ${out}")
   if (NOT rc EQUAL 0)
@@ -38,7 +39,7 @@ if (MODE STREQUAL "good" OR MODE STREQUAL "budget")
       message(FATAL_ERROR "missing output ${f}")
     endif ()
   endforeach ()
-  execute_process(COMMAND "${CHECK_EXR}" "${exr}" 32 32 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  execute_process(COMMAND "${CHECK_EXR}" "${exr}" 32 32 ${CHECK} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   message(STATUS "${out}")
   if (NOT rc EQUAL 0)
     message(FATAL_ERROR "bad EXR: ${out} ${err}")
@@ -53,6 +54,15 @@ if (MODE STREQUAL "good" OR MODE STREQUAL "budget")
   string(JSON pps GET "${json}" paths_per_second)
   if (NOT width EQUAL 32)
     message(FATAL_ERROR "stats: width ${width}")
+  endif ()
+  string(JSON strategy GET "${json}" strategy)
+  if (NOT strategy MATCHES "^(uniform|environment|visibility|combined|two-step)$")
+    message(FATAL_ERROR "stats: strategy '${strategy}' is not in the scene file's spelling")
+  endif ()
+  string(JSON version GET "${json}" version)
+  string(JSON device GET "${json}" device name)
+  if (NOT version MATCHES "^[0-9]+\\.[0-9]+\\.[0-9]+$" OR device STREQUAL "")
+    message(FATAL_ERROR "stats: version '${version}', device '${device}'")
   endif ()
   if (MODE STREQUAL "good" AND NOT spp EQUAL 3)
     message(FATAL_ERROR "stats: spp ${spp}, expected 3")

@@ -1,5 +1,7 @@
-// vsCheckExr FILE.exr WIDTH HEIGHT — exits 0 when FILE is a readable OpenEXR image of that size
-// with finite, non-negative R, G, B everywhere and some light (used by the tool's ctest).
+// vsCheckExr FILE.exr WIDTH HEIGHT [framed] — exits 0 when FILE is a readable OpenEXR image of that
+// size with finite, non-negative R, G, B everywhere and some light (used by the tool's ctest).
+// "framed": also the volume is in view and centred, as vtkRenderer::ResetCamera frames it: the
+// centre pixel is covered (alpha > 0.3) and the four corner pixels are not (alpha < 0.05).
 #include <ImfArray.h>
 #include <ImfRgbaFile.h>
 
@@ -7,12 +9,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <string>
 
 int main(int argc, char** argv)
 {
-  if (argc != 4)
+  if (argc != 4 && !(argc == 5 && std::string(argv[4]) == "framed"))
   {
-    std::fprintf(stderr, "usage: vsCheckExr FILE.exr WIDTH HEIGHT\n");
+    std::fprintf(stderr, "usage: vsCheckExr FILE.exr WIDTH HEIGHT [framed]\n");
     return 2;
   }
   try
@@ -58,6 +61,23 @@ int main(int argc, char** argv)
     {
       std::fprintf(stderr, "%s: the image is black\n", argv[1]);
       return 1;
+    }
+    if (argc == 5)
+    {
+      const float centre = pixels[h / 2][w / 2].a;
+      const float corners[4] = { pixels[0][0].a, pixels[0][w - 1].a, pixels[h - 1][0].a, pixels[h - 1][w - 1].a };
+      std::printf("alpha: centre %g, corners %g %g %g %g\n", double(centre), double(corners[0]),
+        double(corners[1]), double(corners[2]), double(corners[3]));
+      bool framed = centre > 0.3f;
+      for (float a : corners)
+      {
+        framed = framed && a < 0.05f;
+      }
+      if (!framed)
+      {
+        std::fprintf(stderr, "%s: the volume is not centred in the view\n", argv[1]);
+        return 1;
+      }
     }
   }
   catch (const std::exception& e)

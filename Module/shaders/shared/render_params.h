@@ -12,7 +12,7 @@
 
 VS_NAMESPACE_BEGIN
 
-VS_CONST uint VS_CELL_TRILINEAR = 0u;  /* interpolate the 8 cells' maps (seed 000) */
+VS_CONST uint VS_CELL_TRILINEAR = 0u;  /* interpolate the 8 cells' maps (von Radziewsky et al. 2017) */
 VS_CONST uint VS_CELL_STOCHASTIC = 1u; /* pick one cell with its trilinear weight */
 
 struct VsRenderParams

@@ -1,5 +1,5 @@
 /*
- * rng.h — counter-based random numbers (DESIGN.md: "a PCG-style hash of pixel,
+ * rng.h — counter-based random numbers (docs/reference.md: "a PCG-style hash of pixel,
  * frame and dimension"). No state is carried between frames: the n-th number of
  * pixel p at frame f is pcg4d(p, f ^ seed, n), so a render with a fixed seed is
  * reproducible bit for bit, in any order of evaluation.

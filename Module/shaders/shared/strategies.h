@@ -1,6 +1,6 @@
 /*
  * strategies.h — the five direction-sampling strategies of the renderer
- * (DESIGN.md; Kroes et al., visibility sweeps, Sec. 7): each a sample
+ * (von Radziewsky et al. 2017, Sec. 7): each a sample
  * function returning a unit direction and its pdf, and a pdf function for an
  * arbitrary direction. pdfs are with respect to solid angle (1/sr).
  *

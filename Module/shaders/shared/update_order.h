@@ -1,5 +1,5 @@
 /*
- * update_order.h — the round-robin order of lazy visibility updates (seed 000,
+ * update_order.h — the round-robin order of lazy visibility updates (von Radziewsky et al. 2017,
  * Sec. 9): which of the D x D directions of the visibility grid to re-sweep k-th.
  *
  * D = 2^n. The counter k (taken modulo D*D) has 2n bits; its even bits form x and

@@ -1,0 +1,145 @@
+#include "vsPropertyChecks.h"
+
+#include "vtkPiecewiseFunction.h"
+#include "vtkRenderer.h"
+#include "vtkVolumeMapper.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace vs
+{
+namespace
+{
+const char* BlendModeName(int mode)
+{
+  switch (mode)
+  {
+    case vtkVolumeMapper::COMPOSITE_BLEND:
+      return "COMPOSITE_BLEND";
+    case vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND:
+      return "MAXIMUM_INTENSITY_BLEND";
+    case vtkVolumeMapper::MINIMUM_INTENSITY_BLEND:
+      return "MINIMUM_INTENSITY_BLEND";
+    case vtkVolumeMapper::AVERAGE_INTENSITY_BLEND:
+      return "AVERAGE_INTENSITY_BLEND";
+    case vtkVolumeMapper::ADDITIVE_BLEND:
+      return "ADDITIVE_BLEND";
+    case vtkVolumeMapper::ISOSURFACE_BLEND:
+      return "ISOSURFACE_BLEND";
+    case vtkVolumeMapper::SLICE_BLEND:
+      return "SLICE_BLEND";
+  }
+  return "an unknown blend mode";
+}
+
+// A gradient opacity that changes anything: set, enabled, and not 1 everywhere.
+bool HasEffectiveGradientOpacity(vtkVolumeProperty* property)
+{
+  if (!property->HasGradientOpacity(0) || property->GetDisableGradientOpacity(0))
+  {
+    return false;
+  }
+  vtkPiecewiseFunction* f = property->GetStoredGradientOpacity(0);
+  if (!f)
+  {
+    return false;
+  }
+  for (int i = 0; i < f->GetSize(); ++i)
+  {
+    double node[4];
+    f->GetNodeValue(i, node);
+    if (node[1] != 1.0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+}
+
+std::vector<std::string> PropertyChecks::Ignored(
+  vtkVolumeMapper* mapper, vtkVolumeProperty* property, vtkRenderer* renderer, bool monteCarlo)
+{
+  std::vector<std::string> ignored;
+  if (property)
+  {
+    if (property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION)
+    {
+      ignored.push_back("vtkVolumeProperty InterpolationType is nearest (VTK's default), but VisSweep interpolates "
+                        "trilinearly: label maps show blended labels between their regions. Call "
+                        "SetInterpolationTypeToLinear() to silence this");
+    }
+    if (HasEffectiveGradientOpacity(property))
+    {
+      ignored.push_back("the vtkVolumeProperty's gradient opacity is ignored: VisSweep's opacity depends on the "
+                        "scalar only (DisableGradientOpacityOn() to silence this)");
+    }
+    if (property->GetShade(0))
+    {
+      ignored.push_back(monteCarlo
+          ? "vtkVolumeProperty Shade is on, but the Monte Carlo mode lights the volume by single scattering of the "
+            "environment, which replaces Phong shading: Ambient, Diffuse, Specular and SpecularPower are ignored"
+          : "vtkVolumeProperty Shade is on, but the emission-absorption mode does not shade: Ambient, Diffuse, "
+            "Specular and SpecularPower are ignored");
+    }
+  }
+  if (mapper && mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
+  {
+    ignored.push_back(std::string("the blend mode ") + BlendModeName(mapper->GetBlendMode()) +
+      " is ignored: VisSweep renders COMPOSITE_BLEND (light transport; projections such as MIP are not "
+      "supported yet)");
+  }
+  if (renderer && renderer->GetUseDepthPeeling() && renderer->GetUseDepthPeelingForVolumes())
+  {
+    ignored.push_back("the renderer's UseDepthPeelingForVolumes is ignored: VisSweep composites over the opaque "
+                      "geometry only; translucent geometry is not interleaved with the volume (turn it off)");
+  }
+  return ignored;
+}
+
+std::string PropertyChecks::CroppingFlagsName(int flags)
+{
+  switch (flags)
+  {
+    case VTK_CROP_SUBVOLUME:
+      return "VTK_CROP_SUBVOLUME";
+    case VTK_CROP_FENCE:
+      return "VTK_CROP_FENCE";
+    case VTK_CROP_INVERTED_FENCE:
+      return "VTK_CROP_INVERTED_FENCE";
+    case VTK_CROP_CROSS:
+      return "VTK_CROP_CROSS";
+    case VTK_CROP_INVERTED_CROSS:
+      return "VTK_CROP_INVERTED_CROSS";
+  }
+  char hex[32];
+  std::snprintf(hex, sizeof(hex), "0x%07x", static_cast<unsigned>(flags));
+  return std::string("custom region flags ") + hex;
+}
+
+std::vector<std::string> PropertyChecks::NewWarnings(const std::vector<std::string>& current)
+{
+  std::vector<std::string> fresh;
+  for (const auto& w : current)
+  {
+    if (std::find(this->Active.begin(), this->Active.end(), w) == this->Active.end())
+    {
+      fresh.push_back(w);
+    }
+  }
+  this->Active = current;
+  return fresh;
+}
+
+bool PropertyChecks::IsNewError(const std::string& message)
+{
+  if (message == this->LastError)
+  {
+    return false;
+  }
+  this->LastError = message;
+  return true;
+}
+}

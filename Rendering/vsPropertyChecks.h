@@ -1,0 +1,44 @@
+// vsPropertyChecks.h — the vtkVolumeProperty, mapper and renderer settings VisSweep does not
+// honour, said once per change. VTK users set these for vtkGPUVolumeRayCastMapper; silently
+// ignoring them shows a different picture without a word. The mapper asks Ignored() each
+// Render() and logs only what is new (NewWarnings), and logs an error only when it differs
+// from the last one (IsNewError), so a render loop does not flood the log.
+#ifndef vsPropertyChecks_h
+#define vsPropertyChecks_h
+
+#include <string>
+#include <vector>
+
+class vtkRenderer;
+class vtkVolumeMapper;
+class vtkVolumeProperty;
+
+namespace vs
+{
+class PropertyChecks
+{
+public:
+  /** The settings the next render ignores, one sentence each (empty: all honoured).
+   *  monteCarlo: the render mode (some settings differ between the modes). */
+  static std::vector<std::string> Ignored(
+    vtkVolumeMapper* mapper, vtkVolumeProperty* property, vtkRenderer* renderer, bool monteCarlo);
+
+  /** VTK's cropping region flags in words ("VTK_CROP_FENCE", ...; other values in hex). */
+  static std::string CroppingFlagsName(int flags);
+
+  /** The warnings of `current` that were not in the previous call's: a setting warns when it
+   *  becomes ignored (or changes), not again while it stays so. */
+  std::vector<std::string> NewWarnings(const std::vector<std::string>& current);
+
+  /** True when `message` is not the error reported last; the mapper logs only those.
+   *  ClearError() after a successful render (the same error later is new again). */
+  bool IsNewError(const std::string& message);
+  void ClearError() { this->LastError.clear(); }
+
+private:
+  std::vector<std::string> Active;
+  std::string LastError;
+};
+}
+
+#endif

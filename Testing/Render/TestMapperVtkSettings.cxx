@@ -1,0 +1,231 @@
+// A good VTK citizen (issue 14): settings VisSweep does not honour are warned about once per
+// change, not once per Render() (counted with a WarningEvent observer across repeated
+// renders), errors are logged once per change, cropping flags are named in words, the setters
+// clamp or refuse, PrintSelf prints enums as words and the counters, TimeToDraw is set, and
+// ReleaseGraphicsResources frees the device resources while the mapper keeps rendering.
+#include "vsRenderTestUtilities.h"
+#include "vtkVisibilitySweepVolumeMapper.h"
+
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+using vstest::Check;
+
+namespace
+{
+vtkSmartPointer<vtkImageData> Ball(int n)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n, n, n);
+  vtkNew<vtkFloatArray> a;
+  a->SetNumberOfTuples(vtkIdType(n) * n * n);
+  const double c = 0.5 * (n - 1);
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+      {
+        const double r = std::sqrt((x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c));
+        a->SetValue((vtkIdType(z) * n + y) * n + x, float(std::max(0.0, 1.0 - r / c)));
+      }
+  image->GetPointData()->SetScalars(a);
+  return image;
+}
+
+size_t CountContaining(const std::vector<std::string>& messages, const std::string& text)
+{
+  return size_t(std::count_if(messages.begin(), messages.end(),
+    [&](const std::string& m) { return m.find(text) != std::string::npos; }));
+}
+
+void RenderTimes(vtkRenderWindow* win, int n)
+{
+  for (int i = 0; i < n; ++i)
+  {
+    win->Render();
+  }
+}
+
+double MeanRadiance(vtkVisibilitySweepVolumeMapper* m)
+{
+  vtkImageData* r = m->GetRadiance();
+  if (!r)
+  {
+    return -1.0;
+  }
+  vtkDataArray* a = r->GetPointData()->GetArray("Radiance");
+  double sum = 0.0;
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  {
+    sum += a->GetComponent(i, 0) + a->GetComponent(i, 1) + a->GetComponent(i, 2);
+  }
+  return sum / (3.0 * double(a->GetNumberOfTuples()));
+}
+}
+
+int TestMapperVtkSettings(int, char*[])
+{
+  vtkNew<vtkVisibilitySweepVolumeMapper> m;
+  m->SetInputData(Ball(16));
+  m->SetSamplingStrategyToEnvironment(); // no sweeps: these checks are about the integration
+  m->SetMaximumSamples(4);
+  vtkNew<vstest::ErrorRecorder> recorder;
+  recorder->Watch(m);
+
+  vtkNew<vtkVolumeProperty> property; // VTK's defaults: nearest interpolation, shading off
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(1.0, 0.8);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0.0, 0.9, 0.9, 0.9);
+  property->SetScalarOpacity(opacity);
+  property->SetColor(color);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(m);
+  volume->SetProperty(property);
+  vtkNew<vtkRenderer> ren;
+  ren->AddVolume(volume);
+  vtkNew<vtkRenderWindow> win;
+  win->SetMultiSamples(0);
+  win->SetSize(24, 24);
+  win->AddRenderer(ren);
+  ren->ResetCamera();
+
+  // Nearest interpolation (VTK's default) warns once, however many renders follow.
+  RenderTimes(win, 3);
+  Check(std::string(m->GetLastError()).empty(), std::string("renders: ") + m->GetLastError());
+  Check(CountContaining(recorder->Warnings, "nearest") == 1, "nearest interpolation warns once over 3 renders");
+  Check(m->GetTimeToDraw() > 0.0, "TimeToDraw is set after a render");
+  property->SetInterpolationTypeToLinear();
+  RenderTimes(win, 2);
+  Check(recorder->Warnings.size() == 1, "linear interpolation warns nothing");
+  property->SetInterpolationTypeToNearest(); // a change back: warned again, once
+  RenderTimes(win, 2);
+  Check(CountContaining(recorder->Warnings, "nearest") == 2, "switching back to nearest warns once more");
+  property->SetInterpolationTypeToLinear();
+
+  // Shading, gradient opacity, blend modes and depth peeling for volumes: once per change each.
+  property->ShadeOn();
+  RenderTimes(win, 3);
+  Check(CountContaining(recorder->Warnings, "Shade is on") == 1, "ShadeOn warns once");
+  m->SetRenderModeToEmissionAbsorption();
+  RenderTimes(win, 2);
+  Check(CountContaining(recorder->Warnings, "emission-absorption mode does not shade") == 1,
+    "ShadeOn in emission-absorption mode warns once, in its own words");
+  m->SetRenderModeToMonteCarlo();
+  property->ShadeOff();
+
+  vtkNew<vtkPiecewiseFunction> gradient;
+  gradient->AddPoint(0.0, 0.0);
+  gradient->AddPoint(1.0, 1.0);
+  property->SetGradientOpacity(gradient);
+  RenderTimes(win, 3);
+  Check(CountContaining(recorder->Warnings, "gradient opacity") == 1, "gradient opacity warns once");
+  property->DisableGradientOpacityOn();
+  RenderTimes(win, 2);
+  Check(CountContaining(recorder->Warnings, "gradient opacity") == 1, "disabled gradient opacity warns no more");
+
+  m->SetBlendModeToMaximumIntensity();
+  RenderTimes(win, 3);
+  Check(CountContaining(recorder->Warnings, "MAXIMUM_INTENSITY_BLEND") == 1, "MIP warns once");
+  m->SetBlendModeToMinimumIntensity();
+  RenderTimes(win, 2);
+  Check(CountContaining(recorder->Warnings, "MINIMUM_INTENSITY_BLEND") == 1, "another blend mode is a new warning");
+  m->SetBlendModeToComposite();
+
+  ren->UseDepthPeelingOn();
+  ren->UseDepthPeelingForVolumesOn();
+  RenderTimes(win, 3);
+  Check(CountContaining(recorder->Warnings, "UseDepthPeelingForVolumes") == 1, "depth peeling for volumes warns once");
+  ren->UseDepthPeelingOff();
+  ren->UseDepthPeelingForVolumesOff();
+  const size_t warnings = recorder->Warnings.size();
+  RenderTimes(win, 2);
+  Check(recorder->Warnings.size() == warnings, "honoured settings warn nothing");
+  Check(recorder->Errors.empty(), "no errors so far");
+
+  // Errors: once per change, with the cropping flags in words.
+  double bounds[6];
+  m->GetInput()->GetBounds(bounds);
+  m->CroppingOn();
+  m->SetCroppingRegionPlanes(bounds);
+  m->SetCroppingRegionFlagsToFence();
+  RenderTimes(win, 3);
+  Check(CountContaining(recorder->Errors, "VTK_CROP_FENCE") == 1, "an unsupported cropping is logged once over 3 renders");
+  Check(std::string(m->GetLastError()).find("VTK_CROP_FENCE") != std::string::npos,
+    "GetLastError() holds the error on every failed render");
+  m->SetCroppingRegionFlagsToInvertedCross();
+  RenderTimes(win, 2);
+  Check(CountContaining(recorder->Errors, "VTK_CROP_INVERTED_CROSS") == 1, "another cropping is a new error");
+  m->CroppingOff();
+  win->Render();
+  Check(std::string(m->GetLastError()).empty(), "rendering again once the cropping is off");
+
+  // Setters clamp or refuse.
+  const size_t errors = recorder->Errors.size();
+  m->SetDirectionResolution(6);
+  Check(m->GetDirectionResolution() == 8, "DirectionResolution 6 is refused");
+  Check(recorder->Errors.size() == errors + 1 && CountContaining(recorder->Errors, "2, 4, 8 or 16") == 1,
+    "refusing DirectionResolution names the supported values");
+  m->SetDirectionResolution(32);
+  Check(m->GetDirectionResolution() == 8, "DirectionResolution 32 is refused");
+  for (int d : { 2, 4, 16, 8 })
+  {
+    m->SetDirectionResolution(d);
+    Check(m->GetDirectionResolution() == d, "DirectionResolution " + std::to_string(d) + " is accepted");
+  }
+  m->SetVoxelsPerCell(0.0);
+  Check(m->GetVoxelsPerCell() == 1.0, "VoxelsPerCell is clamped to at least 1");
+  m->SetVoxelsPerCell(1e9);
+  Check(m->GetVoxelsPerCell() == 256.0, "VoxelsPerCell is clamped to at most 256");
+  m->SetVoxelsPerCell(4.0);
+  m->SetSeed(-5);
+  Check(m->GetSeed() == 0, "Seed is clamped to non-negative values");
+  m->SetSeed(1);
+
+  // Enums as words.
+  Check(std::string(m->GetRenderModeAsString()) == "MonteCarlo", "GetRenderModeAsString");
+  m->SetCellModeToTrilinear();
+  Check(std::string(m->GetCellModeAsString()) == "TrilinearCells", "GetCellModeAsString");
+  m->SetCellModeToStochastic();
+  Check(std::string(m->GetCellModeAsString()) == "StochasticCell", "GetCellModeAsString (stochastic)");
+  std::ostringstream print;
+  m->Print(print);
+  for (const char* line : { "RenderMode: MonteCarlo", "CellMode: StochasticCell", "UpdateScheme: RoundRobin",
+         "AccumulationResetCount: ", "EnvironmentUploadCount: ", "MajorantUpdateCount: ", "LastSweepSeconds: ",
+         "TimeToDraw: ", "MonteCarlo tracking is exact" })
+  {
+    Check(print.str().find(line) != std::string::npos, std::string("PrintSelf prints '") + line + "'");
+  }
+
+  // ReleaseGraphicsResources frees the device resources; the mapper renders again afterwards.
+  RenderTimes(win, 4);
+  Check(m->IsConverged(), "converged before the release");
+  const double before = MeanRadiance(m);
+  const int uploads = m->GetVolumeUploadCount();
+  const int environmentUploads = m->GetEnvironmentUploadCount();
+  m->ReleaseGraphicsResources(win);
+  Check(MeanRadiance(m) == before, "the last radiance stays available after the release");
+  Check(m->GetRadiance(true) == nullptr, "its variance went with the device accumulator");
+  RenderTimes(win, 4);
+  Check(std::string(m->GetLastError()).empty(), std::string("renders after the release: ") + m->GetLastError());
+  Check(m->GetVolumeUploadCount() == uploads + 1, "the volume is uploaded again after the release");
+  Check(m->GetEnvironmentUploadCount() == environmentUploads + 1, "the environment is uploaded again");
+  Check(m->IsConverged(), "converges again after the release");
+  const double after = MeanRadiance(m);
+  std::cout << "mean radiance before the release " << before << ", after " << after << "\n";
+  Check(before > 0.0 && std::abs(after - before) <= 0.05 * before, "the same image after the release");
+  return vstest::ExitCode();
+}

@@ -1,0 +1,47 @@
+cmake_minimum_required(VERSION 3.19)
+# The command line itself (cmake -P): -DVISSWEEP=<exe> -DSCENE=<json> -DVERSION=<x.y.z>
+#  - `vissweep --version` prints the version and exits 0;
+#  - every error of the option parser exits 2, like every other error of the tool, and says why.
+execute_process(COMMAND "${VISSWEEP}" --version RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if (NOT rc EQUAL 0 OR NOT out MATCHES "vissweep ${VERSION}")
+  message(FATAL_ERROR "vissweep --version (${rc}): '${out}' '${err}'")
+endif ()
+execute_process(COMMAND "${VISSWEEP}" --help RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if (NOT rc EQUAL 0)
+  message(FATAL_ERROR "vissweep --help exits ${rc}")
+endif ()
+execute_process(COMMAND "${VISSWEEP}" render --help RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if (NOT rc EQUAL 0 OR NOT out MATCHES "docs/reference.md")
+  message(FATAL_ERROR "vissweep render --help (${rc}) does not point at docs/reference.md: ${out}")
+endif ()
+# name | arguments (space-separated) | what stderr must say
+set(cases
+  "no subcommand||subcommand"
+  "unknown subcommand|frobnicate|subcommand"
+  "unknown option|render ${SCENE} -o x.png --no-such-option|no-such-option"
+  "missing value|render ${SCENE} -o|-o"
+  "out of range|render ${SCENE} -o x.png --width 0|width"
+  "not a number|render ${SCENE} -o x.png --spp many|spp"
+  "excluded pair|render ${SCENE} -o x.png --spp 4 --time-budget 2|excludes"
+  "missing output|render ${SCENE}|output")
+foreach (c IN LISTS cases)
+  string(REPLACE "|" ";" parts "${c}")
+  list(LENGTH parts n)
+  list(GET parts 0 name)
+  if (n EQUAL 3)
+    list(GET parts 1 argstr)
+    list(GET parts 2 expect)
+  else ()
+    set(argstr "")
+    list(GET parts 1 expect)
+  endif ()
+  separate_arguments(args UNIX_COMMAND "${argstr}")
+  execute_process(COMMAND "${VISSWEEP}" ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if (NOT rc EQUAL 2)
+    message(FATAL_ERROR "${name} (vissweep ${argstr}): exit ${rc}, expected 2: ${out} ${err}")
+  endif ()
+  if (NOT err MATCHES "${expect}")
+    message(FATAL_ERROR "${name} (vissweep ${argstr}): stderr does not mention '${expect}': ${err}")
+  endif ()
+  message(STATUS "${name}: exit 2, ${err}")
+endforeach ()
