@@ -962,22 +962,14 @@ const char* vtkVisibilitySweepVolumeMapper::GetCellModeAsString()
 void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "RenderMode: " << this->GetRenderModeAsString() << "
-";
-  os << indent << "SamplingStrategy: " << this->GetSamplingStrategyAsString() << "
-";
-  os << indent << "EffectiveStrategy: " << this->GetEffectiveStrategyAsString() << "
-";
-  os << indent << "ProgressiveVisibility: " << (this->ProgressiveVisibility ? "On" : "Off") << "
-";
-  os << indent << "SweepFrameFraction: " << this->SweepFrameFraction << "
-";
-  os << indent << "LightWeightedDirections: " << (this->LightWeightedDirections ? "On" : "Off") << "
-";
-  os << indent << "PendingDirections: " << this->GetPendingDirections() << "
-";
-  os << indent << "CellMode: " << this->GetCellModeAsString() << "
-";
+  os << indent << "RenderMode: " << this->GetRenderModeAsString() << "\n";
+  os << indent << "SamplingStrategy: " << this->GetSamplingStrategyAsString() << "\n";
+  os << indent << "EffectiveStrategy: " << this->GetEffectiveStrategyAsString() << "\n";
+  os << indent << "ProgressiveVisibility: " << (this->ProgressiveVisibility ? "On" : "Off") << "\n";
+  os << indent << "SweepFrameFraction: " << this->SweepFrameFraction << "\n";
+  os << indent << "LightWeightedDirections: " << (this->LightWeightedDirections ? "On" : "Off") << "\n";
+  os << indent << "PendingDirections: " << this->GetPendingDirections() << "\n";
+  os << indent << "CellMode: " << this->GetCellModeAsString() << "\n";
   os << indent << "SamplesPerFrame: " << this->SamplesPerFrame << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
   os << indent << "AccumulatedSamples: " << this->AccumulatedSamples << "\n";
