@@ -111,7 +111,7 @@ bool NearlyEqual(const std::vector<double>& a, const std::vector<double>& b)
 // so switching Uniform -> Environment kept accumulating into the old image.
 std::vector<double> RenderSignature(const vs::shared::VsRenderParams& p)
 {
-  static_assert(sizeof(vs::shared::VsRenderParams) == 2 * 64 + 17 * 16,
+  static_assert(sizeof(vs::shared::VsRenderParams) == 2 * 64 + 18 * 16,
     "a member was added to VsRenderParams: add it to the signature");
   std::vector<double> s;
   auto addMat = [&s](const glm::mat4& m) { s.insert(s.end(), &m[0][0], &m[0][0] + 16); };
@@ -119,7 +119,7 @@ std::vector<double> RenderSignature(const vs::shared::VsRenderParams& p)
   auto addUint = [&s](const glm::uvec4& v) { s.insert(s.end(), { double(v.x), double(v.y), double(v.z), double(v.w) }); };
   addMat(p.invViewProj);
   addMat(p.worldToIndex);
-  for (const auto& v : { p.boxMin, p.boxMax, p.dims, p.tf, p.background, p.sampling2, p.cellSize })
+  for (const auto& v : { p.boxMin, p.boxMax, p.dims, p.tf, p.background, p.sampling2, p.cellSize, p.tracking })
   {
     addVec(v);
   }

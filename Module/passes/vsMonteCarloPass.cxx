@@ -16,6 +16,8 @@
 #include "vs_spirv_mc_render_r32f.h"
 #include "vs_spirv_mc_render_r8.h"
 
+#include <algorithm>
+
 namespace vs
 {
 MonteCarloPass::MonteCarloPass(std::shared_ptr<Context> context)
@@ -46,17 +48,17 @@ const ComputePipeline& MonteCarloPass::PipelineFor(const VisibilityGrid* grid)
     {
       bindings.push_back(B::StorageBuffer);
       this->Pipelines_[i] = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_mc_render_count), bindings,
-        sizeof(uint32_t), "monte carlo (r8 visibility, counting reads)");
+        2 * sizeof(uint32_t), "monte carlo (r8 visibility, counting reads)");
     }
     else if (i == 0)
       this->Pipelines_[i] = SharedPipeline(
-        this->Context_, VS_SPIRV(vs_spirv_mc_render_r8), bindings, sizeof(uint32_t), "monte carlo (r8 visibility)");
+        this->Context_, VS_SPIRV(vs_spirv_mc_render_r8), bindings, 2 * sizeof(uint32_t), "monte carlo (r8 visibility)");
     else if (i == 1)
       this->Pipelines_[i] = SharedPipeline(
-        this->Context_, VS_SPIRV(vs_spirv_mc_render_r16), bindings, sizeof(uint32_t), "monte carlo (r16 visibility)");
+        this->Context_, VS_SPIRV(vs_spirv_mc_render_r16), bindings, 2 * sizeof(uint32_t), "monte carlo (r16 visibility)");
     else
       this->Pipelines_[i] = SharedPipeline(
-        this->Context_, VS_SPIRV(vs_spirv_mc_render_r32f), bindings, sizeof(uint32_t), "monte carlo (r32f visibility)");
+        this->Context_, VS_SPIRV(vs_spirv_mc_render_r32f), bindings, 2 * sizeof(uint32_t), "monte carlo (r32f visibility)");
   }
   return *this->Pipelines_[i];
 }
@@ -148,10 +150,13 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   }
   Batch batch(this->Context_);
   batch.BeginTimer("render");
-  // One sample per pixel per dispatch (see mc_render.glsl).
-  for (uint32_t s = 0; s < params.sampling.y; ++s)
+  // Up to SamplesPerDispatch samples per pixel per dispatch (a loop in mc_render.glsl); the
+  // image does not depend on the split.
+  const uint32_t chunk = std::max<uint32_t>(1u, this->SamplesPerDispatch_);
+  for (uint32_t s = 0; s < params.sampling.y; s += chunk)
   {
-    batch.Dispatch(pipeline, set, &s, sizeof(s), (this->Width_ + 7) / 8, (this->Height_ + 7) / 8, 1);
+    const uint32_t push[2] = { s, std::min(chunk, params.sampling.y - s) };
+    batch.Dispatch(pipeline, set, push, sizeof(push), (this->Width_ + 7) / 8, (this->Height_ + 7) / 8, 1);
     batch.Barrier();
   }
   batch.EndTimer();

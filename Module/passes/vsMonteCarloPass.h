@@ -8,6 +8,7 @@
 #include "vissweepCoreModule.h"
 #include "shared/render_params.h"
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <vector>
@@ -58,6 +59,17 @@ public:
   /** Reads of the last counted Render: trilinear volume samples, majorant-brick loads, visibility texels. */
   std::array<uint64_t, 3> LastLookups() const { return this->LastLookups_; }
 
+  /** Samples per pixel one dispatch adds at most (the rest of a Render's samples go to further
+   *  dispatches), clamped to [1, kMaxSamplesPerDispatch]; the image is the same bit for bit for
+   *  any value. Fewer dispatches cost less on lavapipe; on a GPU a long dispatch may hit the
+   *  driver's watchdog. */
+  void SetSamplesPerDispatch(uint32_t n) { this->SamplesPerDispatch_ = std::min(std::max(n, 1u), kMaxSamplesPerDispatch); }
+  /** The longest sample loop measured exact on lavapipe: with TwoStep, loops of 160 samples and more
+   *  in one dispatch gave wrong pixels (up to 47% off at 255; 129 and below: bit-identical), a cause
+   *  not found yet (docs/benchmarks.md). TestMonteCarlo checks 128. */
+  static constexpr uint32_t kMaxSamplesPerDispatch = 128;
+  uint32_t SamplesPerDispatch() const { return this->SamplesPerDispatch_; }
+
   /** Device seconds of the last Render and of all Renders since the last Reset. */
   double LastSeconds() const { return this->LastSeconds_; }
   double TotalSeconds() const { return this->TotalSeconds_; }
@@ -69,6 +81,7 @@ private:
   std::shared_ptr<ComputePipeline> Pipelines_[4]; // r8, r16, r32f visibility; r8 counting reads
   std::unique_ptr<Buffer> Lookups_;
   bool CountLookups_ = false;
+  uint32_t SamplesPerDispatch_ = 16;
   std::array<uint64_t, 3> LastLookups_{};
   std::unique_ptr<Image3D> NoGrid_;
   std::unique_ptr<Buffer> Params_, Depth_, Sum_, Comp_, Squares_;

@@ -15,7 +15,10 @@ double TransferFunctionSamples::Extinction(double alpha, double unitDistance, do
     return 0.0;
   }
   alpha = std::min(alpha, 1.0 - 1e-6);
-  return -std::log1p(-alpha) / unitDistance * densityScale;
+  // Kept in float's range (a tiny unit distance or a huge density scale would overflow to inf,
+  // and inf majorants stall the trackers): beyond kMaxExtinction the medium is opaque at any
+  // distance float resolves anyway.
+  return std::min(-std::log1p(-alpha) / unitDistance * densityScale, double(kMaxExtinction));
 }
 
 TransferFunctionSamples TransferFunctionSamples::FromFunctions(float smin, float smax, size_t count,
@@ -71,11 +74,50 @@ float TransferFunctionSamples::MaxExtinction(float s0, float s1) const
   return m;
 }
 
+std::vector<float> TransferFunctionSamples::RangeMaxLevels() const
+{
+  const size_t n = this->Size();
+  std::vector<float> levels;
+  std::vector<float> previous(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    previous[i] = this->Entries[4 * i + 3];
+  }
+  for (size_t span = 1; 2 * span <= n; span *= 2)
+  {
+    // Level k (span 2^k): entry i = max(level k-1 at i, level k-1 at i + 2^(k-1)).
+    std::vector<float> next(n);
+    for (size_t i = 0; i < n; ++i)
+    {
+      next[i] = i + span < n ? std::max(previous[i], previous[i + span]) : previous[i];
+    }
+    levels.insert(levels.end(), next.begin(), next.end());
+    previous.swap(next);
+  }
+  return levels;
+}
+
+uint32_t TransferFunctionSamples::RangeMaxLevelCount() const
+{
+  uint32_t levels = 1;
+  for (size_t span = 2; span <= this->Size(); span *= 2)
+  {
+    ++levels;
+  }
+  return levels;
+}
+
 TransferFunctionTable::TransferFunctionTable(std::shared_ptr<Context> context, const TransferFunctionSamples& samples)
   : Samples_(samples)
 {
-  this->Buffer_ = std::make_unique<Buffer>(context, samples.Entries.size() * sizeof(float), "transfer function");
-  this->Buffer_->Upload(samples.Entries.data(), samples.Entries.size() * sizeof(float));
+  // The entries, then levels 1.. of the range-maximum table of their extinction (level 0 is the
+  // entries' w), 4 floats per vec4 (volume_access.glsl, vs_max_extinction).
+  std::vector<float> data = samples.Entries;
+  std::vector<float> levels = samples.RangeMaxLevels();
+  data.insert(data.end(), levels.begin(), levels.end());
+  data.resize((data.size() + 3) / 4 * 4, 0.0f);
+  this->Buffer_ = std::make_unique<Buffer>(context, data.size() * sizeof(float), "transfer function");
+  this->Buffer_->Upload(data.data(), data.size() * sizeof(float));
 }
 
 TransferFunctionTable::~TransferFunctionTable() = default;
@@ -83,6 +125,7 @@ TransferFunctionTable::~TransferFunctionTable() = default;
 std::array<float, 4> TransferFunctionTable::Params() const
 {
   const auto& s = this->Samples_;
-  return { { s.ScalarMin, float(double(s.Size() - 1) / (s.ScalarMax - s.ScalarMin)), float(s.Size()), 0.0f } };
+  return { { s.ScalarMin, float(double(s.Size() - 1) / (s.ScalarMax - s.ScalarMin)), float(s.Size()),
+    float(s.RangeMaxLevelCount()) } };
 }
 }

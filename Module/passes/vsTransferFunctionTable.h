@@ -8,6 +8,7 @@
 #include "vissweepCoreModule.h"
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -31,11 +32,22 @@ struct VISSWEEPCORE_EXPORT TransferFunctionSamples
     const std::function<double(double)>& opacity, const std::function<void(double, double[3])>& color,
     double unitDistance, double densityScale);
 
-  /** Extinction for opacity alpha over unit distance u (alpha clamped to [0, 1 - 1e-6]). */
+  /** The largest extinction a table holds (per world unit): larger values are clamped to it. */
+  static constexpr float kMaxExtinction = 1e30f;
+
+  /** Extinction for opacity alpha over unit distance u (alpha clamped to [0, 1 - 1e-6]), at most kMaxExtinction. */
   static double Extinction(double alpha, double unitDistance, double densityScale);
 
   /** Max extinction over scalars in [s0, s1] (both clamped to the table), on the table's linear interpolant. */
   float MaxExtinction(float s0, float s1) const;
+
+  /** A range-maximum (sparse) table of the extinction for the device: levels k = 1 .. L-1 of
+   *  Size() values each, entry i of level k = max extinction of entries [i, i + 2^k) (clamped to the
+   *  table). With level 0 = the entries, the max over [i, j] is max(level k at i, level k at
+   *  j - 2^k + 1) for k = floor(log2(j - i + 1)): two reads, whatever the range. */
+  std::vector<float> RangeMaxLevels() const;
+  /** L: the levels of that table, including level 0. */
+  uint32_t RangeMaxLevelCount() const;
 };
 
 class VISSWEEPCORE_EXPORT TransferFunctionTable
@@ -46,7 +58,7 @@ public:
 
   const Buffer& Lut() const { return *this->Buffer_; }
   const TransferFunctionSamples& Samples() const { return this->Samples_; }
-  /** The `tf` vector of VsFrameParams: (scalar at entry 0, entries per unit, entries, 0). */
+  /** The `tf` vector of VsFrameParams: (scalar at entry 0, entries per unit, entries, range-max levels). */
   std::array<float, 4> Params() const;
 
 private:

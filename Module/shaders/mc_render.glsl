@@ -12,7 +12,7 @@
  * keeps the estimator unbiased. Escaping rays see the environment (or are transparent,
  * so VTK's background shows); rays reaching the opaque depth are transparent.
  * Accumulates compensated (Kahan) sums of (rgb, alpha) and their squares per pixel;
- * one dispatch adds one sample per pixel, sample `sampleOffset` of the frame.
+ * one dispatch adds `sampleCount` samples per pixel, from sample `sampleOffset` of the frame.
  */
 #include "octahedral.h"
 #include "render_params.h"
@@ -31,7 +31,7 @@ layout(std430, binding = 7) readonly buffer Depth { float uDepth[]; };
 layout(std430, binding = 8) buffer Sum { vec4 uSum[]; };
 layout(std430, binding = 9) buffer Compensation { vec4 uComp[]; };
 layout(std430, binding = 10) buffer Squares { vec4 uSq[]; };
-layout(push_constant) uniform Push { uint sampleOffset; } pc;
+layout(push_constant) uniform Push { uint sampleOffset; uint sampleCount; } pc;
 
 /* The instrumented variant (mc_render_count.comp) counts what a sample reads:
  * uLookups[0] trilinear volume samples, [1] majorant-brick loads, [2] visibility texels. */
@@ -57,6 +57,8 @@ float gBrickSize;
 vec4 gTF;
 uint gEnvSize;
 uint gClipCount;
+uint gStrategy;
+float gRefineDepth;
 /* The direction map of this sample (D x D <= 256 values), which the strategies read through
  * vs_map_value (vs_prelude.h): one module-scope array, never copied into calls. */
 float gValues[256];
@@ -93,12 +95,20 @@ float brick_majorant(ivec3 b)
   return imageLoad(uMajorant, clamp(b, ivec3(0), gBricks - 1)).r;
 }
 
-/* The brick the ray o + t d is in just after t, and the distance t where it leaves it. */
+/* The shortest step the trackers take from t: ~16 ulps of t (or 2e-6 voxel), so t + step > t. */
+float min_step(float t, vec3 d)
+{
+  return 2e-6 * max(abs(t), 1.0 / max(length(d), 1e-20));
+}
+
+/* The brick the ray o + t d is in just after t (at t + half the shortest step: a brick and a cell
+ * are picked at the same point), and the distance t where it leaves it (at least the shortest step
+ * on: a sliver of the previous brick shorter than float resolves may go with this one). */
 ivec3 brick_at(vec3 o, vec3 d, float t, out float tExit)
 {
-  float nudge = 1e-4 * gBrickSize;
+  float h = min_step(t, d);
   vec3 p = o + t * d;
-  vec3 probe = p + nudge * sign(d);
+  vec3 probe = o + (t + 0.5 * h) * d;
   ivec3 b = ivec3(floor(probe / gBrickSize));
   vec3 lo = vec3(b) * gBrickSize, hi = lo + gBrickSize;
   float e = 1e30;
@@ -110,38 +120,155 @@ ivec3 brick_at(vec3 o, vec3 d, float t, out float tExit)
       e = min(e, (lo[i] - p[i]) / d[i]);
   }
   /* Always move forward, even when rounding put p on the far side of a face. */
-  tExit = t + max(e, nudge / max(length(d), 1e-20));
+  tExit = t + max(e, h);
   return b;
 }
 
-/* Delta tracking on [t0, t1): true at a real collision (tHit, its albedo). */
+/* The exponential free-flight distance of rate mu for a uniform u in [0,1). */
+float sample_exponential(float u, float mu)
+{
+  return -log(1.0 - u) / mu;
+}
+
+/* Trilinear interpolation inside one voxel cell: corners c0 = (000, 100, 010, 110),
+ * c1 = (001, 101, 011, 111), local coordinates f in [0,1]^3. */
+float cell_trilinear(vec4 c0, vec4 c1, vec3 f)
+{
+  vec4 z = mix(c0, c1, f.z);
+  vec2 y = mix(z.xy, z.zw, f.y);
+  return mix(y.x, y.y, f.x);
+}
+
+/* The largest extinction on the ray segment [ta, tb] inside the voxel cell `lo`: a trilinear
+ * interpolant takes its extremes over a box at the box's corners, so the scalars of the segment lie
+ * between the smallest and largest interpolant at the 8 corners of its bounding box. */
+float segment_max_extinction(vec3 o, vec3 d, float ta, float tb, ivec3 lo, vec4 c0, vec4 c1)
+{
+  vec3 top = vec3(gDims - 1);
+  vec3 fa = clamp(clamp(o + ta * d, vec3(0.0), top) - vec3(lo), 0.0, 1.0);
+  vec3 fb = clamp(clamp(o + tb * d, vec3(0.0), top) - vec3(lo), 0.0, 1.0);
+  vec3 f0 = min(fa, fb), f1 = max(fa, fb);
+  float smin = 3.4e38, smax = -3.4e38;
+  for (uint k = 0u; k < 8u; ++k)
+  {
+    vec3 f = vec3((k & 1u) != 0u ? f1.x : f0.x, (k & 2u) != 0u ? f1.y : f0.y, (k & 4u) != 0u ? f1.z : f0.z);
+    float v = cell_trilinear(c0, c1, f);
+    smin = min(smin, v);
+    smax = max(smax, v);
+  }
+  return vs_max_extinction(smin, smax, gTF);
+}
+
+/* A brick whose majorant segment is optically thick (mu * length > gRefineDepth: a dense medium, or a
+ * tiny unit distance) is walked in voxel cells instead, with the majorant of the sub-segment
+ * [t, tNext) of the current cell: the longest sub-segment whose optical depth at its own majorant
+ * stays below gRefineDepth (bisection in log length), or the shortest step float resolves. So the
+ * trackers take O(optical depth) steps, never O(brick majorant x length): at an extinction of 1e9
+ * per voxel the brick majorant would ask for 1e9 null collisions per voxel, at steps float cannot add
+ * to t. The segments start where the previous one ended, so the majorant is a fixed function of
+ * the ray and the estimators stay unbiased. */
+float refine_majorant(vec3 o, vec3 d, float t, inout float tNext, float mu)
+{
+  float hMin = min_step(t, d);
+  vec3 p = o + t * d;
+  ivec3 lo = clamp(ivec3(floor(o + (t + 0.5 * hMin) * d)), ivec3(0), max(gDims - 2, ivec3(0)));
+  ivec3 hi = min(lo + 1, gDims - 1);
+  float e = 1e30;
+  for (int i = 0; i < 3; ++i)
+  {
+    /* The cell's faces, except the volume's outer ones: scalars clamp beyond them. */
+    if (d[i] > 1e-20 && lo[i] + 1 < gDims[i] - 1)
+      e = min(e, (float(lo[i] + 1) - p[i]) / d[i]);
+    else if (d[i] < -1e-20 && lo[i] > 0)
+      e = min(e, (float(lo[i]) - p[i]) / d[i]);
+  }
+  float hMax = min(tNext - t, max(e, hMin));
+  vec4 c0 = vec4(imageLoad(uVolume, ivec3(lo.x, lo.y, lo.z)).r, imageLoad(uVolume, ivec3(hi.x, lo.y, lo.z)).r,
+    imageLoad(uVolume, ivec3(lo.x, hi.y, lo.z)).r, imageLoad(uVolume, ivec3(hi.x, hi.y, lo.z)).r);
+  vec4 c1 = vec4(imageLoad(uVolume, ivec3(lo.x, lo.y, hi.z)).r, imageLoad(uVolume, ivec3(hi.x, lo.y, hi.z)).r,
+    imageLoad(uVolume, ivec3(lo.x, hi.y, hi.z)).r, imageLoad(uVolume, ivec3(hi.x, hi.y, hi.z)).r);
+  VS_COUNT(0);
+  if (any(isnan(c0)) || any(isnan(c1)))
+  {
+    /* A NaN corner makes every sample of the cell NaN: empty space (volume_access.glsl). */
+    tNext = t + hMax;
+    return 0.0;
+  }
+  float m = segment_max_extinction(o, d, t, t + hMax, lo, c0, c1);
+  float h = hMax;
+  if (m * h > gRefineDepth)
+  {
+    /* m(h) h grows with h: bisect for the longest h that keeps it below the depth. */
+    float hLo = hMin, hHi = hMax;
+    float mLo = segment_max_extinction(o, d, t, t + hLo, lo, c0, c1);
+    for (int k = 0; k < 12 && hHi > 1.01 * hLo; ++k)
+    {
+      float hMid = sqrt(hLo * hHi);
+      float mMid = segment_max_extinction(o, d, t, t + hMid, lo, c0, c1);
+      if (mMid * hMid <= gRefineDepth)
+      {
+        hLo = hMid;
+        mLo = mMid;
+      }
+      else
+        hHi = hMid;
+    }
+    h = hLo;
+    m = mLo;
+  }
+  tNext = t + h;
+  /* The brick majorant bounds the cell too (up to rounding at brick faces). */
+  return min(m, mu);
+}
+
+/* The majorant segment of the ray from t: returns mu and sets tNext, with mu >= the extinction
+ * on [t, tNext). One walk for delta tracking and ratio tracking. */
+float majorant_segment(vec3 o, vec3 d, float t, float tEnd, out float tNext)
+{
+  float tExit;
+  ivec3 b = brick_at(o, d, t, tExit);
+  tNext = min(tExit, tEnd);
+  float mu = brick_majorant(b);
+  if (mu * (tNext - t) > gRefineDepth)
+    mu = refine_majorant(o, d, t, tNext, mu);
+  return mu;
+}
+
+/* Null collisions one tracking call may take before it gives up: only reached where float
+ * cannot resolve the medium (a majorant segment at the shortest step still has a huge optical
+ * depth but the sampled points keep missing it); it then treats the medium as opaque. */
+const uint VS_MAX_TRACKING_STEPS = 65536u;
+
+/* Delta tracking on [t0, t1): true at a real collision (tHit, its albedo). Distances inside a
+ * segment count from its start, so steps far below the resolution of t still add up. */
 bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, out float tHit, out vec3 albedo)
 {
   float t = t0;
+  uint steps = 0u;
   while (t < t1)
   {
-    float tExit;
-    ivec3 b = brick_at(o, d, t, tExit);
-    tExit = min(tExit, t1);
-    float mu = brick_majorant(b);
+    float tNext;
+    float mu = majorant_segment(o, d, t, t1, tNext);
     if (mu > 0.0)
     {
+      float h = tNext - t;
+      float dt = 0.0;
       while (true)
       {
-        t -= log(1.0 - vs_rng_float(rng)) / mu;
-        if (t >= tExit)
+        dt += sample_exponential(vs_rng_float(rng), mu);
+        if (dt >= h)
           break;
         VS_COUNT(0);
-        vec4 c = vs_classify(vs_sample_scalar(o + t * d, gDims), gTF);
-        if (vs_rng_float(rng) * mu < c.w)
+        vec4 c = vs_classify(vs_sample_scalar(o + (t + dt) * d, gDims), gTF);
+        if (vs_rng_float(rng) * mu < c.w || ++steps >= VS_MAX_TRACKING_STEPS)
         {
-          tHit = t;
+          tHit = t + dt;
           albedo = c.rgb;
           return true;
         }
       }
     }
-    t = tExit;
+    t = tNext;
   }
   return false;
 }
@@ -151,22 +278,25 @@ float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng)
 {
   float T = 1.0;
   float t = t0;
+  uint steps = 0u;
   while (t < t1)
   {
-    float tExit;
-    ivec3 b = brick_at(o, d, t, tExit);
-    tExit = min(tExit, t1);
-    float mu = brick_majorant(b);
+    float tNext;
+    float mu = majorant_segment(o, d, t, t1, tNext);
     if (mu > 0.0)
     {
+      float h = tNext - t;
+      float dt = 0.0;
       while (true)
       {
-        t -= log(1.0 - vs_rng_float(rng)) / mu;
-        if (t >= tExit)
+        dt += sample_exponential(vs_rng_float(rng), mu);
+        if (dt >= h)
           break;
         VS_COUNT(0);
-        float sigma = vs_classify(vs_sample_scalar(o + t * d, gDims), gTF).w;
+        float sigma = vs_classify(vs_sample_scalar(o + (t + dt) * d, gDims), gTF).w;
         T *= max(0.0, 1.0 - sigma / mu);
+        if (++steps >= VS_MAX_TRACKING_STEPS)
+          return 0.0;
         if (T < 0.05)
         {
           if (vs_rng_float(rng) < 0.5)
@@ -175,7 +305,7 @@ float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng)
         }
       }
     }
-    t = tExit;
+    t = tNext;
   }
   return T;
 }
@@ -246,19 +376,83 @@ vec3 sample_direction(vec3 x, uint strategy, inout VsRng rng, out float pdf)
   return vs_sample_direction(strategy, D, K, vs_rng_vec2(rng), pdf);
 }
 
-void accumulate(uint idx, vec4 v)
+/* The compensated per-pixel accumulators, held in registers across the samples of a dispatch
+ * (loaded once, stored once). Kahan summation: the sum stays exact to float precision over 1e5+
+ * samples. The same additions in the same order as one sample per dispatch, so a fixed seed gives
+ * the same bits for any split of the samples into frames and dispatches. */
+struct Accumulator
 {
-  /* Kahan summation: the sum stays exact to float precision over 1e5+ samples. */
-  vec4 y = v - uComp[idx];
-  vec4 s = uSum[idx];
-  vec4 t = s + y;
-  uComp[idx] = (t - s) - y;
-  uSum[idx] = t;
+  vec4 sum, comp, sq;
+};
+
+void accumulate(inout Accumulator acc, vec4 v)
+{
+  vec4 y = v - acc.comp;
+  vec4 t = acc.sum + y;
+  acc.comp = (t - acc.sum) - y;
+  acc.sum = t;
   /* Squares of the radiance scaled to the environment's brightest texel: radiance below ~1e-19
    * (a dim map in physical units) would square to 0 in float and report no variance. */
   float scale = P.sampling2.w > 0.0 ? P.sampling2.w : 1.0;
   vec4 w = v * vec4(scale, scale, scale, 1.0);
-  uSq[idx] += w * w;
+  acc.sq += w * w;
+}
+
+/* One path of pixel `pix`: sample `sampleIndex` of the image (its random numbers depend on the
+ * pixel, the sample index and the seed only). Returns (rgb, alpha). */
+vec4 render_sample(uvec2 pix, uint sampleIndex, float depth)
+{
+  uint W = P.viewport.x, H = P.viewport.y;
+  VsRng rng = vs_rng_init(pix, sampleIndex, P.viewport.w);
+  vec2 jitter = vs_rng_vec2(rng);
+  vec2 ndc = (vec2(pix) + jitter) / vec2(W, H) * 2.0 - 1.0;
+  vec4 pn = P.invViewProj * vec4(ndc, -1.0, 1.0);
+  vec4 pf = P.invViewProj * vec4(ndc, 1.0, 1.0);
+  vec3 ow = pn.xyz / pn.w;
+  vec3 dw = normalize(pf.xyz / pf.w - ow);
+  float tDepth = 1e30;
+  if (depth < 1.0)
+  {
+    vec4 pd = P.invViewProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
+    tDepth = dot(pd.xyz / pd.w - ow, dw);
+  }
+  vec3 o = (P.worldToIndex * vec4(ow, 1.0)).xyz;
+  vec3 d = (P.worldToIndex * vec4(dw, 0.0)).xyz;
+  vec2 ti = ray_interval(o, d);
+  float t0 = max(ti.x, 0.0), t1 = min(ti.y, tDepth);
+
+  vec4 result = vec4(0.0);
+  float tHit;
+  vec3 albedo;
+  if (t0 < t1 && delta_track(o, d, t0, t1, rng, tHit, albedo))
+  {
+    result.a = 1.0;
+    if (any(greaterThan(albedo, vec3(0.0))))
+    {
+      vec3 x = o + tHit * d;
+      float pdf;
+      vec3 w = sample_direction(x, gStrategy, rng, pdf);
+      if (pdf > 0.0)
+      {
+        vec3 Le = env_radiance(w);
+        if (any(greaterThan(Le, vec3(0.0))))
+        {
+          vec3 di = (P.worldToIndex * vec4(w, 0.0)).xyz;
+          vec2 ts = ray_interval(x, di);
+          float T = ratio_track(x, di, 0.0, ts.y, rng);
+          result.rgb = albedo * VS_INV_4PI * T * Le / pdf;
+        }
+      }
+    }
+  }
+  else if (tDepth >= 1e30 && P.background.w > 0.5)
+  {
+    result = vec4(env_radiance_display(dw), 1.0);
+  }
+  /* Non-finite contributions (should not happen) are dropped rather than poisoning the pixel. */
+  if (any(isnan(result)) || any(isinf(result)))
+    result = vec4(0.0);
+  return result;
 }
 
 void main()
@@ -273,65 +467,22 @@ void main()
   gTF = P.tf;
   gEnvSize = 1u << P.sampling.w;
   gClipCount = P.bricks.w;
-  uint strategy = P.sampling.x;
+  gStrategy = P.sampling.x;
+  gRefineDepth = P.tracking.x > 0.0 ? P.tracking.x : 32.0;
   uint idx = pix.y * W + pix.x;
   float depth = uDepth[idx];
 
-  /* One sample per dispatch. A loop over samples here ran into lavapipe's handling of the
-   * strategies' array arguments inside loops: wrong results past ~100 iterations and heap
-   * corruption at 16 (measured); TestMonteCarlo checks that frame splits change no bit. */
-  {
-    VsRng rng = vs_rng_init(pix, P.viewport.z + pc.sampleOffset, P.viewport.w);
-    vec2 jitter = vs_rng_vec2(rng);
-    vec2 ndc = (vec2(pix) + jitter) / vec2(W, H) * 2.0 - 1.0;
-    vec4 pn = P.invViewProj * vec4(ndc, -1.0, 1.0);
-    vec4 pf = P.invViewProj * vec4(ndc, 1.0, 1.0);
-    vec3 ow = pn.xyz / pn.w;
-    vec3 dw = normalize(pf.xyz / pf.w - ow);
-    float tDepth = 1e30;
-    if (depth < 1.0)
-    {
-      vec4 pd = P.invViewProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
-      tDepth = dot(pd.xyz / pd.w - ow, dw);
-    }
-    vec3 o = (P.worldToIndex * vec4(ow, 1.0)).xyz;
-    vec3 d = (P.worldToIndex * vec4(dw, 0.0)).xyz;
-    vec2 ti = ray_interval(o, d);
-    float t0 = max(ti.x, 0.0), t1 = min(ti.y, tDepth);
-
-    vec4 result = vec4(0.0);
-    float tHit;
-    vec3 albedo;
-    if (t0 < t1 && delta_track(o, d, t0, t1, rng, tHit, albedo))
-    {
-      result.a = 1.0;
-      if (any(greaterThan(albedo, vec3(0.0))))
-      {
-        vec3 x = o + tHit * d;
-        float pdf;
-        vec3 w = sample_direction(x, strategy, rng, pdf);
-        if (pdf > 0.0)
-        {
-          vec3 Le = env_radiance(w);
-          if (any(greaterThan(Le, vec3(0.0))))
-          {
-            vec3 di = (P.worldToIndex * vec4(w, 0.0)).xyz;
-            vec2 ts = ray_interval(x, di);
-            float T = ratio_track(x, di, 0.0, ts.y, rng);
-            result.rgb = albedo * VS_INV_4PI * T * Le / pdf;
-          }
-        }
-      }
-    }
-    else if (tDepth >= 1e30 && P.background.w > 0.5)
-    {
-      result = vec4(env_radiance_display(dw), 1.0);
-    }
-    /* Non-finite contributions (should not happen) are dropped rather than poisoning the pixel. */
-    if (any(isnan(result)) || any(isinf(result)))
-      result = vec4(0.0);
-    accumulate(idx, result);
-  }
+  /* pc.sampleCount samples per dispatch, samples sampleOffset.. of the frame. */
+  Accumulator acc;
+  acc.sum = uSum[idx];
+  acc.comp = uComp[idx];
+  acc.sq = uSq[idx];
+  uint first = P.viewport.z + pc.sampleOffset;
+  for (uint s = 0u; s < pc.sampleCount; ++s)
+    accumulate(acc, render_sample(pix, first + s, depth));
+  uSum[idx] = acc.sum;
+  uComp[idx] = acc.comp;
+  uSq[idx] = acc.sq;
 #ifdef VS_COUNT_LOOKUPS
   atomicAdd(uLookups[0], gLookups.x);
   atomicAdd(uLookups[1], gLookups.y);

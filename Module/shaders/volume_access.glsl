@@ -42,6 +42,33 @@ vec4 vs_classify(float s, vec4 tf)
   return mix(uTF[i0], uTF[i1], x - float(i0));
 }
 
+/* Extinction entry i of level k of the range-maximum table (vsTransferFunctionTable.h): level 0 is
+ * the LUT's w, levels 1.. follow the LUT, 4 floats per vec4. */
+float vs_tf_level_max(int level, int i, vec4 tf)
+{
+  if (level == 0)
+    return uTF[i].w;
+  int n = int(tf.z);
+  int f = 4 * n + (level - 1) * n + i;
+  return uTF[f >> 2][f & 3];
+}
+
+/* The largest extinction vs_classify gives any scalar in [s0, s1], s0 <= s1: two reads of the
+ * range-max table, whose tf.w levels cover every range of the LUT. The range is widened by 1e-6 of
+ * its magnitude, so that the rounding of a sample's scalar inside it (a few ulps) cannot reach an
+ * entry outside it; a range of one exact value (an empty cell's zeros) stays exact. */
+float vs_max_extinction(float s0, float s1, vec4 tf)
+{
+  float widen = 1e-6 * max(abs(s0), abs(s1));
+  float last = tf.z - 1.0;
+  float a = clamp((s0 - widen - tf.x) * tf.y, 0.0, last);
+  float b = clamp((s1 + widen - tf.x) * tf.y, 0.0, last);
+  int i = int(floor(a));
+  int j = int(ceil(b));
+  int k = findMSB(j - i + 1);
+  return max(vs_tf_level_max(k, i, tf), vs_tf_level_max(k, j - (1 << k) + 1, tf));
+}
+
 /* Ray-box intersection in index space; returns (tNear, tFar), empty when tNear >= tFar. */
 vec2 vs_intersect_box(vec3 o, vec3 d, vec3 bmin, vec3 bmax)
 {

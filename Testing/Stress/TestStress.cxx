@@ -97,7 +97,7 @@ long LiveHeapKilobytes()
 #endif
 }
 
-// Extinction from 1e-6 to 1e6 per world unit, albedo 0 and 1, every kind of strategy.
+// Extinction from 1e-6 to 1e9 per world unit, albedo 0 and 1, every kind of strategy.
 TEST(Stress, ExtinctionScalesAndAlbedo)
 {
   auto volume = DefaultBall();
@@ -109,7 +109,7 @@ TEST(Stress, ExtinctionScalesAndAlbedo)
     s.Color()->AddRGBPoint(1.0, albedo, albedo, albedo);
     s.Mapper()->SetEnvironmentVisible(false);
     const double bound = MaxRadiance(s.Sky());
-    for (double scale : { 1e-6, 1e-3, 1.0, 1e3, 1e6 })
+    for (double scale : { 1e-6, 1e-3, 1.0, 1e3, 1e6, 1e9 })
     {
       for (int strategy : kStrategies)
       {
@@ -126,6 +126,66 @@ TEST(Stress, ExtinctionScalesAndAlbedo)
         }
       }
     }
+  }
+}
+
+// A dense medium converges to its opaque limit (issue 13, item 4): from an extinction of ~1e4 per
+// world unit up, the soft ball is opaque wherever its scalar is positive, so the image (alpha and
+// radiance, pixel by pixel) no longer depends on the density. Compared with the image at 1e4,
+// where float has no trouble: at 1e9 the trackers used to take steps float could not add to t
+// (the ball vanished or turned to speckles, and a frame took minutes). Not yet held, so not
+// asserted here (docs/benchmarks.md, stress suite): TwoStep at 1e9 (chi-square ~4300 for ~390
+// values) and a unit distance of 1e-35 (extinction clamped to 1e30: the ball vanishes).
+TEST(Stress, DenseMediumReachesItsOpaqueLimit)
+{
+  auto volume = DefaultBall();
+  const int spp = 64;
+  for (int strategy : { vtkVisibilitySweepVolumeMapper::Uniform })
+  {
+    Scene s(volume);
+    s.Mapper()->SetEnvironmentVisible(false);
+    s.Mapper()->SetSamplingStrategy(strategy);
+    const double bound = MaxRadiance(s.Sky());
+    s.Mapper()->SetDensityScale(1e4);
+    const Result ref = s.Render(spp, bound);
+    ExpectSane(ref, "reference (density scale 1e4)");
+    EXPECT_GT(ref.Coverage, 0.25) << "the ball covers a good part of the image";
+    struct Dense
+    {
+      const char* name;
+      double scale, unitDistance;
+    };
+    for (const Dense& d : { Dense{ "density scale 1e6", 1e6, 1.0 }, Dense{ "density scale 1e9", 1e9, 1.0 },
+           Dense{ "unit distance 1e-9", 1.0, 1e-9 } })
+    {
+      s.Mapper()->SetDensityScale(d.scale);
+      s.Property()->SetScalarOpacityUnitDistance(d.unitDistance);
+      const Result r = s.Render(spp, bound);
+      const std::string what = std::string(d.name) + ", strategy " + std::to_string(strategy);
+      ExpectSane(r, what);
+      // Pixel by pixel, rgb and alpha agree with the reference: sum of z^2 over pixels and channels
+      // ~ chi-square(4 x 256) (mean 1024, sd 45); reject beyond 1024 + 6 sd.
+      double chi2 = 0.0;
+      int dof = 0;
+      for (size_t i = 0; i < r.PixelMean.size(); ++i)
+      {
+        const double se2 = (r.PixelVariance[i] + ref.PixelVariance[i]) / spp;
+        const double diff = r.PixelMean[i] - ref.PixelMean[i];
+        if (se2 > 0.0)
+        {
+          chi2 += diff * diff / se2;
+          ++dof;
+        }
+        else
+        {
+          EXPECT_NEAR(r.PixelMean[i], ref.PixelMean[i], 1e-6) << what << ": value " << i << " (no variance)";
+        }
+      }
+      EXPECT_LT(chi2, dof + 6.0 * std::sqrt(2.0 * dof)) << what << ": the image differs from the opaque limit ("
+                                                       << dof << " values with variance)";
+      EXPECT_NEAR(r.Coverage, ref.Coverage, 0.03) << what << ": the ball's coverage";
+    }
+    s.Property()->SetScalarOpacityUnitDistance(1.0);
   }
 }
 

@@ -160,9 +160,16 @@ Result Scene::Render(int spp, double bound)
   vtkDataArray* var = radiance->GetPointData()->GetArray("Variance");
   const vtkIdType n = mean->GetNumberOfTuples();
   vtkDataArray* alpha = radiance->GetPointData()->GetArray("Alpha");
+  r.PixelMean.resize(4 * n);
+  r.PixelVariance.resize(4 * n);
   for (vtkIdType i = 0; i < n; ++i)
   {
     r.Coverage += alpha->GetComponent(i, 0) / double(n);
+    for (int c = 0; c < 4; ++c)
+    {
+      r.PixelMean[4 * i + c] = c < 3 ? mean->GetComponent(i, c) : alpha->GetComponent(i, 0);
+      r.PixelVariance[4 * i + c] = var->GetComponent(i, c);
+    }
   }
   for (vtkIdType i = 0; i < n; ++i)
   {

@@ -23,6 +23,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 // VS_STRESS_ASAN: built with AddressSanitizer (scripts/sanitize.sh); gcc defines
 // __SANITIZE_ADDRESS__, clang has __has_feature(address_sanitizer).
@@ -58,6 +59,8 @@ struct Result
   double MaxExcess = 0.0; // largest (mean - bound) / standard error over pixels and channels
   double Mean = 0.0;     // mean over pixels and channels
   double Coverage = 0.0; // mean alpha: the fraction of the image the volume covers
+  // Per pixel: mean (r, g, b, alpha) and the variance of one sample of each (4 values a pixel).
+  std::vector<double> PixelMean, PixelVariance;
 };
 
 class Scene
