@@ -28,6 +28,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkPlane.h"
@@ -167,6 +168,20 @@ void vtkVisibilitySweepVolumeMapper::ReportError(const std::string& message)
   {
     vtkErrorMacro(<< message);
   }
+}
+
+double* vtkVisibilitySweepVolumeMapper::GetBounds()
+{
+  // NaN bounds made VTK's culler drop the volume before Render(), which then never said why.
+  // Uninitialised bounds keep it in the render list: Render() reports the geometry's error
+  // (vs::CheckGeometry), once per change.
+  double* b = this->Superclass::GetBounds();
+  if (b && !std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }))
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+    return this->Bounds;
+  }
+  return b;
 }
 
 void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow*)
