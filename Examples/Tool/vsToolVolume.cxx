@@ -26,6 +26,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -257,8 +259,18 @@ public:
   vtkTypeMacro(CheckedNrrdReader, vtkNrrdReader);
 
   /** Empty when the data files can hold `points` values, else the reason. */
-  std::string CheckDataFiles(const std::string& header, vtkIdType points)
+  std::string CheckDataFiles(const std::string& header, vtkIdType points, const int extent[6])
   {
+    // A header without a valid "dimension" field leaves vtkImageReader2's per-slice file
+    // layout (FileDimensionality 2) in place for a multi-slice extent: the raw read then ran
+    // on a stream it never opened (SEGV, found by fuzz_volume_file).
+    const bool oneSlice = extent[4] == extent[5];
+    if (!(this->FileDimensionality == 3 || (this->FileDimensionality == 2 && oneSlice)))
+    {
+      return "its header gives " + std::to_string(this->FileDimensionality) +
+        " file dimensions for a volume of " + std::to_string(extent[5] - extent[4] + 1) +
+        " slices (a missing or misplaced \"dimension\" field?)";
+    }
     // An attached header (.nrrd) holds the data itself: no DataFiles then.
     std::vector<std::string> names;
     for (vtkIdType i = 0; this->DataFiles && i < this->DataFiles->GetNumberOfValues(); ++i)
@@ -331,9 +343,14 @@ vtkSmartPointer<vtkImageData> RunImageReader(vtkImageReader2* reader, const std:
     Fail(what, "its header describes " + Describe(extent, points) + ", more than the " + std::to_string(maxPoints) +
         " points this tool reads");
   }
+  if (reader->GetNumberOfScalarComponents() != 1)
+  {
+    Fail(what, "it has " + std::to_string(reader->GetNumberOfScalarComponents()) +
+        " components per voxel; only single-component volumes are rendered");
+  }
   if (auto* nrrd = CheckedNrrdReader::SafeDownCast(reader))
   {
-    const std::string problem = nrrd->CheckDataFiles(path, points);
+    const std::string problem = nrrd->CheckDataFiles(path, points, extent);
     if (!problem.empty())
     {
       Fail(what, problem);
@@ -366,8 +383,38 @@ void CheckMetaImageDataFile(const std::string& path)
     Fail(Quote(path), "not a MetaImage header" + (quiet.Text().empty() ? std::string() : " (" + quiet.Text() + ")"));
   }
   const std::string data = header.ElementDataFileName();
-  if (data.empty() || data == "LOCAL" || data == "Local" || data == "local" || data.find('%') != std::string::npos ||
-    data.rfind("LIST", 0) == 0)
+  if (data.empty())
+  {
+    // MetaIO then sizes a compressed read from a stream it failed to open (an allocation of
+    // 2^63 bytes, found by fuzz_volume_file).
+    Fail(Quote(path), "its ElementDataFile names no data file (LOCAL or a file name)");
+  }
+  const bool local = data == "LOCAL" || data == "Local" || data == "local";
+  // MetaIO allocates CompressedDataSize bytes before reading them (a header claiming 2^63 was an
+  // allocation failure, found by fuzz_volume_file): it must fit in the file that holds the data.
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  while (std::getline(in, line) && line.rfind("ElementDataFile", 0) != 0)
+  {
+    if (line.rfind("CompressedDataSize", 0) == 0)
+    {
+      const auto eq = line.find('=');
+      const double claimed = eq == std::string::npos ? -1.0 : std::strtod(line.c_str() + eq + 1, nullptr);
+      fs::path holder(local ? path : data);
+      if (holder.is_relative() && !local)
+      {
+        holder = fs::path(path).parent_path() / holder;
+      }
+      std::error_code ec;
+      const double size = double(fs::file_size(holder, ec));
+      if (!(claimed >= 0.0) || (!ec && claimed > size))
+      {
+        Fail(Quote(path), "its CompressedDataSize (" + line.substr(eq == std::string::npos ? 0 : eq + 1) +
+            ") exceeds the " + std::to_string(ec ? 0.0 : size) + " bytes of " + Quote(holder.string()));
+      }
+    }
+  }
+  if (local || data.find('%') != std::string::npos || data.rfind("LIST", 0) == 0)
   {
     return; // in the same file, or a list/pattern of slices MetaIO resolves itself
   }
