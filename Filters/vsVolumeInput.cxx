@@ -5,11 +5,13 @@
 #include "vtkImageData.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
+#include "vtkObject.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace vs
@@ -66,6 +68,73 @@ std::string CheckImage(vtkImageData* image, vtkDataArray* scalars)
     return "the input scalars do not match the volume's points (cell data is not supported)";
   }
   return std::string();
+}
+
+std::string CheckGeometry(const VolumeGeometry& geometry)
+{
+  static const char* const axis[3] = { "x", "y", "z" };
+  std::ostringstream os;
+  // The device works in float: index <-> world numbers must be finite there too.
+  const double floatLimit = double(std::numeric_limits<float>::max());
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      const double v = geometry.IndexToWorld[c][r];
+      if (!std::isfinite(v) || std::abs(v) > floatLimit)
+      {
+        os << "the volume's placement is not finite (index-to-world matrix entry (" << r << ", " << c
+           << ") is " << v << "): check the image's spacing, origin and direction matrix and the "
+           << "prop's matrix";
+        return os.str();
+      }
+    }
+  }
+  // Lengths below this (or a singular matrix) have no float inverse.
+  const double minLength = 1e-30, maxLength = 1e30;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double length = geometry.Spacing(i);
+    if (!(length >= minLength) || !(length <= maxLength))
+    {
+      os << "the volume's spacing along " << axis[i] << " is " << length << " world units (with the direction "
+         << "matrix and the prop's matrix); it must lie between " << minLength << " and " << maxLength;
+      return os.str();
+    }
+  }
+  const glm::dmat3 m(geometry.IndexToWorld);
+  const double scale = geometry.Spacing(0) * geometry.Spacing(1) * geometry.Spacing(2);
+  if (!(std::abs(glm::determinant(m)) > 1e-9 * scale))
+  {
+    return "the volume's index-to-world matrix is singular (its axes are parallel): check the image's "
+           "direction matrix and the prop's matrix";
+  }
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      const double v = geometry.WorldToIndex[c][r];
+      if (!std::isfinite(v) || std::abs(v) > floatLimit)
+      {
+        return "the volume's world-to-index matrix does not fit in float: check the image's spacing, "
+               "origin and direction matrix and the prop's matrix";
+      }
+    }
+  }
+  return std::string();
+}
+
+vtkMTimeType NewestModification(std::initializer_list<vtkObject*> objects)
+{
+  vtkMTimeType t = 0;
+  for (vtkObject* o : objects)
+  {
+    if (o)
+    {
+      t = std::max(t, o->GetMTime());
+    }
+  }
+  return t;
 }
 
 std::string CheckProperty(vtkVolumeProperty* property)

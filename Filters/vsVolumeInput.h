@@ -14,11 +14,15 @@
 
 #include <glm/glm.hpp>
 
+#include "vtkType.h"
+
 #include <array>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
 class vtkDataArray;
+class vtkObject;
 class vtkImageData;
 class vtkMatrix4x4;
 class vtkVolumeProperty;
@@ -27,6 +31,16 @@ namespace vs
 {
 /** Returns an empty string when `image` can be rendered, else the reason. */
 VISSWEEPFILTERS_EXPORT std::string CheckImage(vtkImageData* image, vtkDataArray* scalars);
+
+/** Returns an empty string when `geometry` (from ComputeGeometry) can be rendered, else the
+ *  reason: every index-to-world number finite in float, no axis of zero or sub-1e-30 length
+ *  (zero spacing, a singular direction or prop matrix). Axes of one point are fine: they are
+ *  one voxel thick (VolumeGeometry's box), so 1 x 1 x 1 and 1 x 1 x N volumes render. */
+VISSWEEPFILTERS_EXPORT std::string CheckGeometry(const VolumeGeometry& geometry);
+
+/** The newest modification time of the given objects (null entries ignored): what decides
+ *  whether an error seen again is news (reported once per change, not once per Render()). */
+VISSWEEPFILTERS_EXPORT vtkMTimeType NewestModification(std::initializer_list<vtkObject*> objects);
 
 /** Returns an empty string when `property` can be used, else the reason. */
 VISSWEEPFILTERS_EXPORT std::string CheckProperty(vtkVolumeProperty* property);

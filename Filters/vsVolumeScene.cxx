@@ -33,6 +33,11 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
   }
   Changes changes;
   VolumeGeometry geometry = ComputeGeometry(image, volumeMatrix);
+  problem = CheckGeometry(geometry);
+  if (!problem.empty())
+  {
+    throw InputError(problem);
+  }
   changes.Geometry = !this->Volume_ || geometry.Dims != this->Geometry_.Dims ||
     geometry.IndexToWorld != this->Geometry_.IndexToWorld;
   this->Geometry_ = geometry;

@@ -19,6 +19,8 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkVolumeProperty.h"
 
+#include <array>
+
 vtkStandardNewMacro(vtkVisibilityGridFilter);
 vtkCxxSetObjectMacro(vtkVisibilityGridFilter, VolumeProperty, vtkVolumeProperty);
 vtkCxxSetObjectMacro(vtkVisibilityGridFilter, ClippingPlanes, vtkPlaneCollection);
@@ -91,9 +93,20 @@ int vtkVisibilityGridFilter::RequestInformation(
   }
   vs::VolumeGeometry g = vs::VolumeGeometry::Axis(
     { { uint32_t(dims[0]), uint32_t(dims[1]), uint32_t(dims[2]) } });
-  // The same cells the grid will have on the device (capped by its largest 3D image).
-  auto cells = vs::SweepPlan::CellCount(g, std::max(1.0, this->VoxelsPerCell), uint32_t(std::max(1, this->DirectionResolution)),
-    vs::Context::Default()->Info().MaxImageDimension3D);
+  // The same cells the grid will have on the device (capped by its largest 3D image). Without a
+  // device (no driver, VISSWEEP_DEVICE naming none) the request fails with the reason: an
+  // exception must not leave a VTK pipeline call (it ended in std::terminate, issue 13).
+  std::array<uint32_t, 3> cells;
+  try
+  {
+    cells = vs::SweepPlan::CellCount(g, std::max(1.0, this->VoxelsPerCell),
+      uint32_t(std::max(1, this->DirectionResolution)), vs::Context::Default()->Info().MaxImageDimension3D);
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< "cannot compute the visibility grid: " << e.what());
+    return 0;
+  }
   int outExtent[6] = { 0, int(cells[0]) - 1, 0, int(cells[1]) - 1, 0, int(cells[2]) - 1 };
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), outExtent, 6);
   outInfo->Set(vtkDataObject::SPACING(), spacing, 3);

@@ -133,13 +133,4 @@ std::vector<std::string> PropertyChecks::NewWarnings(const std::vector<std::stri
   return fresh;
 }
 
-bool PropertyChecks::IsNewError(const std::string& message)
-{
-  if (message == this->LastError)
-  {
-    return false;
-  }
-  this->LastError = message;
-  return true;
-}
 }

@@ -1,8 +1,8 @@
 // vsPropertyChecks.h — the vtkVolumeProperty, mapper and renderer settings VisSweep does not
 // honour, said once per change. VTK users set these for vtkGPUVolumeRayCastMapper; silently
 // ignoring them shows a different picture without a word. The mapper asks Ignored() each
-// Render() and logs only what is new (NewWarnings), and logs an error only when it differs
-// from the last one (IsNewError), so a render loop does not flood the log.
+// Render() and logs only what is new (NewWarnings), so a render loop does not flood the log.
+// (Errors are logged once per change by the mapper's ReportError.)
 #ifndef vsPropertyChecks_h
 #define vsPropertyChecks_h
 
@@ -30,14 +30,8 @@ public:
    *  becomes ignored (or changes), not again while it stays so. */
   std::vector<std::string> NewWarnings(const std::vector<std::string>& current);
 
-  /** True when `message` is not the error reported last; the mapper logs only those.
-   *  ClearError() after a successful render (the same error later is new again). */
-  bool IsNewError(const std::string& message);
-  void ClearError() { this->LastError.clear(); }
-
 private:
   std::vector<std::string> Active;
-  std::string LastError;
 };
 }
 

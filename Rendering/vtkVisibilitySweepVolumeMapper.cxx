@@ -31,6 +31,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkPlane.h"
@@ -71,6 +72,8 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   vtkSmartPointer<vtkImageData> VisibilityImage;
   std::string LastError;
   vs::PropertyChecks Checks; // the settings VisSweep ignores, warned once per change
+  vtkMTimeType ErrorStamp = 0;        // the inputs' newest modification time when LastError was reported
+  vtkMTimeType RenderStamp = 0;       // the same, for the Render() in progress
   uint32_t Frame = 0;
 };
 
@@ -160,11 +163,32 @@ const char* vtkVisibilitySweepVolumeMapper::GetLastError()
 
 void vtkVisibilitySweepVolumeMapper::ReportError(const std::string& message)
 {
-  this->Impl->LastError = message;
-  if (this->Impl->Checks.IsNewError(message)) // once per change, not once per Render()
+  Internals& I = *this->Impl;
+  // Once per change: the same error for unchanged inputs is not reported again at every
+  // Render() (an application re-rendering a bad volume would flood its log). GetLastError()
+  // keeps it, and GetRadiance() has no image until a render succeeds again.
+  const bool repeated = message == I.LastError && I.RenderStamp == I.ErrorStamp;
+  I.LastError = message;
+  I.ErrorStamp = I.RenderStamp;
+  I.Radiance = nullptr;
+  if (!repeated)
   {
     vtkErrorMacro(<< message);
   }
+}
+
+double* vtkVisibilitySweepVolumeMapper::GetBounds()
+{
+  // NaN bounds made VTK's culler drop the volume before Render(), which then never said why.
+  // Uninitialised bounds keep it in the render list: Render() reports the geometry's error
+  // (vs::CheckGeometry), once per change.
+  double* b = this->Superclass::GetBounds();
+  if (b && !std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }))
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+    return this->Bounds;
+  }
+  return b;
 }
 
 void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow*)
@@ -210,6 +234,8 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
 {
   Internals& I = *this->Impl;
   vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
+  I.RenderStamp = vs::NewestModification({ this, input, vol,
+    this->GetNumberOfInputConnections(1) > 0 ? this->GetInputAlgorithm(1, 0) : nullptr });
   int cellFlag = 0;
   vtkDataArray* scalars = input
     ? vtkAbstractMapper::GetScalars(input, this->ScalarMode, this->ArrayAccessMode, this->ArrayId,
@@ -267,7 +293,6 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
       this->RenderMonteCarlo(ren, vol);
     }
     I.LastError.clear();
-    I.Checks.ClearError();
   }
   catch (const std::exception& e)
   {
@@ -857,13 +882,21 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)
   if (variance)
   {
     // Double: the variance of radiance below ~1e-19 (a dim map in physical units) is below float's range.
-    std::vector<double> var = this->CombinedVariance(this->SamplingStrategy == Auto);
-    vtkNew<vtkDoubleArray> v;
-    v->SetName("Variance");
-    v->SetNumberOfComponents(4);
-    v->SetNumberOfTuples(vtkIdType(var.size() / 4));
-    std::copy(var.begin(), var.end(), v->GetPointer(0));
-    I.Radiance->GetPointData()->AddArray(v);
+    try
+    {
+      std::vector<double> var = this->CombinedVariance(this->SamplingStrategy == Auto);
+      vtkNew<vtkDoubleArray> v;
+      v->SetName("Variance");
+      v->SetNumberOfComponents(4);
+      v->SetNumberOfTuples(vtkIdType(var.size() / 4));
+      std::copy(var.begin(), var.end(), v->GetPointer(0));
+      I.Radiance->GetPointData()->AddArray(v);
+    }
+    catch (const std::exception& e)
+    {
+      vtkErrorMacro(<< "GetRadiance: cannot read the variance back from the device: " << e.what());
+      return nullptr;
+    }
   }
   return I.Radiance;
 }
@@ -898,10 +931,19 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetVisibilityGrid()
   }
   if (!I.VisibilityImage)
   {
-    I.VisibilityImage = vtkSmartPointer<vtkImageData>::New();
+    auto image = vtkSmartPointer<vtkImageData>::New();
     vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
-    // In data coordinates (no prop matrix), over the box the grid covers (cropped or not).
-    vs::VisibilityGridToImage(*I.Grid->Grid(), CroppedGeometry(this, vs::ComputeGeometry(input, nullptr)), I.VisibilityImage);
+    try
+    {
+      // In data coordinates (no prop matrix), over the box the grid covers (cropped or not).
+      vs::VisibilityGridToImage(*I.Grid->Grid(), CroppedGeometry(this, vs::ComputeGeometry(input, nullptr)), image);
+    }
+    catch (const std::exception& e)
+    {
+      vtkErrorMacro(<< "GetVisibilityGrid: cannot read the grid back from the device: " << e.what());
+      return nullptr;
+    }
+    I.VisibilityImage = image;
   }
   return I.VisibilityImage;
 }

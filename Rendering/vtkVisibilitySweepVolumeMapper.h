@@ -347,6 +347,12 @@ public:
   /** The last error reported with vtkErrorMacro, or "" after a successful render. */
   const char* GetLastError();
 
+  /** The input's bounds, uninitialised when they are not finite (NaN or infinite spacing or
+   *  origin): VTK's culler dropped such a volume before Render(), so nothing was drawn and
+   *  nothing said; now Render() runs and reports the error (once per change). */
+  double* GetBounds() VTK_SIZEHINT(6) override;
+  void GetBounds(double bounds[6]) override { this->vtkVolumeMapper::GetBounds(bounds); }
+
 protected:
   vtkVisibilitySweepVolumeMapper();
   ~vtkVisibilitySweepVolumeMapper() override;

@@ -3,7 +3,7 @@
 # runs each for SECONDS (default 20) on its growing corpus (build-fuzz/Testing/Fuzz/corpus/),
 # starting from the seeds and the checked-in regression inputs. Crashes are saved under
 # build-fuzz/Testing/Fuzz/artifacts/. Usage: scripts/fuzz.sh [SECONDS] [TARGET...]
-#   TARGET: scene_file, environment_map, openvdb (default: all three).
+#   TARGET: scene_file, environment_map, openvdb, volume_file (default: all four).
 # The same runs are ctest tests labelled "fuzz" in build-fuzz (ctest -L fuzz).
 #
 # scripts/fuzz.sh --ctest: builds, then runs `ctest -L fuzz` in build-fuzz (what scripts/test.sh
@@ -22,7 +22,7 @@ fi
 seconds="${1:-20}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(scene_file environment_map openvdb)
+[ ${#targets[@]} -gt 0 ] || targets=(scene_file environment_map openvdb volume_file)
 "$root/scripts/setup-debian.sh"
 if [ ! -f "$build/build.ninja" ]; then
   cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
@@ -45,7 +45,8 @@ for t in "${targets[@]}"; do
     scene_file) exe=fuzz_scene_file ;;
     environment_map) exe=fuzz_environment_map_reader ;;
     openvdb) exe=fuzz_openvdb_reader ;;
-    *) echo "fuzz.sh: unknown target '$t' (expected scene_file, environment_map, openvdb)" >&2; exit 2 ;;
+    volume_file) exe=fuzz_volume_file ;;
+    *) echo "fuzz.sh: unknown target '$t' (expected scene_file, environment_map, openvdb, volume_file)" >&2; exit 2 ;;
   esac
   dirs=("$fuzz/seeds/$t")
   [ -d "$root/Testing/Fuzz/regressions/$t" ] && dirs+=("$root/Testing/Fuzz/regressions/$t")

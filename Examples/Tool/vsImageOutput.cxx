@@ -1,4 +1,5 @@
 #include "vsImageOutput.h"
+#include "vsPendingFile.h"
 
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -43,11 +44,7 @@ void CheckOutputPath(const std::string& out)
   {
     throw std::runtime_error("-o " + out + ": unknown output format '" + ext + "' (expected .exr or .png)");
   }
-  fs::path dir = fs::path(out).has_parent_path() ? fs::path(out).parent_path() : fs::path(".");
-  if (!fs::is_directory(dir))
-  {
-    throw std::runtime_error("-o " + out + ": folder '" + dir.string() + "' does not exist");
-  }
+  CheckWritable("-o", out);
 }
 
 void WriteExr(vtkImageData* radiance, const std::string& path)

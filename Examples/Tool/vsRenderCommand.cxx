@@ -129,6 +129,10 @@ int Run(const RenderOptions& o)
   {
     CheckOutputPath(out);
   }
+  if (!o.Json.empty() && o.Json != "-")
+  {
+    CheckWritable("--json", o.Json);
+  }
   Scene scene = LoadScene(o);
   const bool timed = o.TimeBudget > 0.0;
   const int target = timed ? (1 << 30) : scene.Render.Spp;
@@ -197,14 +201,17 @@ int Run(const RenderOptions& o)
       throw std::runtime_error("--json " + o.Json + ": cannot write");
     }
   }
+  // All outputs (images and statistics) together or none.
+  std::vector<PendingFile*> group;
   for (auto& p : pending)
   {
-    p->Commit();
+    group.push_back(p.get());
   }
   if (jsonFile)
   {
-    jsonFile->Commit();
+    group.push_back(jsonFile.get());
   }
+  CommitAll(group);
   stats["wall_seconds"] = Seconds(start, Clock::now());
   if (o.Json == "-")
   {

@@ -141,6 +141,10 @@ int RunFrames(const RenderOptions& o)
   {
     CheckOutputPath(FrameOutputName(out, range.First));
   }
+  if (!o.Json.empty() && o.Json != "-")
+  {
+    CheckWritable("--json", o.Json);
+  }
   const bool timed = o.TimeBudget > 0.0;
   const int target = timed ? (1 << 30) : scene.Render.Spp;
   const bool bar = !o.Quiet && ::isatty(STDERR_FILENO);
@@ -164,9 +168,14 @@ int RunFrames(const RenderOptions& o)
     {
       names.push_back(FrameOutputName(out, step));
     }
-    for (auto& file : WriteOutputs(objects, scene, names))
     {
-      file->Commit();
+      auto files = WriteOutputs(objects, scene, names);
+      std::vector<PendingFile*> group;
+      for (auto& file : files)
+      {
+        group.push_back(file.get());
+      }
+      CommitAll(group); // this step's images together or none
     }
     frames.push_back(FrameStats(step, r, readSeconds, names));
     if (o.Json != "-")

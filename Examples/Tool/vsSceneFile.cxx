@@ -796,6 +796,18 @@ Scene ParseSceneText(const std::string& text, const std::string& baseDir)
 
 Scene ReadSceneFile(const std::string& path)
 {
+  // A directory opened as a stream reads as empty ("invalid JSON ... unexpected end of input"),
+  // and a FIFO or device would block: say what the path is instead.
+  std::error_code ec;
+  const std::filesystem::file_status st = std::filesystem::status(path, ec);
+  if (!ec && std::filesystem::is_directory(st))
+  {
+    throw std::runtime_error("scene file '" + path + "' is a directory, not a JSON scene file");
+  }
+  if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st))
+  {
+    throw std::runtime_error("scene file '" + path + "' is not a regular file (a FIFO, device or socket)");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {

@@ -5,6 +5,7 @@
 #define vsToolVolume_h
 
 #include "vtkSmartPointer.h"
+#include "vtkType.h"
 
 #include <string>
 #include <vector>
@@ -15,8 +16,12 @@ class vtkVolumeProperty;
 namespace vstool
 {
 /** Reads a volume; throws std::runtime_error naming the file and the reason. For .vdb, `grid`
- *  is the float grid to read. */
-vtkSmartPointer<vtkImageData> ReadVolume(const std::string& path, const std::string& grid = "density");
+ *  is the float grid to read. Every reader's result is checked: its error events and
+ *  GetErrorCode(), MetaIO's messages, as many values as points, finite non-zero spacing and a
+ *  finite origin; a path that is not a regular file (a FIFO, a device) is refused before any
+ *  reader opens it, and a header claiming more than `maxPoints` points before any allocation. */
+vtkSmartPointer<vtkImageData> ReadVolume(const std::string& path, const std::string& grid = "density",
+  vtkIdType maxPoints = vtkIdType(1) << 31);
 
 /** Reads time step `step` of a .vdb sequence (one file per step, a fixed extent for all steps). */
 vtkSmartPointer<vtkImageData> ReadVolumeSequence(

@@ -15,6 +15,7 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <cmath>
 #include <functional>
 #include <iostream>
 
@@ -53,6 +54,12 @@ bool Case(const char* name, vtkImageData* image, vtkVolumeProperty* property, co
   win->Render();
   win->Render(); // a second render must not crash either
   bool ok = recorder->Saw(expected);
+  // Reported once per change, not at every Render() (two renders of the same input here).
+  if (recorder->Errors.size() != 1)
+  {
+    std::cerr << name << ": " << recorder->Errors.size() << " errors for two renders of the same input, expected 1\n";
+    ok = false;
+  }
   if (!ok)
   {
     std::cerr << name << ": expected an error containing '" << expected << "', got:";
@@ -101,6 +108,24 @@ int TestMapperBadInput(int, char*[])
   vtkNew<vtkPiecewiseFunction> emptyOpacity;
   noPoints->SetScalarOpacity(emptyOpacity);
   ok &= Case("empty transfer function", Image(8, 8, 8), noPoints, "no points");
+
+  // Geometry that cannot render (issue 13 item 3): zero spacing restarted every Render()
+  // forever, NaN/Inf spacing or origin rendered nothing and said nothing.
+  auto zeroSpacing = Image(8, 8, 8);
+  zeroSpacing->SetSpacing(1.0, 0.0, 1.0);
+  ok &= Case("zero spacing", zeroSpacing, good, "spacing along y is 0");
+  auto nanSpacing = Image(8, 8, 8);
+  nanSpacing->SetSpacing(1.0, 1.0, std::nan(""));
+  ok &= Case("NaN spacing", nanSpacing, good, "not finite");
+  auto infOrigin = Image(8, 8, 8);
+  infOrigin->SetOrigin(0.0, HUGE_VAL, 0.0);
+  ok &= Case("infinite origin", infOrigin, good, "not finite");
+  auto tinySpacing = Image(8, 8, 8);
+  tinySpacing->SetSpacing(1e-200, 1.0, 1.0);
+  ok &= Case("spacing below float", tinySpacing, good, "must lie between");
+  auto singular = Image(8, 8, 8);
+  singular->SetDirectionMatrix(1, 0, 0, 0, 1, 1, 0, 0, 0);
+  ok &= Case("singular direction matrix", singular, good, "singular");
 
   // One voxel more than the device's largest 3D image: refused before any allocation.
   ok &= Case("too large for the device", Image(4097, 2, 2), good, "maxImageDimension3D");

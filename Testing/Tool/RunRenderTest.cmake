@@ -3,12 +3,17 @@
 #   good:   -DSCENE=<json>          renders 32x32, writes .exr + .png + stats, checks them
 #           [-DCHECK=framed]        and that the volume is centred in the view (vsCheckExr)
 #   budget: -DSCENE=<json>          --time-budget instead of --spp
-#   bad:    -DSCENE=<json> -DEXPECT=<text> [-DEXTRA=<args;...>]  exit code 2, message, no output
+#   bad:    -DSCENE=<json> -DEXPECT=<text> [-DEXTRA=<args;...>] [-DMKDIRS=<names>]  exit code 2,
+#           message, no output
 #   frames: -DSCENE=<json> (a 3-step sequence, round-robin)  --frames 0:2 to numbered EXR + PNG,
 #           per-frame stats: 64 directions swept for the first step, 4 for each later one
 cmake_minimum_required(VERSION 3.19)
 file(REMOVE_RECURSE "${OUT_DIR}")
 file(MAKE_DIRECTORY "${OUT_DIR}")
+# -DMKDIRS=<names>: folders made in OUT_DIR first (e.g. an output path that is a directory).
+foreach (d IN LISTS MKDIRS)
+  file(MAKE_DIRECTORY "${OUT_DIR}/${d}")
+endforeach ()
 set(exr "${OUT_DIR}/out.exr")
 set(png "${OUT_DIR}/out.png")
 set(stats "${OUT_DIR}/stats.json")
@@ -135,8 +140,13 @@ elseif (MODE STREQUAL "frames")
   endforeach ()
   check_no_leftovers()
 elseif (MODE STREQUAL "bad")
+  # -DJSON=<path>: the --json path (default stats.json in OUT_DIR).
+  set(json_out "${stats}")
+  if (JSON)
+    set(json_out "${JSON}")
+  endif ()
   execute_process(
-    COMMAND "${VISSWEEP}" render "${SCENE}" -o "${exr}" -o "${png}" --json "${stats}" ${EXTRA}
+    COMMAND "${VISSWEEP}" render "${SCENE}" -o "${exr}" -o "${png}" --json "${json_out}" ${EXTRA}
     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   message(STATUS "stderr: ${err}")
   if (NOT rc EQUAL 2)

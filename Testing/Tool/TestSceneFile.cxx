@@ -246,6 +246,24 @@ TEST(SceneFile, RelativePathsResolveAgainstTheSceneFolder)
   fs::remove_all(dir);
 }
 
+// A directory used to read as an empty file: "invalid JSON ... unexpected end of input".
+TEST(SceneFile, DirectoryIsNamedAsADirectory)
+{
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("vissweep-scene-dir-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  try
+  {
+    vstool::ReadSceneFile(dir.string());
+    FAIL() << "no error";
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
 TEST(SceneFile, FileErrorsNameTheFile)
 {
   try
