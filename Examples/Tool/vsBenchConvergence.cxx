@@ -185,6 +185,7 @@ public:
   void Start(const std::string& strategy, int seed, bool progressive)
   {
     this->M->SetSamplesPerFrame(1);
+    this->M->SetSeed(seed == 99991 ? 99992 : 99991); // not the run's: its first frame restarts accumulation
     this->M->SetProgressiveVisibility(true);
     this->M->SetSamplingStrategy(vtkVisibilitySweepVolumeMapper::TwoStep);
     this->Render();
@@ -307,7 +308,9 @@ int Run(const Options& given)
       double sweepSeconds = 0.0;
       const auto t0 = Clock::now();
       auto elapsed = [&]() { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+      int frames = 0;
       auto frame = [&]() {
+        ++frames;
         run.Render();
         sweepSeconds += m->GetLastFrameSweepSeconds();
       };
@@ -326,9 +329,12 @@ int Run(const Options& given)
           // Frames of a size that lands close to the budget.
           while (elapsed() < p.Budget)
           {
-            const double perSample = elapsed() / std::max(1, m->GetAccumulatedSamples());
+            // The run's first frame is one sample: its time is the first estimate of a sample's
+            // cost (before it, the sample count is still the warm-up's).
+            const int acc = frames == 0 ? 0 : m->GetAccumulatedSamples();
+            const double perSample = elapsed() / std::max(1, acc);
             const int left = int((p.Budget - elapsed()) / std::max(perSample, 1e-6));
-            m->SetSamplesPerFrame(std::clamp(left / 2, 1, 64));
+            m->SetSamplesPerFrame(acc == 0 ? 1 : std::clamp(left / 2, 1, 64));
             frame();
           }
         }
