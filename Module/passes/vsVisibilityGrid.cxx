@@ -15,6 +15,7 @@
 #include "vs_spirv_visibility_bruteforce.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 
 namespace vs
@@ -124,6 +125,7 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
   const MajorantGrid& majorants, const VolumeGeometry& geometry, const std::vector<glm::dvec4>& worldClipPlanes,
   const VisibilityGridParameters& parameters, const std::vector<uint32_t>& requested, const Progress& progress)
 {
+  const auto wallStart = std::chrono::steady_clock::now();
   parameters.Validate();
   if (worldClipPlanes.size() > 6)
   {
@@ -173,6 +175,7 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
 
   this->LastSeconds_ = 0.0;
   this->LastDispatches_ = 0;
+  this->LastStageSeconds_.clear();
   if (parameters.Algorithm == VisibilityGridParameters::Method::Sweep)
   {
     this->RunSweeps(volume, tf, majorants, globals, progress);
@@ -182,6 +185,7 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
     this->RunBruteForce(volume, tf, majorants, globals, directions, progress);
   }
   this->DirectionsComputed_ += directions.size();
+  this->LastWallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
 }
 
 void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctionTable& tf,
@@ -263,14 +267,22 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
     const uint32_t nd = uint32_t(batch.size());
     const uint32_t chunk = chunks[bi];
     Batch cmd(this->Context_);
-    cmd.BeginTimer("sweep");
+    const bool profiling = this->Profiling_;
+    auto stage = [&](const char* name) {
+      if (profiling)
+        cmd.BeginTimer(name);
+    };
+    if (!profiling)
+      cmd.BeginTimer("sweep");
     for (uint32_t first = 0; first < slices; first += chunk)
     {
       ChunkPush cp{ first, chunk, firsts[bi] };
+      stage("march");
       cmd.Dispatch(*this->March_, march, &cp, sizeof(cp), (ra + 7) / 8, (rb + 7) / 8, nd);
       cmd.Barrier();
       if (filtering)
       {
+        stage("filter");
         FilterPush rows{ first, chunk, firsts[bi], 0u };
         cmd.Dispatch(*this->Filter_, *filter, &rows, sizeof(rows), (rb + 63) / 64, chunk, nd);
         cmd.Barrier();
@@ -278,12 +290,24 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
         cmd.Dispatch(*this->Filter_, *filter, &cols, sizeof(cols), (ra + 63) / 64, chunk, nd);
         cmd.Barrier();
       }
+      stage("project");
       cmd.Dispatch(*this->Project_, project, &cp, sizeof(cp), (ga + 7) / 8, (gb + 7) / 8, chunk * nd);
       cmd.Barrier();
     }
     cmd.EndTimer();
     cmd.Submit();
-    this->LastSeconds_ += cmd.Seconds("sweep");
+    if (profiling)
+    {
+      for (const auto& [name, seconds] : cmd.Timings())
+      {
+        this->LastStageSeconds_[name] += seconds;
+        this->LastSeconds_ += seconds;
+      }
+    }
+    else
+    {
+      this->LastSeconds_ += cmd.Seconds("sweep");
+    }
     this->LastDispatches_ += cmd.DispatchCount();
     if (progress)
     {

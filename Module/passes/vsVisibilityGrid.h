@@ -14,7 +14,9 @@
 #include "vsVolumeGeometry.h"
 
 #include <functional>
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace vs
@@ -68,6 +70,12 @@ public:
   /** Device seconds of the last Compute, and its dispatch count. */
   double LastSeconds() const { return this->LastSeconds_; }
   uint32_t LastDispatches() const { return this->LastDispatches_; }
+  /** With profiling on, every sweep dispatch gets its own timer and LastStageSeconds() holds the
+   *  device seconds of the last Compute per stage ("march", "filter", "project", ...). */
+  void SetProfiling(bool on) { this->Profiling_ = on; }
+  const std::map<std::string, double>& LastStageSeconds() const { return this->LastStageSeconds_; }
+  /** Host wall-clock seconds of the last Compute (planning, buffers, submits, waits). */
+  double LastWallSeconds() const { return this->LastWallSeconds_; }
   /** Directions swept (or brute-forced) since this object was made. */
   uint64_t DirectionsComputed() const { return this->DirectionsComputed_; }
 
@@ -85,6 +93,9 @@ private:
   std::unique_ptr<Image3D> Image_;
   std::shared_ptr<ComputePipeline> March_, Filter_, Project_, Brute_;
   double LastSeconds_ = 0.0;
+  double LastWallSeconds_ = 0.0;
+  bool Profiling_ = false;
+  std::map<std::string, double> LastStageSeconds_;
   uint32_t LastDispatches_ = 0;
   uint64_t DirectionsComputed_ = 0;
 };
