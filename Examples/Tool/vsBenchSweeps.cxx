@@ -36,6 +36,7 @@ struct Options
   int ReferenceSamples = 16;
   bool Quick = false;
   bool Profile = false;
+  std::string Only;
   std::vector<uint32_t> SubsetSizes;
   std::vector<double> Cells;
   std::vector<uint32_t> Kernels;
@@ -91,6 +92,8 @@ int RunProfile(const Options& o)
   const std::vector<Config> configs = { { "renderer", renderer }, { "accurate", vs::VisibilityGridParameters() } };
   for (const Config& c : configs)
   {
+    if (!o.Only.empty() && o.Only != c.Name)
+      continue;
     vs::VisibilityGrid grid(ctx);
     grid.SetProfiling(true);
     std::map<std::string, std::vector<double>> stages;
@@ -119,6 +122,8 @@ int RunProfile(const Options& o)
     const std::vector<uint32_t> sizes = o.SubsetSizes.empty() ? std::vector<uint32_t>{ 1, 8 } : o.SubsetSizes;
     for (uint32_t k : sizes)
     {
+      if (k == 0)
+        continue;
       double device = 0.0, host = 0.0;
       uint32_t calls = 0;
       for (uint32_t first = 0; first < count; first += k)
@@ -310,7 +315,8 @@ void AddBenchSweeps(CLI::App& bench)
   cmd->add_flag("--quick", o->Quick, "one configuration only (seconds)");
   cmd->add_flag("--profile", o->Profile,
     "device time per stage of the renderer's and the accurate grid, and of small-subset calls (no brute force)");
-  cmd->add_option("--subsets", o->SubsetSizes, "with --profile: directions per call to time (default 1,8)")
+  cmd->add_option("--only", o->Only, "with --profile: only the 'renderer' or the 'accurate' grid");
+  cmd->add_option("--subsets", o->SubsetSizes, "with --profile: directions per call to time (default 1,8; 0 = none)")
     ->delimiter(',');
   cmd->add_option("--cells", o->Cells, "voxels per cell to tabulate (default 2,4,8,16)")->delimiter(',');
   cmd->add_option("--kernels", o->Kernels, "kernel rays to tabulate, 0 = automatic (default 32,64,128,256,0)")

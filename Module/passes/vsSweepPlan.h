@@ -60,6 +60,17 @@ struct VISSWEEPCORE_EXPORT VisibilityGridParameters
   Format StorageFormat = Format::Unorm8;
   /** Kernel rays stop marching below this transmittance (below the 8-bit resolution). */
   float StopTransmittance = 1e-6f;
+  /** The sweeps march a pooled extinction volume of P^3 voxels per texel (mean of sigma_t, which
+   *  keeps the optical depth through a block; trilinear between texels) with steps P times longer,
+   *  built once per volume / transfer function and cached across Compute() calls. 1 = march the
+   *  full-resolution volume (post-classified samples, the brute force's integrand); 0 = automatic
+   *  (AutomaticPooling()). The brute force always marches the full volume. */
+  uint32_t ExtinctionPooling = 0;
+  /** Pool by the max instead of the mean (conservative: darker, for comparison). */
+  bool MaxPooling = false;
+
+  /** The pooling factor the sweeps use (ExtinctionPooling, or the automatic choice). */
+  uint32_t PoolingFactor() const;
 
   /** Throws InputError naming the parameter when one is out of range. */
   void Validate() const;
