@@ -37,6 +37,8 @@ struct Options
   bool Quick = false;
   bool Profile = false;
   std::string Only;
+  int Pooling = -1;
+  bool MaxPooling = false;
   std::vector<uint32_t> SubsetSizes;
   std::vector<double> Cells;
   std::vector<uint32_t> Kernels;
@@ -89,7 +91,16 @@ int RunProfile(const Options& o)
   };
   vs::VisibilityGridParameters renderer;
   renderer.AutoKernelRaysPerCell = vs::RendererKernelRaysPerCell;
-  const std::vector<Config> configs = { { "renderer", renderer }, { "accurate", vs::VisibilityGridParameters() } };
+  vs::VisibilityGridParameters accurate;
+  for (auto* p : { &renderer, &accurate })
+  {
+    if (o.Pooling >= 0)
+      p->ExtinctionPooling = uint32_t(o.Pooling);
+    p->MaxPooling = o.MaxPooling;
+  }
+  std::printf("extinction pooling: %u voxels per texel (%s)\n", renderer.PoolingFactor(),
+    renderer.MaxPooling ? "max" : "mean");
+  const std::vector<Config> configs = { { "renderer", renderer }, { "accurate", accurate } };
   for (const Config& c : configs)
   {
     if (!o.Only.empty() && o.Only != c.Name)
@@ -315,6 +326,8 @@ void AddBenchSweeps(CLI::App& bench)
   cmd->add_flag("--quick", o->Quick, "one configuration only (seconds)");
   cmd->add_flag("--profile", o->Profile,
     "device time per stage of the renderer's and the accurate grid, and of small-subset calls (no brute force)");
+  cmd->add_option("--pooling", o->Pooling, "with --profile: ExtinctionPooling (0 auto, 1 full resolution)");
+  cmd->add_flag("--max-pooling", o->MaxPooling, "with --profile: pool by the max instead of the mean");
   cmd->add_option("--only", o->Only, "with --profile: only the 'renderer' or the 'accurate' grid");
   cmd->add_option("--subsets", o->SubsetSizes, "with --profile: directions per call to time (default 1,8; 0 = none)")
     ->delimiter(',');
