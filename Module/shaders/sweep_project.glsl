@@ -4,7 +4,8 @@
  * (filtered) kernel bilinearly; store into the visibility grid, an image of
  * (cells.x * D, cells.y * D, cells.z) texels: cell c holds its D x D directions as a tile.
  * Included by sweep_project_{r8,r16,r32f}.comp, which define VS_VIS_FORMAT: a store to an
- * image of known format (measured: lavapipe's format-less stores are several times slower).
+ * image of known format (on lavapipe, measured no faster than a format-less store; kept so
+ * the sweeps do not need shaderStorageImageWriteWithoutFormat for the grid).
  */
 #include "sweep_params.h"
 
