@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <map>
 
 namespace vstool
 {
@@ -34,6 +35,11 @@ struct Options
   int Repeats = 3;
   int ReferenceSamples = 16;
   bool Quick = false;
+  bool Profile = false;
+  std::string Only;
+  int Pooling = -1;
+  bool MaxPooling = false;
+  std::vector<uint32_t> SubsetSizes;
   std::vector<double> Cells;
   std::vector<uint32_t> Kernels;
 };
@@ -62,8 +68,105 @@ double Median(std::vector<double> v)
   return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
+// `--profile`: where the sweep time goes, for the renderer's grid (RendererKernelRaysPerCell) and the
+// filters' accurate one, per stage (march, filter, project), with host wall time and dispatches, and
+// the cost of covering all directions in small subsets (what a progressive grid update does).
+int RunProfile(const Options& o)
+{
+  auto ctx = vs::Context::Default();
+  auto image = ReadVolume(o.Volume);
+  auto property = SkinProperty();
+  vs::VolumeScene scene(ctx);
+  scene.Update(image, image->GetPointData()->GetScalars(), property, nullptr, 1.0);
+  const auto dims = scene.Geometry().Dims;
+  std::printf("volume %s: %u x %u x %u voxels; device '%s'; empty bricks %.1f %%\n", o.Volume.c_str(), dims[0],
+    dims[1], dims[2], ctx->Info().Name.c_str(), 100.0 * scene.Majorants().EmptyFraction());
+  nlohmann::json report;
+  report["volume"] = o.Volume;
+  report["dims"] = { dims[0], dims[1], dims[2] };
+  struct Config
+  {
+    std::string Name;
+    vs::VisibilityGridParameters P;
+  };
+  vs::VisibilityGridParameters renderer;
+  renderer.AutoKernelRaysPerCell = vs::RendererKernelRaysPerCell;
+  vs::VisibilityGridParameters accurate;
+  for (auto* p : { &renderer, &accurate })
+  {
+    if (o.Pooling >= 0)
+      p->ExtinctionPooling = uint32_t(o.Pooling);
+    p->MaxPooling = o.MaxPooling;
+  }
+  std::printf("extinction pooling: %u voxels per texel (%s)\n", renderer.PoolingFactor(),
+    renderer.MaxPooling ? "max" : "mean");
+  const std::vector<Config> configs = { { "renderer", renderer }, { "accurate", accurate } };
+  for (const Config& c : configs)
+  {
+    if (!o.Only.empty() && o.Only != c.Name)
+      continue;
+    vs::VisibilityGrid grid(ctx);
+    grid.SetProfiling(true);
+    std::map<std::string, std::vector<double>> stages;
+    std::vector<double> total, wall;
+    for (int r = 0; r < o.Repeats; ++r)
+    {
+      grid.Compute(scene.Volume(), scene.TF(), scene.Majorants(), scene.Geometry(), {}, c.P);
+      total.push_back(grid.LastSeconds());
+      wall.push_back(grid.LastWallSeconds());
+      for (const auto& [name, sec] : grid.LastStageSeconds())
+        stages[name].push_back(sec);
+    }
+    std::sort(total.begin(), total.end());
+    std::printf("\n%s grid (%u x %u x %u cells): device %.3f s (min %.3f, max %.3f over %d), wall %.3f s, %u dispatches\n",
+      c.Name.c_str(), grid.Cells()[0], grid.Cells()[1], grid.Cells()[2], Median(total), total.front(), total.back(),
+      o.Repeats, Median(wall), grid.LastDispatches());
+    report[c.Name]["device_seconds"] = total;
+    report[c.Name]["wall_seconds"] = wall;
+    for (const auto& [name, secs] : stages)
+    {
+      std::printf("  %-10s %.3f s (%.0f %%)\n", name.c_str(), Median(secs), 100.0 * Median(secs) / Median(total));
+      report[c.Name]["stages"][name] = secs;
+    }
+    // All directions in subsets of k per call, on a grid that already has the layout.
+    const uint32_t count = c.P.DirectionResolution * c.P.DirectionResolution;
+    const std::vector<uint32_t> sizes = o.SubsetSizes.empty() ? std::vector<uint32_t>{ 1, 8 } : o.SubsetSizes;
+    for (uint32_t k : sizes)
+    {
+      if (k == 0)
+        continue;
+      double device = 0.0, host = 0.0;
+      uint32_t calls = 0;
+      for (uint32_t first = 0; first < count; first += k)
+      {
+        std::vector<uint32_t> subset;
+        for (uint32_t n = first; n < std::min(count, first + k); ++n)
+          subset.push_back(n);
+        grid.Compute(scene.Volume(), scene.TF(), scene.Majorants(), scene.Geometry(), {}, c.P, subset);
+        device += grid.LastSeconds();
+        host += grid.LastWallSeconds();
+        ++calls;
+      }
+      std::printf("  all %u directions in %u calls of %u: device %.3f s, wall %.3f s (%.1f ms wall per call)\n", count,
+        calls, k, device, host, 1e3 * host / calls);
+      report[c.Name]["subsets"][std::to_string(k)] = { { "calls", calls }, { "device_seconds", device },
+        { "wall_seconds", host } };
+    }
+  }
+  if (!o.Json.empty())
+  {
+    std::ofstream(o.Json) << report.dump(2) << "\n";
+    std::printf("wrote %s\n", o.Json.c_str());
+  }
+  return 0;
+}
+
 int Run(const Options& o)
 {
+  if (o.Profile)
+  {
+    return RunProfile(o);
+  }
   auto ctx = vs::Context::Default();
   auto image = ReadVolume(o.Volume);
   auto property = SkinProperty();
@@ -221,6 +324,13 @@ void AddBenchSweeps(CLI::App& bench)
   cmd->add_option("--reference-samples", o->ReferenceSamples, "rays per cell and direction of the reference")
     ->check(CLI::PositiveNumber);
   cmd->add_flag("--quick", o->Quick, "one configuration only (seconds)");
+  cmd->add_flag("--profile", o->Profile,
+    "device time per stage of the renderer's and the accurate grid, and of small-subset calls (no brute force)");
+  cmd->add_option("--pooling", o->Pooling, "with --profile: ExtinctionPooling (0 auto, 1 full resolution)");
+  cmd->add_flag("--max-pooling", o->MaxPooling, "with --profile: pool by the max instead of the mean");
+  cmd->add_option("--only", o->Only, "with --profile: only the 'renderer' or the 'accurate' grid");
+  cmd->add_option("--subsets", o->SubsetSizes, "with --profile: directions per call to time (default 1,8; 0 = none)")
+    ->delimiter(',');
   cmd->add_option("--cells", o->Cells, "voxels per cell to tabulate (default 2,4,8,16)")->delimiter(',');
   cmd->add_option("--kernels", o->Kernels, "kernel rays to tabulate, 0 = automatic (default 32,64,128,256,0)")
     ->delimiter(',');

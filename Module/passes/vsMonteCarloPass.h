@@ -1,4 +1,4 @@
-// vsMonteCarloPass.h — progressive Monte Carlo single scattering (seed 000) on the
+// vsMonteCarloPass.h — progressive Monte Carlo single scattering (von Radziewsky et al. 2017) on the
 // device: each Render() adds samples per pixel to compensated float accumulators
 // of (rgb, alpha) and of their squares; Mean() and Variance() read them back.
 // Reset() restarts accumulation (camera, transfer function, light... changed).

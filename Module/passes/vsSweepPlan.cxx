@@ -56,6 +56,21 @@ void VisibilityGridParameters::Validate() const
   {
     throw InputError("BruteForceSamples must be at least 1");
   }
+  if (this->ExtinctionPooling > 16)
+  {
+    throw InputError("ExtinctionPooling must be 0 (auto) to 16 voxels per pooled texel, got " +
+      std::to_string(this->ExtinctionPooling));
+  }
+}
+
+uint32_t VisibilityGridParameters::PoolingFactor() const
+{
+  if (this->ExtinctionPooling > 0)
+  {
+    return this->ExtinctionPooling;
+  }
+  // Automatic: half a cell (2 voxels at the default 4^3 voxels per cell).
+  return std::max<uint32_t>(1, uint32_t(std::floor(this->VoxelsPerCell / 2.0 + 1e-9)));
 }
 
 double SweepPlan::CellOpeningAngle(uint32_t side)

@@ -1,4 +1,4 @@
-// vsSweepPlan.h — the geometry of the visibility sweeps (seed 000, Sec. 6, 8),
+// vsSweepPlan.h — the geometry of the visibility sweeps (von Radziewsky et al. 2017, Sec. 6, 8),
 // computed on the host: for each direction of the D x D equal-area octahedral
 // map, the sweep axis (Eq. 6), the start plane on the side the light comes
 // from (Eq. 7), the sweeping kernel covering the box projected along the light,
@@ -65,6 +65,17 @@ struct VISSWEEPCORE_EXPORT VisibilityGridParameters
    *  comes from (the environment's radiance-weighted mean direction inside the texel), so that a
    *  sun off the texel's centre is swept along its own direction. */
   std::vector<glm::vec3> Directions;
+  /** The sweeps march a pooled extinction volume of P^3 voxels per texel (mean of sigma_t, which
+   *  keeps the optical depth through a block; trilinear between texels) with steps P times longer,
+   *  built once per volume / transfer function and cached across Compute() calls. 1 = march the
+   *  full-resolution volume (post-classified samples, the brute force's integrand); 0 = automatic
+   *  (AutomaticPooling()). The brute force always marches the full volume. */
+  uint32_t ExtinctionPooling = 0;
+  /** Pool by the max instead of the mean (conservative: darker, for comparison). */
+  bool MaxPooling = false;
+
+  /** The pooling factor the sweeps use (ExtinctionPooling, or the automatic choice). */
+  uint32_t PoolingFactor() const;
 
   /** Throws InputError naming the parameter when one is out of range. */
   void Validate() const;

@@ -11,11 +11,18 @@
 
 #include "vs_spirv_sweep_filter.h"
 #include "vs_spirv_sweep_march.h"
-#include "vs_spirv_sweep_project.h"
+#include "vs_spirv_sweep_march_pooled.h"
+#include "vs_spirv_sweep_pool.h"
+#include "vs_spirv_sweep_pool_occupancy.h"
+#include "vs_spirv_sweep_project_r16.h"
+#include "vs_spirv_sweep_project_r32f.h"
+#include "vs_spirv_sweep_project_r8.h"
 #include "vs_spirv_visibility_bruteforce.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
+#include <string_view>
 
 namespace vs
 {
@@ -41,8 +48,33 @@ bool SameLayout(const VisibilityGridParameters& a, const VisibilityGridParameter
     a.FilterAngleFraction == b.FilterAngleFraction && a.Algorithm == b.Algorithm &&
     a.BruteForceSamples == b.BruteForceSamples && a.StorageFormat == b.StorageFormat &&
     a.StopTransmittance == b.StopTransmittance && a.AutoKernelRaysPerCell == b.AutoKernelRaysPerCell &&
-    a.Directions == b.Directions;
+    a.Directions == b.Directions && a.ExtinctionPooling == b.ExtinctionPooling && a.MaxPooling == b.MaxPooling;
 }
+
+template <typename T>
+size_t HashOf(const std::vector<T>& v)
+{
+  return std::hash<std::string_view>()(
+    std::string_view(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T)));
+}
+
+// Pooled occupancy bricks: 8 voxels wide, as the majorant grid's (at least one pooled texel).
+uint32_t PoolBrickTexels(uint32_t factor)
+{
+  return std::max<uint32_t>(1, 8 / factor);
+}
+
+struct PoolPush
+{
+  glm::ivec4 dims;
+  glm::ivec4 pooled;
+  glm::vec4 tf;
+};
+struct OccupancyPush
+{
+  glm::ivec4 pooled;
+  glm::ivec4 bricks;
+};
 
 bool SameGeometry(const VolumeGeometry& a, const VolumeGeometry& b)
 {
@@ -135,6 +167,7 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
   const MajorantGrid& majorants, const VolumeGeometry& geometry, const std::vector<glm::dvec4>& worldClipPlanes,
   const VisibilityGridParameters& parameters, const std::vector<uint32_t>& requested, const Progress& progress)
 {
+  const auto wallStart = std::chrono::steady_clock::now();
   parameters.Validate();
   if (worldClipPlanes.size() > 6)
   {
@@ -179,11 +212,26 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
     g.clipPlanes[i] = glm::vec4(glm::vec3(glm::transpose(m) * n), float(glm::dot(n, o) + worldClipPlanes[i].w));
   }
   g.bruteForce = glm::uvec4(parameters.BruteForceSamples, 1u, 0u, 0u);
+  const uint32_t factor = parameters.Algorithm == VisibilityGridParameters::Method::Sweep ? parameters.PoolingFactor() : 1u;
+  if (factor > 1)
+  {
+    const uint32_t brick = PoolBrickTexels(factor);
+    glm::uvec3 pooled, poolBricks;
+    for (int i = 0; i < 3; ++i)
+    {
+      pooled[i] = (dims[i] + factor - 1) / factor;
+      poolBricks[i] = (pooled[i] + brick - 1) / brick;
+    }
+    g.pool = glm::vec4(float(factor), float(brick), 0.5f * float(factor - 1), float(step * factor));
+    g.poolDims = glm::uvec4(pooled, 0u);
+    g.poolBricks = glm::uvec4(poolBricks, 0u);
+  }
   Buffer globals(this->Context_, sizeof(g), "sweep globals");
   globals.Upload(&g, sizeof(g));
 
   this->LastSeconds_ = 0.0;
   this->LastDispatches_ = 0;
+  this->LastStageSeconds_.clear();
   if (parameters.Algorithm == VisibilityGridParameters::Method::Sweep)
   {
     this->RunSweeps(volume, tf, majorants, globals, progress);
@@ -193,6 +241,7 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
     this->RunBruteForce(volume, tf, majorants, globals, directions, progress);
   }
   this->DirectionsComputed_ += directions.size();
+  this->LastWallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
 }
 
 void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctionTable& tf,
@@ -205,12 +254,33 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
       std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
         B::StorageBuffer, B::StorageBuffer },
       sizeof(ChunkPush), "sweep march");
+    this->MarchPooled_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_march_pooled),
+      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
+        B::StorageBuffer, B::StorageBuffer },
+      sizeof(ChunkPush), "sweep march (pooled)");
     this->Filter_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_filter),
       std::vector<B>{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer },
       sizeof(FilterPush), "sweep filter");
-    this->Project_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_project),
-      std::vector<B>{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageImage },
-      sizeof(ChunkPush), "sweep project");
+  }
+  {
+    // The projection stores into an image of known format (faster on lavapipe than format-less stores).
+    using B = BindingType;
+    const std::vector<B> bindings{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageImage };
+    switch (this->Parameters_.StorageFormat)
+    {
+      case VisibilityGridParameters::Format::Unorm8:
+        this->Project_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_project_r8), bindings,
+          sizeof(ChunkPush), "sweep project (r8)");
+        break;
+      case VisibilityGridParameters::Format::Unorm16:
+        this->Project_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_project_r16), bindings,
+          sizeof(ChunkPush), "sweep project (r16)");
+        break;
+      default:
+        this->Project_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_project_r32f), bindings,
+          sizeof(ChunkPush), "sweep project (r32f)");
+        break;
+    }
   }
   const SweepPlan& plan = this->Plan_;
   const bool filtering = this->Parameters_.Filtering;
@@ -246,8 +316,21 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
   {
     prefix = std::make_unique<Buffer>(this->Context_, stackFloats * sizeof(float), "kernel prefix sums");
   }
-  DescriptorSet march(*this->March_);
-  march.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, majorants.Image()).Bind(3, globals).Bind(4, dirs)
+  // The pooled extinction volume (cached), or the full-resolution volume with its majorants.
+  const bool pooled = this->Parameters_.PoolingFactor() > 1;
+  if (pooled)
+  {
+    const double seconds = this->EnsurePooled(volume, tf, majorants);
+    this->LastSeconds_ += seconds;
+    if (seconds > 0.0)
+    {
+      this->LastStageSeconds_["pool"] += seconds;
+    }
+  }
+  const ComputePipeline& marchPipeline = pooled ? *this->MarchPooled_ : *this->March_;
+  DescriptorSet march(marchPipeline);
+  march.Bind(0, pooled ? *this->Pooled_ : volume.Image()).Bind(1, tf.Lut())
+    .Bind(2, pooled ? *this->PooledOccupancy_ : majorants.Image()).Bind(3, globals).Bind(4, dirs)
     .Bind(5, state).Bind(6, stack);
   DescriptorSet project(*this->Project_);
   project.Bind(0, globals).Bind(1, dirs).Bind(2, stack).Bind(3, *this->Image_);
@@ -274,14 +357,22 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
     const uint32_t nd = uint32_t(batch.size());
     const uint32_t chunk = chunks[bi];
     Batch cmd(this->Context_);
-    cmd.BeginTimer("sweep");
+    const bool profiling = this->Profiling_;
+    auto stage = [&](const char* name) {
+      if (profiling)
+        cmd.BeginTimer(name);
+    };
+    if (!profiling)
+      cmd.BeginTimer("sweep");
     for (uint32_t first = 0; first < slices; first += chunk)
     {
       ChunkPush cp{ first, chunk, firsts[bi] };
-      cmd.Dispatch(*this->March_, march, &cp, sizeof(cp), (ra + 7) / 8, (rb + 7) / 8, nd);
+      stage("march");
+      cmd.Dispatch(marchPipeline, march, &cp, sizeof(cp), (ra + 7) / 8, (rb + 7) / 8, nd);
       cmd.Barrier();
       if (filtering)
       {
+        stage("filter");
         FilterPush rows{ first, chunk, firsts[bi], 0u };
         cmd.Dispatch(*this->Filter_, *filter, &rows, sizeof(rows), (rb + 63) / 64, chunk, nd);
         cmd.Barrier();
@@ -289,18 +380,106 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
         cmd.Dispatch(*this->Filter_, *filter, &cols, sizeof(cols), (ra + 63) / 64, chunk, nd);
         cmd.Barrier();
       }
-      cmd.Dispatch(*this->Project_, project, &cp, sizeof(cp), (ga + 7) / 8, (gb + 7) / 8, chunk * nd);
+      stage("project");
+      cmd.Dispatch(*this->Project_, project, &cp, sizeof(cp), (ga + 7) / 8, (gb + 7) / 8, nd);
       cmd.Barrier();
     }
     cmd.EndTimer();
     cmd.Submit();
-    this->LastSeconds_ += cmd.Seconds("sweep");
+    if (profiling)
+    {
+      for (const auto& [name, seconds] : cmd.Timings())
+      {
+        this->LastStageSeconds_[name] += seconds;
+        this->LastSeconds_ += seconds;
+      }
+    }
+    else
+    {
+      this->LastSeconds_ += cmd.Seconds("sweep");
+    }
     this->LastDispatches_ += cmd.DispatchCount();
     if (progress)
     {
       progress(double(bi + 1) / double(plan.Batches.size()));
     }
   }
+}
+
+bool VisibilityGrid::PoolKey::operator==(const PoolKey& o) const
+{
+  return this->Volume == o.Volume && this->TF == o.TF && this->Majorants == o.Majorants &&
+    this->RangeUpdates == o.RangeUpdates && this->MajorantUpdates == o.MajorantUpdates && this->TFHash == o.TFHash &&
+    this->MajorantHash == o.MajorantHash && this->Dims == o.Dims && this->Range == o.Range &&
+    this->NonFinite == o.NonFinite && this->Factor == o.Factor && this->Max == o.Max;
+}
+
+double VisibilityGrid::EnsurePooled(
+  const DeviceVolume& volume, const TransferFunctionTable& tf, const MajorantGrid& majorants)
+{
+  PoolKey key;
+  key.Volume = &volume;
+  key.TF = &tf;
+  key.Majorants = &majorants;
+  key.RangeUpdates = majorants.RangeUpdates();
+  key.MajorantUpdates = majorants.MajorantUpdates();
+  key.TFHash = HashOf(tf.Samples().Entries) ^ (std::hash<float>()(tf.Samples().ScalarMin) * 31u) ^
+    (std::hash<float>()(tf.Samples().ScalarMax) * 131u);
+  key.MajorantHash = HashOf(majorants.Majorants());
+  key.Dims = volume.Dims();
+  key.Range = volume.Range();
+  key.NonFinite = volume.NonFiniteCount();
+  key.Factor = this->Parameters_.PoolingFactor();
+  key.Max = this->Parameters_.MaxPooling;
+  if (this->Pooled_ && key == this->PoolKey_)
+  {
+    return 0.0;
+  }
+  if (!this->Pool_)
+  {
+    using B = BindingType;
+    this->Pool_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_pool),
+      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage }, sizeof(PoolPush), "sweep pool");
+    this->Occupancy_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_pool_occupancy),
+      std::vector<B>{ B::StorageImage, B::StorageImage }, sizeof(OccupancyPush), "sweep pool occupancy");
+  }
+  const uint32_t factor = key.Factor;
+  const uint32_t brick = PoolBrickTexels(factor);
+  glm::ivec3 pooled, bricks;
+  for (int i = 0; i < 3; ++i)
+  {
+    pooled[i] = int((key.Dims[i] + factor - 1) / factor);
+    bricks[i] = (pooled[i] + int(brick) - 1) / int(brick);
+  }
+  this->Pooled_.reset();
+  this->PooledOccupancy_.reset();
+  this->PoolKey_ = PoolKey();
+  this->Pooled_ = std::make_unique<Image3D>(this->Context_, uint32_t(pooled.x), uint32_t(pooled.y),
+    uint32_t(pooled.z), vk::Format::eR32Sfloat, "pooled extinction");
+  this->PooledOccupancy_ = std::make_unique<Image3D>(this->Context_, uint32_t(bricks.x), uint32_t(bricks.y),
+    uint32_t(bricks.z), vk::Format::eR32Sfloat, "pooled extinction occupancy");
+  DescriptorSet poolSet(*this->Pool_);
+  poolSet.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, *this->Pooled_);
+  DescriptorSet occupancySet(*this->Occupancy_);
+  occupancySet.Bind(0, *this->Pooled_).Bind(1, *this->PooledOccupancy_);
+  auto t = tf.Params();
+  PoolPush pp{ glm::ivec4(int(key.Dims[0]), int(key.Dims[1]), int(key.Dims[2]), key.Max ? 1 : 0),
+    glm::ivec4(pooled, int(factor)), glm::vec4(t[0], t[1], t[2], t[3]) };
+  OccupancyPush op{ glm::ivec4(pooled, 0), glm::ivec4(bricks, int(brick)) };
+  Batch cmd(this->Context_);
+  cmd.BeginTimer("pool");
+  cmd.Dispatch(*this->Pool_, poolSet, &pp, sizeof(pp), uint32_t(pooled.x + 3) / 4, uint32_t(pooled.y + 3) / 4,
+    uint32_t(pooled.z + 3) / 4);
+  cmd.Barrier();
+  cmd.Dispatch(*this->Occupancy_, occupancySet, &op, sizeof(op), uint32_t(bricks.x + 3) / 4,
+    uint32_t(bricks.y + 3) / 4, uint32_t(bricks.z + 3) / 4);
+  cmd.Barrier();
+  cmd.EndTimer();
+  cmd.Submit();
+  this->LastDispatches_ += cmd.DispatchCount();
+  this->PoolKey_ = key;
+  ++this->PoolBuilds_;
+  return std::max(cmd.Seconds("pool"), 1e-9);
 }
 
 void VisibilityGrid::RunBruteForce(const DeviceVolume& volume, const TransferFunctionTable& tf,

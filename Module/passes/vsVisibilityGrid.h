@@ -13,8 +13,11 @@
 #include "vsSweepPlan.h"
 #include "vsVolumeGeometry.h"
 
+#include <array>
 #include <functional>
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace vs
@@ -72,6 +75,14 @@ public:
   /** Device seconds of the last Compute, and its dispatch count. */
   double LastSeconds() const { return this->LastSeconds_; }
   uint32_t LastDispatches() const { return this->LastDispatches_; }
+  /** With profiling on, every sweep dispatch gets its own timer and LastStageSeconds() holds the
+   *  device seconds of the last Compute per stage ("march", "filter", "project", ...). */
+  void SetProfiling(bool on) { this->Profiling_ = on; }
+  const std::map<std::string, double>& LastStageSeconds() const { return this->LastStageSeconds_; }
+  /** Host wall-clock seconds of the last Compute (planning, buffers, submits, waits). */
+  double LastWallSeconds() const { return this->LastWallSeconds_; }
+  /** Times the pooled extinction volume was built (it is cached across Compute calls). */
+  uint64_t PoolBuilds() const { return this->PoolBuilds_; }
   /** Directions swept (or brute-forced) since this object was made. */
   uint64_t DirectionsComputed() const { return this->DirectionsComputed_; }
 
@@ -87,8 +98,36 @@ private:
   SweepPlan Plan_;
   VolumeGeometry Geometry_;
   std::unique_ptr<Image3D> Image_;
-  std::shared_ptr<ComputePipeline> March_, Filter_, Project_, Brute_;
+  /** Builds the pooled extinction volume and its occupancy unless the cached one is for this
+   *  volume, transfer function and pooling; returns its device seconds (0 when cached). */
+  double EnsurePooled(const DeviceVolume& volume, const TransferFunctionTable& tf, const MajorantGrid& majorants);
+
+  /** What the pooled volume was built from. A DeviceVolume's data cannot change after upload, so
+   *  new data is a new object (or, reusing an address, new majorant ranges: counted and hashed). */
+  struct PoolKey
+  {
+    const void* Volume = nullptr;
+    const void* TF = nullptr;
+    const void* Majorants = nullptr;
+    uint64_t RangeUpdates = 0, MajorantUpdates = 0;
+    size_t TFHash = 0, MajorantHash = 0;
+    std::array<uint32_t, 3> Dims{ { 0, 0, 0 } };
+    std::array<float, 2> Range{ { 0.0f, 0.0f } };
+    uint64_t NonFinite = 0;
+    uint32_t Factor = 0;
+    bool Max = false;
+    bool operator==(const PoolKey& o) const;
+  };
+
+  std::shared_ptr<ComputePipeline> March_, MarchPooled_, Filter_, Project_, Brute_, Pool_, Occupancy_;
+  std::unique_ptr<Image3D> Pooled_, PooledOccupancy_;
+  PoolKey PoolKey_;
+  uint32_t PoolBrick_ = 1;
+  uint64_t PoolBuilds_ = 0;
   double LastSeconds_ = 0.0;
+  double LastWallSeconds_ = 0.0;
+  bool Profiling_ = false;
+  std::map<std::string, double> LastStageSeconds_;
   uint32_t LastDispatches_ = 0;
   uint64_t DirectionsComputed_ = 0;
 };

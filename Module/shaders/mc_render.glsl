@@ -1,6 +1,6 @@
 /*
  * mc_render.glsl — unbiased progressive Monte Carlo single scattering under
- * environment light (seed 000, Sec. 4 and 7). Included by mc_render_<format>.comp,
+ * environment light (von Radziewsky et al. 2017, Sec. 4 and 7). Included by mc_render_<format>.comp,
  * which defines VS_VIS_FORMAT (the visibility grid's storage format).
  *
  * Per sample: a jittered camera ray; free-flight distance by delta tracking against

@@ -4,6 +4,12 @@
  * buffer holding `VsSweepGlobals G` before including this file, and calls
  * vs_load_sweep_globals() first in main(): the per-sample code then reads the
  * globals from registers, not from the buffer (measured: lavapipe does not hoist them).
+ *
+ * With VS_SWEEP_POOLED defined, uVolume holds the pooled extinction (sigma_t already
+ * classified, P voxels per texel per axis), uMajorant its occupancy (the max over each
+ * pooled brick's trilinear footprint), and positions are in pooled texel coordinates:
+ * vs_extinction is a trilinear read, the march step is P times longer, and clip planes
+ * are applied by the caller to the ray's interval (vs_clip_interval), not per sample.
  */
 #include "volume_access.glsl"
 
@@ -16,14 +22,51 @@ float gStep;
 
 void vs_load_sweep_globals()
 {
+  gTF = G.tf;
+  gClipCount = G.bricks.w;
+#ifdef VS_SWEEP_POOLED
+  gDims = ivec3(G.poolDims.xyz);
+  gBricks = ivec3(G.poolBricks.xyz);
+  gBrickSize = G.pool.y;
+  gStep = G.pool.w;
+#else
   gDims = ivec3(G.dims.xyz);
   gBricks = ivec3(G.bricks.xyz);
   gBrickSize = G.march.y;
-  gTF = G.tf;
-  gClipCount = G.bricks.w;
   gStep = G.march.x;
+#endif
 }
 
+/* The interval of t along index-space ray o + t d that the clip planes keep (empty when t.x >= t.y). */
+vec2 vs_clip_interval(vec3 o, vec3 d)
+{
+  vec2 t = vec2(-1e30, 1e30);
+  for (uint i = 0u; i < gClipCount; ++i)
+  {
+    float dn = dot(G.clipPlanes[i].xyz, d);
+    float on = dot(G.clipPlanes[i].xyz, o) + G.clipPlanes[i].w;
+    if (abs(dn) < 1e-20)
+    {
+      if (on < 0.0)
+        return vec2(1.0, 0.0);
+      continue;
+    }
+    float th = -on / dn;
+    if (dn > 0.0)
+      t.x = max(t.x, th);
+    else
+      t.y = min(t.y, th);
+  }
+  return t;
+}
+
+#ifdef VS_SWEEP_POOLED
+/* Pooled extinction at pooled-texel point q (trilinear, clamped to the volume). */
+float vs_extinction(vec3 q)
+{
+  return vs_sample_scalar(q, gDims);
+}
+#else
 /* Extinction at index-space point p: post-classified, zero where a clip plane removes it. */
 float vs_extinction(vec3 p)
 {
@@ -34,6 +77,7 @@ float vs_extinction(vec3 p)
   }
   return vs_classify(vs_sample_scalar(p, gDims), gTF).w;
 }
+#endif
 
 /* The majorant of the brick holding p (0 = empty brick: no sample needed). */
 float vs_brick_majorant(vec3 p)

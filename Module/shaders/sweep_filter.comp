@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 /*
- * Sweep-space filtering (seed 000, Sec. 8): a box filter over the sweeping kernel
+ * Sweep-space filtering (von Radziewsky et al. 2017, Sec. 8): a box filter over the sweeping kernel
  * before projection, separable, with a sliding window whose cost does not depend
  * on its width (an inclusive prefix sum of the line, then differences of its
  * linear interpolant). Width along an axis: the visibility cell projected onto the

@@ -1,5 +1,5 @@
 /*
- * sweep_params.h — the parameters of the visibility sweeps (seed 000, Sec. 6, 8),
+ * sweep_params.h — the parameters of the visibility sweeps (von Radziewsky et al. 2017, Sec. 6, 8),
  * shared by the compute shaders and the host (std430; vec4/uvec4/mat4 members only).
  *
  * Index space: continuous voxel coordinates (voxel centres at integers). Visibility
@@ -39,6 +39,12 @@ struct VsSweepGlobals
   uvec4 bricks;     /* majorant bricks per axis (xyz), w: clip planes in use */
   vec4 clipPlanes[6];  /* index space: kept where dot(n, x) + w >= 0 */
   uvec4 bruteForce; /* x: spatial x angular supersamples per side (1 = centre only), y: seed */
+  /* The pooled extinction volume the sweeps march (sweep_march_pooled.comp): texel j holds the mean
+   * (or max) of sigma_t over voxels [j P, j P + P - 1], so its centre is at index j P + (P - 1) / 2. */
+  vec4 pool;        /* x: voxels per pooled texel P, y: pooled brick size (texels), z: (P - 1) / 2,
+                       w: march step over the pooled volume (world units) */
+  uvec4 poolDims;   /* pooled texels per axis (xyz) */
+  uvec4 poolBricks; /* pooled occupancy bricks per axis (xyz) */
 };
 
 /* Distance along the light (world units) from the start plane to the centre plane of
