@@ -743,8 +743,8 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
   r.Schedule.Seed = uint32_t(this->Seed);
   r.Progressive = this->ProgressiveVisibility;
   r.BudgetSeconds = this->SweepFrameFraction * I.LastRenderSeconds;
-  // Auto stops filling in once TwoStep showed no gain per sample over Environment sampling with
-  // most of the light's directions swept; lazy updates and invalidations still happen.
+  // Auto stops filling in while TwoStep, measured with half of the light's directions swept, loses
+  // to Environment sampling at equal time; lazy updates and invalidations still happen.
   r.FillIn = !autoStrategy || I.Selector.GridWorthSweeping();
   if (!I.Grid)
   {

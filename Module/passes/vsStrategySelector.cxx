@@ -105,10 +105,11 @@ void StrategySelector::EndEpoch(double meanSquare)
   {
     this->Preferred_ = ratio > 1.0 ? GridEstimator : EnvironmentEstimator;
     ++this->Decisions_;
-    if (!this->GridVerdict_ && measured[GridEstimator])
+    // Sweeping on pays only while TwoStep wins at equal time: a grid that loses stops filling
+    // in (measured on mri_sunrise: Auto swept 21% of a 16 s budget for a grid it then did not use).
+    if (measured[GridEstimator])
     {
-      this->GridWorth_ =
-        this->Stats_[GridEstimator].Variance < this->Stats_[EnvironmentEstimator].Variance;
+      this->GridWorth_ = ratio > 1.0;
       this->GridVerdict_ = true;
     }
   }

@@ -47,8 +47,9 @@ public:
   void Record(Estimator estimator, uint32_t spp, double deviceSeconds, uint64_t pixels, double totalSamples,
     double sumOfSquares, double meanSquare);
 
-  /** Whether sweeping more directions is worth it: false once TwoStep, measured with at least
-   *  half of the light's directions swept, showed no lower variance per sample than Environment. */
+  /** Whether sweeping more directions is worth it: false while TwoStep, measured with at least
+   *  half of the light's directions swept, is less efficient than Environment sampling
+   *  (re-evaluated at every epoch that measured TwoStep). */
   bool GridWorthSweeping() const { return this->GridWorth_; }
 
   /** Measured per-sample variance and device seconds per sample of an estimator (0 = unknown). */

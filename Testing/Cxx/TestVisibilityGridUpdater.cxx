@@ -197,7 +197,7 @@ TEST(StrategySelector, PrefersTheMoreEfficientEstimatorAndKeepsExploring)
     EXPECT_EQ(s.Preferred(), StrategySelector::EnvironmentEstimator);
     EXPECT_LE(grid, 64 / int(StrategySelector::ExplorationInterval));
     EXPECT_GT(grid, 0);
-    EXPECT_TRUE(s.GridWorthSweeping()) << "lower variance per sample: the grid may still pay once complete";
+    EXPECT_FALSE(s.GridWorthSweeping()) << "less efficient at equal time: stop sweeping";
   }
   {
     StrategySelector s;
