@@ -21,6 +21,7 @@ extern "C" size_t __sanitizer_get_current_allocated_bytes(void);
 #endif
 #endif
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <malloc.h>
@@ -413,7 +414,7 @@ TEST(Stress, RandomChurn)
   std::uniform_real_distribution<double> U(0.0, 1.0);
   vtkNew<vtkPlane> plane;
   const double bound = 1000.0; // the sun's radiance (sky 0)
-  long rssAfterWarmup = 0, heapAfterWarmup = 0;
+  long rssAfterWarmup = 0, heapAfterWarmup = 0, heapHalfway = 0;
   const int changes = 1000;
   for (int i = 0; i < changes; ++i)
   {
@@ -465,17 +466,30 @@ TEST(Stress, RandomChurn)
       rssAfterWarmup = ResidentKilobytes();
       heapAfterWarmup = LiveHeapKilobytes();
     }
+    if (i == 550)
+    {
+      heapHalfway = LiveHeapKilobytes();
+    }
   }
+  // Two windows of 450 changes: a leak grows the heap in both, a one-time cost (a new malloc
+  // arena of a lavapipe worker, a driver cache filling up) in one. Under load one full-suite run
+  // in four saw +2.3 MB over the 900 changes once, +14-90 KB otherwise; the bound on the smaller
+  // window keeps the leak sensitivity of the old single bound (256 KB over 900 changes, i.e.
+  // 128 KB per window: a 1 KB leak per change reads ~450 KB in each).
+  auto windows = [&](long end) {
+    const long first = heapHalfway - heapAfterWarmup, second = end - heapHalfway;
+    std::cout << "live heap grew by " << first << " KB, then " << second << " KB (two windows of "
+              << (changes - 100) / 2 << " changes)\n";
+    return std::min(first, second);
+  };
 #if VS_STRESS_ASAN
-  const long heapGrowth = LiveHeapKilobytes() - heapAfterWarmup;
-  std::cout << "live heap grew by " << heapGrowth << " KB over " << changes - 100 << " changes (ASan count)\n";
-  std::cout << "(resident memory grew by " << ResidentKilobytes() - rssAfterWarmup
+  const long heapGrowth = windows(LiveHeapKilobytes());
+  std::cout << "(ASan count; resident memory grew by " << ResidentKilobytes() - rssAfterWarmup
             << " KB: ASan's quarantine and allocator, not checked)\n";
-  EXPECT_LT(heapGrowth, 256) << "the heap keeps growing with changes (leak?)";
+  EXPECT_LT(heapGrowth, 128) << "the heap grows in both windows of changes (leak?)";
 #else
-  const long heapGrowth = LiveHeapKilobytes() - heapAfterWarmup;
-  std::cout << "live heap grew by " << heapGrowth << " KB over " << changes - 100 << " changes (mallinfo2)\n";
-  std::cout << "(resident memory grew by " << ResidentKilobytes() - rssAfterWarmup << " KB, not checked)\n";
-  EXPECT_LT(heapGrowth, 256) << "the heap keeps growing with changes (leak?)";
+  const long heapGrowth = windows(LiveHeapKilobytes());
+  std::cout << "(mallinfo2; resident memory grew by " << ResidentKilobytes() - rssAfterWarmup << " KB, not checked)\n";
+  EXPECT_LT(heapGrowth, 128) << "the heap grows in both windows of changes (leak?)";
 #endif
 }
