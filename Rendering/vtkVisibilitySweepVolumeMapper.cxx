@@ -742,7 +742,12 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
   r.Schedule.StaticInterval = uint32_t(this->StaticInterval);
   r.Schedule.Seed = uint32_t(this->Seed);
   r.Progressive = this->ProgressiveVisibility;
-  r.BudgetSeconds = this->SweepFrameFraction * I.LastRenderSeconds;
+  // Auto spends at most AutoProbeFraction of the time on sweeps until TwoStep has shown that it
+  // wins at equal time: on a scene where it does not, the sweeps are nearly all Auto loses.
+  const double fraction = autoStrategy && !(I.Selector.GridEfficiencyRatio() > 1.0)
+    ? std::min(this->SweepFrameFraction, this->AutoProbeFraction)
+    : this->SweepFrameFraction;
+  r.BudgetSeconds = fraction * I.LastRenderSeconds;
   // Auto stops filling in while TwoStep, measured with half of the light's directions swept, loses
   // to Environment sampling at equal time; lazy updates and invalidations still happen.
   r.FillIn = !autoStrategy || I.Selector.GridWorthSweeping();
@@ -1009,6 +1014,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EffectiveStrategy: " << this->GetEffectiveStrategyAsString() << "\n";
   os << indent << "ProgressiveVisibility: " << (this->ProgressiveVisibility ? "On" : "Off") << "\n";
   os << indent << "SweepFrameFraction: " << this->SweepFrameFraction << "\n";
+  os << indent << "AutoProbeFraction: " << this->AutoProbeFraction << "\n";
   os << indent << "LightWeightedDirections: " << (this->LightWeightedDirections ? "On" : "Off") << "\n";
   os << indent << "PendingDirections: " << this->GetPendingDirections() << "\n";
   os << indent << "CellMode: " << this->GetCellModeAsString() << "\n";

@@ -260,6 +260,10 @@ public:
   vtkGetMacro(ProgressiveVisibility, bool);
   vtkBooleanMacro(ProgressiveVisibility, bool);
   vtkSetClampMacro(SweepFrameFraction, double, 0.0, 1000.0);
+  /** Auto's sweep share of the time until TwoStep has measured more efficient than Environment
+   *  sampling (then SweepFrameFraction). Default 0.05. */
+  vtkSetClampMacro(AutoProbeFraction, double, 0.0, 1000.0);
+  vtkGetMacro(AutoProbeFraction, double);
   /** Sweep each direction texel towards where its light comes from (the environment's
    *  luminance-weighted mean direction inside the texel) instead of its centre: the visibility
    *  of a sun's texel is then the sun's own. Default on. The grid then depends on the
@@ -365,6 +369,7 @@ protected:
   bool ProgressiveVisibility = true;
   double SweepFrameFraction = 0.25;
   bool LightWeightedDirections = true;
+  double AutoProbeFraction = 0.05;
   int CellMode = StochasticCell;
   int SamplesPerFrame = 1;
   int MaximumSamples = 4096;

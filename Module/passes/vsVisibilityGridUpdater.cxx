@@ -161,6 +161,7 @@ GridUpdateResult VisibilityGridUpdater::Update(const DeviceVolume& volume, const
     this->Swept_.assign(count, 0);
     this->Signature_ = signature;
     this->Scheduler_.OnFullUpdate();
+    this->Allowance_ = 0.0;
     ++this->Generation_;
     result.NewGrid = true;
   }
@@ -191,15 +192,27 @@ GridUpdateResult VisibilityGridUpdater::Update(const DeviceVolume& volume, const
   }
   else if (request.FillIn && !pending.empty() && !result.NewGrid)
   {
-    // Progressive (the call that makes a new grid sweeps nothing, so its frame does not wait):
-    // within the budget by the running estimate, and at least one direction per call so the grid
-    // always fills in.
-    const double per = this->SecondsPerDirection_;
-    size_t n = per > 0.0 ? size_t(std::max(0.0, request.BudgetSeconds) / per) : 1;
-    n = std::clamp<size_t>(n, 1, pending.size());
+    // Progressive (the call that makes a new grid sweeps nothing, so its frame does not wait).
+    // The budgets of the calls accumulate into an allowance, and directions are swept while the
+    // allowance covers their estimated cost: over many frames the sweeps take the budget's share
+    // of the time, even when one direction costs more than one frame's budget (a sweep that
+    // cost more than granted leaves a debt). Before the first sweep the cost is taken to be
+    // PriorSecondsPerDirection; a budget of 0 sweeps one direction per call.
+    const double per = this->SecondsPerDirection_ > 0.0 ? this->SecondsPerDirection_ : PriorSecondsPerDirection;
+    size_t n = 1;
+    if (request.BudgetSeconds > 0.0)
+    {
+      this->Allowance_ += request.BudgetSeconds;
+      n = this->Allowance_ > 0.0 ? std::min(pending.size(), size_t(this->Allowance_ / per)) : 0;
+    }
+    n = std::min(n, pending.size());
     now.insert(now.end(), pending.begin(), pending.begin() + std::ptrdiff_t(n));
   }
   GridUpdateResult swept = this->Sweep(volume, tf, majorants, request, now, progress);
+  if (request.Progressive && request.BudgetSeconds > 0.0)
+  {
+    this->Allowance_ -= swept.Seconds; // may go negative: a debt paid by later grants
+  }
   swept.NewGrid = result.NewGrid;
   return swept;
 }

@@ -44,7 +44,9 @@ struct GridUpdateRequest
   UpdateSchedule Schedule;
   /** Fill a new grid progressively (see above) or sweep every needed direction at once. */
   bool Progressive = true;
-  /** Progressive: the device seconds the sweeps may add to this call (at least one direction). */
+  /** Progressive: the device seconds granted to the sweeps by this call. Grants accumulate, and a
+   *  direction is swept once they cover its estimated cost (PriorSecondsPerDirection before the
+   *  first sweep; a sweep costing more leaves a debt); 0 = one direction per call. */
   double BudgetSeconds = 0.0;
   /** Sweep pending directions at all (false: only lazy updates after data changes; the grid keeps
    *  visibility 1 where it was never swept). */
@@ -94,6 +96,10 @@ public:
 
   /** Fill-in order: the directions of `candidates` by decreasing importance, ties in the
    *  bit-reversed Morton order of update_order.h (well spread over the sphere). */
+  /** The cost assumed for a direction before any was swept (seconds; the first sweep of a
+   *  process also creates the sweep pipelines). */
+  static constexpr double PriorSecondsPerDirection = 0.1;
+
   static std::vector<uint32_t> FillOrder(
     uint32_t side, const std::vector<uint32_t>& candidates, const std::vector<float>& importance);
 
@@ -112,6 +118,7 @@ private:
   uint64_t DataVersion_ = 0;
   uint64_t Generation_ = 0;
   double SecondsPerDirection_ = 0.0;
+  double Allowance_ = 0.0;        // progressive: sweep seconds granted and not yet spent
 };
 }
 

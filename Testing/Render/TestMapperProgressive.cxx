@@ -176,6 +176,7 @@ void TestFillInAndAutoAreUnbiased()
   Scene automatic;
   automatic.Mapper->SetSeed(6);
   automatic.Mapper->SetSweepFrameFraction(4.0);
+  automatic.Mapper->SetAutoProbeFraction(4.0); // tiny frames: let the grid fill in within the test
   automatic.Converge(spp, 4);
   const vstest::ZStats za = vstest::Compare(vstest::Grab(automatic.Mapper), reference);
   std::printf("Auto vs TwoStep: %d pixels, mean z %.3f, chi2/n %.3f, |z|>3 %.3f; last frame %s, %d directions "
@@ -199,6 +200,8 @@ void TestFillInAndAutoAreUnbiased()
 void TestAutoReportsAndSkips()
 {
   Scene s;
+  s.Mapper->SetAutoProbeFraction(4.0); // tiny frames: let the grid fill in within the test
+  s.Mapper->SetSweepFrameFraction(4.0);
   s.Frame();
   Check(s.Mapper->GetEffectiveStrategy() == vtkVisibilitySweepVolumeMapper::Environment,
     std::string("Auto's first frame samples the environment, got ") + s.Mapper->GetEffectiveStrategyAsString());
