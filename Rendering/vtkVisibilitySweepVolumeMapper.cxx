@@ -689,7 +689,7 @@ vs::VisibilityGridParameters GridParameters(int directionResolution, double voxe
 // The directions this render needs swept: all of them, except that Combined and TwoStep never
 // read the visibility of a direction whose environment importance at the grid's resolution is 0
 // (their product weight is visibility x importance), so with SkipUnlitDirections those are left
-// out (DESIGN.md: directions without environment radiance never need sweeping).
+// out (the README's skip rules: directions without environment radiance never need sweeping).
 std::vector<uint8_t> vtkVisibilitySweepVolumeMapper::RequiredDirections(int side)
 {
   Internals& I = *this->Impl;
