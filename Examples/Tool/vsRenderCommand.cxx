@@ -3,6 +3,8 @@
 #include "vsImageOutput.h"
 #include "vsPendingFile.h"
 #include "vsRenderFrames.h"
+#include "vsRenderTargetLimits.h"
+#include "vsToolCommand.h"
 #include "vsToolVolume.h"
 #include "vsContext.h"
 
@@ -402,7 +404,7 @@ vtkSmartPointer<vtkAlgorithm> MakeEnvironment(const Scene& scene)
         break;
       case Kind::Sun:
         source->SetTypeToSunDisk();
-        source->SetSunDirection(e.SunDirection.data());
+        source->SetSunDirection(Normalized(e.SunDirection).data()); // (1e300, 0, 0) is +X, not inf
         source->SetSunAngularRadius(e.SunRadiusDeg);
         source->SetSunRadiance(e.SunRadiance.data());
         source->SetSkyColor(e.SunSky.data());
@@ -497,7 +499,7 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   {
     vtkNew<vtkPlane> plane; // VTK keeps the half-space the normal points into
     plane->SetOrigin(p.Origin.data());
-    plane->SetNormal(p.Normal.data());
+    plane->SetNormal(Normalized(p.Normal).data()); // normalised in double: a normal of 1e300 is no infinity
     mapper->AddClippingPlane(plane);
   }
 }
@@ -505,6 +507,9 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
 SceneObjects BuildScene(const Scene& scene)
 {
   SceneObjects o;
+  // The image size against the device's limits and the host's memory before anything is read or
+  // allocated (issue 13, item 7): a 16384 x 16384 window alone is gigabytes of host memory.
+  vs::RenderTargetLimits::Check(*vs::Context::Default(), uint32_t(scene.Render.Width), uint32_t(scene.Render.Height));
   try
   {
     o.Image = scene.Volume.Files.empty()
@@ -540,7 +545,7 @@ SceneObjects BuildScene(const Scene& scene)
   vtkCamera* camera = o.Renderer->GetActiveCamera();
   camera->SetPosition(scene.Camera.Position.data());
   camera->SetFocalPoint(scene.Camera.FocalPoint.data());
-  camera->SetViewUp(scene.Camera.ViewUp.data());
+  camera->SetViewUp(Normalized(scene.Camera.ViewUp).data());
   camera->SetViewAngle(scene.Camera.ViewAngle);
   if (scene.Camera.ParallelScale)
   {
@@ -577,6 +582,7 @@ void AddRender(CLI::App& app)
   cmd->add_option("--height", o->Height, "image height (overrides the scene)")->check(CLI::Range(1, 16384));
   auto* spp = cmd->add_option("--spp", o->Spp, "samples per pixel (overrides the scene)")->check(CLI::Range(1, 1 << 30));
   auto* budget = cmd->add_option("--time-budget", o->TimeBudget, "render for this many seconds instead of a fixed spp")
+                   ->check(FiniteNumber())
                    ->check(CLI::PositiveNumber);
   spp->excludes(budget);
   cmd->add_option("--strategy", o->Strategy,
