@@ -1125,6 +1125,11 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "KernelResolution: " << this->KernelResolution << "\n";
   os << indent << "Filtering: " << (this->Filtering ? "On" : "Off") << "\n";
   os << indent << "FilterAngleFraction: " << this->FilterAngleFraction << "\n";
+  // Issue 13, item 9: without an environment the mapper lights with white; say so.
+  os << indent << "Environment: "
+     << (this->GetNumberOfInputConnections(1) > 0 ? "input port 1"
+                                                  : "none connected: a constant white sky of radiance 1 (the default)")
+     << "\n";
   os << indent << "EnvironmentIntensity: " << this->EnvironmentIntensity << "\n";
   os << indent << "EnvironmentVisible: " << (this->EnvironmentVisible ? "On" : "Off") << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";

@@ -39,6 +39,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -588,7 +589,9 @@ void AddRender(CLI::App& app)
   cmd->add_option("--strategy", o->Strategy,
     "auto (the default), uniform, environment, visibility, combined or two-step, or the API's spelling (TwoStep) "
     "(overrides the scene)");
-  cmd->add_option("--seed", o->Seed, "random seed (overrides the scene)")->check(CLI::NonNegativeNumber);
+  // CLI::NonNegativeNumber printed its bound as a 309-digit double ("not in range 0.000000 to 17976...").
+  cmd->add_option("--seed", o->Seed, "random seed, 0 to 2147483647 (overrides the scene)")
+    ->check(CLI::Range(0, std::numeric_limits<int>::max()));
   cmd->add_option("--samples-per-frame", o->SamplesPerFrame, "samples per pixel added by each progressive frame")
     ->check(CLI::Range(1, 1 << 16));
   cmd->add_option("--json", o->Json, "write the statistics as JSON to this file ('-' = stdout)");

@@ -751,3 +751,33 @@ TEST(EnvironmentMapReader, OpenEXRVariants)
   EXPECT_FALSE(vtkEnvironmentMapReader::ReadLatLong(tmp.File("alpha.exr").c_str(), img, error));
   EXPECT_NE(error.find("no R, G, B or Y channel (channels: A)"), std::string::npos) << error;
 }
+
+// Issue 13, item 9: a huge (or tiny) sun direction is a direction, normalised in double; it was an
+// infinity in float and refused as "the sun direction must be a non-zero vector".
+TEST(EnvironmentMapSource, HugeSunDirectionIsADirection)
+{
+  auto sunMap = [](double x, double y, double z, size_t* errors) {
+    vtkNew<vtkEnvironmentMapSource> src;
+    vtkNew<Messages> msgs;
+    src->AddObserver(vtkCommand::ErrorEvent, msgs);
+    src->SetOctahedralSize(32);
+    src->SetTypeToSunDisk();
+    src->SetSunDirection(x, y, z);
+    src->SetSunAngularRadius(2.0);
+    src->SetSunRadiance(100, 100, 100);
+    src->Update();
+    *errors = msgs->Errors.size();
+    auto map = src->GetEnvironmentMap();
+    return map ? map->Radiance : std::vector<float>();
+  };
+  size_t errors = 0;
+  const std::vector<float> unit = sunMap(1, 0, 1, &errors);
+  ASSERT_EQ(errors, 0u);
+  ASSERT_FALSE(unit.empty());
+  EXPECT_EQ(sunMap(1e300, 0, 1e300, &errors), unit);
+  EXPECT_EQ(errors, 0u);
+  EXPECT_EQ(sunMap(1e-300, 0, 1e-300, &errors), unit);
+  EXPECT_EQ(errors, 0u);
+  sunMap(0, 0, 0, &errors);
+  EXPECT_EQ(errors, 1u) << "a zero direction is still an error";
+}
