@@ -260,6 +260,12 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     {
       I.Context = vs::Context::Default();
     }
+    // The image size before anything is uploaded, allocated or read back (issue 13, item 7).
+    const vs::Viewport port = vs::WindowCompositor::GetViewport(ren);
+    if (port.Width > 0 && port.Height > 0)
+    {
+      vs::RenderTargetLimits::Check(*I.Context, uint32_t(port.Width), uint32_t(port.Height));
+    }
     if (!I.Scene)
     {
       I.Scene = std::make_unique<vs::VolumeScene>(I.Context);
