@@ -7,6 +7,8 @@
 #include "vsToolCommand.h"
 #include "vsToolVolume.h"
 #include "vsContext.h"
+#include "vsDeviceVolume.h"
+#include "vsError.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
@@ -33,6 +35,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -505,6 +508,32 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   }
 }
 
+namespace
+{
+// A volume's dimensions against the device's limits (the volume image) and the host's memory,
+// before the reader allocates anything (issue 13, item 7).
+std::string VolumeFits(const std::array<int, 3>& dims)
+{
+  try
+  {
+    vs::DeviceVolume::CheckFits(*vs::Context::Default(), { uint32_t(dims[0]), uint32_t(dims[1]), uint32_t(dims[2]) });
+  }
+  catch (const vs::Error& e)
+  {
+    return e.what();
+  }
+  // The reader's values (up to 8 bytes a voxel), their float copy and the upload's staging.
+  const uint64_t voxels = uint64_t(dims[0]) * uint64_t(dims[1]) * uint64_t(dims[2]);
+  const uint64_t host = voxels * 16, memory = vs::RenderTargetLimits::HostMemoryBytes();
+  if (memory && host > memory / 2)
+  {
+    return "reading it needs about " + std::to_string(host >> 20) + " MiB of host memory (16 bytes a voxel), more "
+      "than half of this host's " + std::to_string(memory >> 20) + " MiB";
+  }
+  return std::string();
+}
+}
+
 SceneObjects BuildScene(const Scene& scene)
 {
   SceneObjects o;
@@ -514,7 +543,7 @@ SceneObjects BuildScene(const Scene& scene)
   try
   {
     o.Image = scene.Volume.Files.empty()
-      ? ReadVolume(scene.Volume.File, scene.Volume.Grid)
+      ? ReadVolume(scene.Volume.File, scene.Volume.Grid, vtkIdType(1) << 31, VolumeFits)
       : ReadVolumeSequence(scene.Volume.Files, scene.Volume.Grid, scene.Volume.TimeStep);
   }
   catch (const std::exception& e)
