@@ -9,6 +9,7 @@
 #include "vsImage.h"
 #include "vsMajorantGrid.h"
 #include "vsPipeline.h"
+#include "vsRenderTargetLimits.h"
 #include "vsTransferFunctionTable.h"
 #include "vsVisibilityGrid.h"
 
@@ -118,6 +119,7 @@ void MonteCarloPass::Reset(uint32_t width, uint32_t height)
   {
     throw InputError("an image of zero pixels");
   }
+  RenderTargetLimits::Check(*this->Context_, width, height);
   if (width != this->Width_ || height != this->Height_ || !this->Sum_)
   {
     this->Sum_.reset();
