@@ -581,6 +581,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     ? float(1.0 / brightest) : 1.0f;
   p.sampling2 = glm::vec4(float(this->VisibilityEpsilon), float(this->EnvironmentIntensity),
     float(I.Scene->Majorants().BrickSize()), squareScale);
+  p.tracking.y = float(this->ShadowRays);
   if (grid)
   {
     auto c = grid->Cells();
@@ -1122,6 +1123,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LightWeightedDirections: " << (this->LightWeightedDirections ? "On" : "Off") << "\n";
   os << indent << "PendingDirections: " << this->GetPendingDirections() << "\n";
   os << indent << "CellMode: " << this->GetCellModeAsString() << "\n";
+  os << indent << "ShadowRays: " << this->ShadowRays << " per scatter point\n";
   os << indent << "SamplesPerFrame: " << this->SamplesPerFrame << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
   os << indent << "AccumulatedSamples: " << this->AccumulatedSamples << "\n";

@@ -35,6 +35,7 @@ struct Options
   std::vector<std::string> Strategies{ "uniform", "environment", "visibility", "combined", "two-step" };
   bool CellModes = true;
   bool Quick = false;
+  int ShadowRays = 1;
 };
 
 struct Measurement
@@ -69,6 +70,7 @@ Measurement Measure(SceneObjects& objects, const Options& o, const std::string& 
   vtkVisibilitySweepVolumeMapper* mapper = objects.Mapper;
   mapper->SetSamplingStrategy(StrategyIndex(strategy, "--strategies"));
   mapper->SetCellMode(cellMode);
+  mapper->SetShadowRays(o.ShadowRays);
   mapper->SetMaximumSamples(1 << 30);
   mapper->SetSamplesPerFrame(o.Spp);
   Measurement m;
@@ -233,6 +235,7 @@ void AddBenchOverhead(CLI::App& bench)
   cmd->add_option("--strategies", o->Strategies, "strategies to measure (default: all five)")->delimiter(',');
   cmd->add_flag("!--no-cell-modes", o->CellModes, "skip the trilinear-cells variants of the grid strategies");
   cmd->add_flag("--quick", o->Quick, "64 x 64, 1 spp, 1 frame (seconds; for tests)");
+  cmd->add_option("--shadow-rays", o->ShadowRays, "shadow rays per scatter point (splitting)")->check(CLI::Range(1, 64));
   cmd->add_option("--json", o->Json, "write the figures as JSON");
   SetCommandRun(cmd, [o]() { return Run(*o); });
 }

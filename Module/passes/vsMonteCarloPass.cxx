@@ -53,7 +53,10 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
     }
     format = 3;
   }
-  const uint32_t strategy = params.sampling.x, cellMode = params.sampling.z;
+  const uint32_t strategy = params.sampling.x;
+  // The cell mode matters only where a grid is read: one pipeline for Uniform and Environment.
+  const uint32_t cellMode =
+    strategy > shared::VS_STRATEGY_ENVIRONMENT ? params.sampling.z : uint32_t(shared::VS_CELL_STOCHASTIC);
   if (strategy > shared::VS_STRATEGY_TWO_STEP)
   {
     throw InputError("unknown sampling strategy " + std::to_string(strategy));

@@ -83,6 +83,7 @@ vec4 gTF;
 uint gEnvSize;
 uint gClipCount;
 uint gStrategy;
+uint gShadowRays;
 float gRefineDepth;
 /* The direction map of this sample (D x D <= 256 values), which the strategies read through
  * vs_map_value (vs_prelude.h): one module-scope array, never copied into calls. */
@@ -330,7 +331,16 @@ void direction_values(vec3 x, uint strategy, uint D, inout VsRng rng)
   }
 }
 
-vec3 sample_direction(vec3 x, uint strategy, inout VsRng rng, out float pdf)
+/* The direction map at x for the grid strategies (once per scatter point, for all its shadow rays). */
+void prepare_directions(vec3 x, uint strategy, inout VsRng rng)
+{
+  uint D = P.grid.w;
+  if (strategy != VS_STRATEGY_ENVIRONMENT && strategy != VS_STRATEGY_UNIFORM && D != 0u)
+    direction_values(x, strategy, D, rng);
+}
+
+/* A direction from the strategy (after prepare_directions at the scatter point) and its pdf. */
+vec3 sample_direction(uint strategy, inout VsRng rng, out float pdf)
 {
   uint K = P.sampling.w;
   uint D = P.grid.w;
@@ -338,7 +348,6 @@ vec3 sample_direction(vec3 x, uint strategy, inout VsRng rng, out float pdf)
     return vs_sample_environment(K, vs_rng_vec2(rng), pdf);
   if (strategy == VS_STRATEGY_UNIFORM || D == 0u)
     return vs_sample_uniform(vs_rng_vec2(rng), pdf);
-  direction_values(x, strategy, D, rng);
   return vs_sample_direction(strategy, D, K, vs_rng_vec2(rng), pdf);
 }
 
@@ -505,6 +514,8 @@ uint scatter_cost(uint strategy, uint D, uint K, uint cellMode)
 
 /* The camera ray's start (its clip planes, the background's 4 texels). */
 const uint VS_START_COST = 16u;
+/* Loops a sample enters with no lane that needs them (lavapipe runs a loop body once even then). */
+const uint VS_SAMPLE_SLACK = 16u;
 
 /* The steps (loop iterations) one tracker may take before it gives up (delta_track,
  * ratio_track): what a sample may cost at most stays well inside a dispatch's budget. */
@@ -536,8 +547,8 @@ void accumulate(inout Accumulator acc, vec4 v)
 /* One path of pixel `pix`: sample `sampleIndex` of the image (its random numbers depend on the
  * pixel, the sample index and the seed only). Returns (rgb, alpha); adds the back-edges of its
  * camera and shadow rays to cameraCost and shadowCost, and says whether it scattered. */
-vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, inout uint cameraCost, inout uint shadowCost,
-  out bool scattered)
+vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPerRay, inout uint cameraCost,
+  inout uint shadowCost, out bool scattered)
 {
   scattered = false;
   uint W = P.viewport.x, H = P.viewport.y;
@@ -569,19 +580,27 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, inout uint cameraCo
     {
       scattered = true;
       vec3 x = o + tHit * d;
-      float pdf;
-      vec3 w = sample_direction(x, gStrategy, rng, pdf);
-      if (pdf > 0.0)
+      prepare_directions(x, gStrategy, rng);
+      /* gShadowRays directions per scatter point (splitting): their mean is an unbiased estimate
+       * of the in-scattered light at x, for the cost of one camera ray. */
+      vec3 sum = vec3(0.0);
+      for (uint k = 0u; k < gShadowRays; ++k)
       {
-        vec3 Le = env_radiance(w);
+        float pdf;
+        vec3 w = sample_direction(gStrategy, rng, pdf);
+        vec3 Le = pdf > 0.0 ? env_radiance(w) : vec3(0.0);
+        uint steps = 0u;
         if (any(greaterThan(Le, vec3(0.0))))
         {
           vec3 di = (P.worldToIndex * vec4(w, 0.0)).xyz;
           vec2 ts = ray_interval(x, di);
-          float T = ratio_track(x, di, 0.0, ts.y, rng, VS_TRACKING_CAP, shadowCost);
-          result.rgb = albedo * VS_INV_4PI * T * Le / pdf;
+          float T = ratio_track(x, di, 0.0, ts.y, rng, VS_TRACKING_CAP, steps);
+          sum += T * Le / pdf;
         }
+        /* The lanes here run each shadow ray's loop as long as the longest of them. */
+        shadowCost += subgroupMax(steps) + scatterCostPerRay;
       }
+      result.rgb = albedo * VS_INV_4PI * sum / float(gShadowRays);
     }
   }
   else if (tDepth >= 1e30 && P.background.w > 0.5)
@@ -606,6 +625,7 @@ void main()
   gEnvSize = 1u << P.sampling.w;
   gClipCount = P.bricks.w;
   gStrategy = VS_SPEC_STRATEGY;
+  gShadowRays = clamp(uint(P.tracking.y), 1u, 64u);
   gRefineDepth = P.tracking.x > 0.0 ? P.tracking.x : 32.0;
   uint idx = inside ? pix.y * W + pix.x : 0u;
   float depth = inside ? uDepth[idx] : 1.0;
@@ -620,7 +640,10 @@ void main()
    * same in every lane: each loop runs as long as its longest lane) leave room for one more
    * sample at its most expensive. */
   uint scatterCost = scatter_cost(gStrategy, P.grid.w, P.sampling.w, VS_SPEC_CELL_MODE);
-  uint sampleMax = 2u * (VS_TRACKING_CAP + 1u) + scatterCost + VS_START_COST + 4u;
+  /* Per shadow ray: its direction (the map is made once: counted in the first) and its clip planes. */
+  uint perRay = 16u + 2u * P.sampling.w + 6u + 4u;
+  uint sampleMax = VS_TRACKING_CAP + 1u + scatterCost + gShadowRays * (VS_TRACKING_CAP + 1u + perRay) +
+    VS_START_COST + VS_SAMPLE_SLACK;
   uint cost = 0u;
   while (subgroupAny(done < pc.target) && cost + sampleMax <= VS_LOOP_BUDGET)
   {
@@ -628,10 +651,10 @@ void main()
     bool scattered = false;
     if (done < pc.target)
     {
-      accumulate(acc, render_sample(pix, done, depth, cameraCost, shadowCost, scattered));
+      accumulate(acc, render_sample(pix, done, depth, perRay, cameraCost, shadowCost, scattered));
       done += 1u;
     }
-    cost += 1u + VS_START_COST + subgroupMax(cameraCost) + subgroupMax(shadowCost) +
+    cost += 1u + VS_START_COST + VS_SAMPLE_SLACK + subgroupMax(cameraCost) + subgroupMax(shadowCost) +
       (subgroupAny(scattered) ? scatterCost : 0u);
   }
 

@@ -461,6 +461,12 @@ std::shared_ptr<ComputePipeline> Context::Pipeline(
   return slot;
 }
 
+size_t Context::PipelineCount() const
+{
+  std::lock_guard<std::mutex> lock(this->PipelineMutex_);
+  return this->Pipelines_.size();
+}
+
 uint64_t Context::ValidationMessageCount() const
 {
   std::lock_guard<std::mutex> lock(this->Mutex_);

@@ -93,6 +93,10 @@ public:
   std::shared_ptr<ComputePipeline> Pipeline(
     const std::string& key, const std::function<std::shared_ptr<ComputePipeline>()>& make);
 
+  /** How many pipelines the context holds (compiled ones stay for the process: a one-time cost,
+   *  which memory checks tell from a leak by this count). */
+  size_t PipelineCount() const;
+
   /** Counts messages (called by the debug messenger). */
   void CountValidationMessage();
 
@@ -112,7 +116,7 @@ private:
   uint64_t ValidationMessages_ = 0;
   mutable std::mutex Mutex_;
   std::mutex QueueMutex_;
-  std::mutex PipelineMutex_;
+  mutable std::mutex PipelineMutex_;
   std::map<std::string, std::shared_ptr<ComputePipeline>> Pipelines_;
 };
 }

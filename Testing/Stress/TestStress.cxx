@@ -2,6 +2,7 @@
 // geometry and data through the mapper, each checked for errors, NaN/Inf radiance and
 // physically impossible brightness (vsStressScene.h). Long variants: `vissweep bench stress`.
 #include "vsStressScene.h"
+#include "vsContext.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkCamera.h"
@@ -424,8 +425,32 @@ TEST(Stress, RandomChurn)
   std::uniform_real_distribution<double> U(0.0, 1.0);
   vtkNew<vtkPlane> plane;
   const double bound = 1000.0; // the sun's radiance (sky 0)
-  long rssAfterWarmup = 0, heapAfterWarmup = 0, heapHalfway = 0;
+  long rssAfterWarmup = 0;
+  // Compile every kernel the changes can reach first (one per strategy, cell mode and cell walk,
+  // kept for the process; lavapipe compiles, and Mesa writes its disk cache in the background,
+  // at a kernel's first dispatch): one-time costs that random changes would otherwise reach at
+  // random times, inside a measurement window (issue 13, item 11: the test failed in one run in
+  // four, always one with a new kernel in its second window).
+  for (double density : { 1.0, 1e6 })
+  {
+    s.Mapper()->SetDensityScale(density); // 1e6: optically thick bricks, the cell walk's kernel
+    for (int strategy = 0; strategy <= vtkVisibilitySweepVolumeMapper::Auto; ++strategy)
+    {
+      for (int cellMode : { 0, 1 })
+      {
+        s.Mapper()->SetSamplingStrategy(strategy);
+        s.Mapper()->SetCellMode(cellMode);
+        ASSERT_EQ(s.Render(1, bound).Error, "");
+      }
+    }
+  }
+  s.Mapper()->SetDensityScale(1.0);
+  // Heap growth over the changes of each window that compiled no new pipeline (should be all:
+  // the count says), so that a kernel the warm-up missed cannot pass for a leak.
+  long window[2] = { 0, 0 };
+  int compiles[2] = { 0, 0 };
   const int changes = 1000;
+  long heapBefore = LiveHeapKilobytes();
   for (int i = 0; i < changes; ++i)
   {
     switch (int(U(rng) * 7))
@@ -468,37 +493,45 @@ TEST(Stress, RandomChurn)
       s.Opacity()->AddPoint(1.0, 0.8);
     }
     s.Renderer()->ResetCameraClippingRange();
+    const size_t pipelinesBefore = vs::Context::Default()->PipelineCount();
     Result r = s.Render(1, bound);
     ASSERT_EQ(r.Error, "") << "change " << i;
     ASSERT_EQ(r.NonFinite, 0) << "change " << i;
     if (i == 100)
     {
       rssAfterWarmup = ResidentKilobytes();
-      heapAfterWarmup = LiveHeapKilobytes();
     }
-    if (i == 550)
+    const long heapNow = LiveHeapKilobytes();
+    if (i > 100)
     {
-      heapHalfway = LiveHeapKilobytes();
+      // The change and its render, from the end of the last one.
+      const int w = i <= 550 ? 0 : 1;
+      if (vs::Context::Default()->PipelineCount() == pipelinesBefore)
+        window[w] += heapNow - heapBefore;
+      else
+        ++compiles[w];
     }
+    heapBefore = heapNow;
   }
   // Two windows of 450 changes: a leak grows the heap in both, a one-time cost (a new malloc
-  // arena of a lavapipe worker, a driver cache filling up) in one. Under load one full-suite run
-  // in four saw +2.3 MB over the 900 changes once, +14-90 KB otherwise; the bound on the smaller
-  // window keeps the leak sensitivity of the old single bound (256 KB over 900 changes, i.e.
-  // 128 KB per window: a 1 KB leak per change reads ~450 KB in each).
-  auto windows = [&](long end) {
-    const long first = heapHalfway - heapAfterWarmup, second = end - heapHalfway;
-    std::cout << "live heap grew by " << first << " KB, then " << second << " KB (two windows of "
-              << (changes - 100) / 2 << " changes)\n";
-    return std::min(first, second);
+  // arena of a lavapipe worker, a driver cache filling up) in one. Renders that compiled a
+  // pipeline are left out (the kernel has one per strategy, cell mode and cell walk, kept for the
+  // process, which random changes reach at random times; one is ~100-300 KB). The bound on the
+  // smaller window keeps the leak sensitivity of the old single bound (256 KB over 900 changes,
+  // i.e. 128 KB per window: a 1 KB leak per change reads ~450 KB in each).
+  auto windows = [&]() {
+    std::cout << "live heap grew by " << window[0] << " KB, then " << window[1] << " KB (two windows of "
+              << (changes - 100) / 2 << " changes, without the " << compiles[0] << " and " << compiles[1]
+              << " renders that compiled a pipeline)\n";
+    return std::min(window[0], window[1]);
   };
 #if VS_STRESS_ASAN
-  const long heapGrowth = windows(LiveHeapKilobytes());
+  const long heapGrowth = windows();
   std::cout << "(ASan count; resident memory grew by " << ResidentKilobytes() - rssAfterWarmup
             << " KB: ASan's quarantine and allocator, not checked)\n";
   EXPECT_LT(heapGrowth, 128) << "the heap grows in both windows of changes (leak?)";
 #else
-  const long heapGrowth = windows(LiveHeapKilobytes());
+  const long heapGrowth = windows();
   std::cout << "(mallinfo2; resident memory grew by " << ResidentKilobytes() - rssAfterWarmup << " KB, not checked)\n";
   EXPECT_LT(heapGrowth, 128) << "the heap grows in both windows of changes (leak?)";
 #endif
