@@ -83,11 +83,26 @@ vec4 gTF;
 uint gEnvSize;
 uint gClipCount;
 uint gStrategy;
+float gInvBrickSize;
+/* The ray being tracked (one at a time: the camera ray, then the shadow rays): what the majorant
+ * walk needs of it per segment, computed once per ray. */
+struct RayConstants
+{
+  vec3 invD;       /* 1 / d per axis (inf where d is 0: masked where used) */
+  float invLength; /* 1 / |d|: the shortest step's scale (min_step) */
+};
+RayConstants gRay;
+
+void set_ray(vec3 d)
+{
+  gRay.invD = 1.0 / d;
+  gRay.invLength = 1.0 / max(length(d), 1e-20);
+}
 uint gShadowRays;
 float gRefineDepth;
 /* The direction map of this sample (D x D <= 256 values), which the strategies read through
  * vs_map_value (vs_prelude.h): one module-scope array, never copied into calls. */
-float gValues[256];
+float gValues[344]; /* up to 16 x 16 values and their sum pyramid: (4 * 256 - 1) / 3 */
 
 float vs_map_value(uint n)
 {
@@ -130,19 +145,8 @@ float min_step(float t, vec3 d)
 /* The kernel's hot paths are written without constant-length loops: lavapipe's loop limiter counts
  * every back-edge (see the top of this file), and a loop the compiler keeps would cost budget. */
 
-/* The distance along d from p to the face ahead on one axis, between lo and hi (1e30 when the
- * ray is parallel to the axis). */
-float face_distance(float p, float d, float lo, float hi)
-{
-  if (d > 1e-20)
-    return (hi - p) / d;
-  if (d < -1e-20)
-    return (lo - p) / d;
-  return 1e30;
-}
-
-/* The same for the voxel cell from lo to lo + 1, except the volume's outer faces (of `dim`
- * voxels): scalars clamp beyond them. */
+/* The distance along d from p to the face ahead of the voxel cell from lo to lo + 1 on one axis,
+ * except the volume's outer faces (of `dim` voxels): scalars clamp beyond them (1e30: none). */
 float cell_face_distance(float p, float d, int lo, int dim)
 {
   if (d > 1e-20)
@@ -157,13 +161,15 @@ float cell_face_distance(float p, float d, int lo, int dim)
  * on: a sliver of the previous brick shorter than float resolves may go with this one). */
 ivec3 brick_at(vec3 o, vec3 d, float t, out float tExit)
 {
-  float h = min_step(t, d);
+  float h = 2e-6 * max(abs(t), gRay.invLength);
   vec3 p = o + t * d;
   vec3 probe = o + (t + 0.5 * h) * d;
-  ivec3 b = ivec3(floor(probe / gBrickSize));
+  ivec3 b = ivec3(floor(probe * gInvBrickSize));
   vec3 lo = vec3(b) * gBrickSize, hi = lo + gBrickSize;
-  float e = min(face_distance(p.x, d.x, lo.x, hi.x),
-    min(face_distance(p.y, d.y, lo.y, hi.y), face_distance(p.z, d.z, lo.z, hi.z)));
+  /* The face ahead on each axis, by the ray's reciprocal direction (1e30 where it is parallel). */
+  vec3 e3 = (mix(lo, hi, greaterThan(d, vec3(0.0))) - p) * gRay.invD;
+  e3 = mix(vec3(1e30), e3, greaterThan(abs(d), vec3(1e-20)));
+  float e = min(e3.x, min(e3.y, e3.z));
   /* Always move forward, even when rounding put p on the far side of a face. */
   tExit = t + max(e, h);
   return b;
@@ -301,18 +307,23 @@ void direction_values(vec3 x, uint strategy, uint D, inout VsRng rng)
   uvec3 c1 = min(c0 + 1u, cells - 1u);
   vec3 f = c - vec3(c0);
   uint DD = D * D;
-  for (uint n = 0u; n < DD; ++n)
-    gValues[n] = 0.0;
+  uint level = vs_log2(D);
+  float epsilon = P.sampling2.x;
   if (VS_SPEC_CELL_MODE == VS_CELL_STOCHASTIC)
   {
-    /* One corner with probability equal to its trilinear weight. */
+    /* One corner with probability equal to its trilinear weight; one pass over the map. */
     vec3 u = vec3(vs_rng_vec2(rng), vs_rng_float(rng));
     uvec3 cell = uvec3(u.x < f.x ? c1.x : c0.x, u.y < f.y ? c1.y : c0.y, u.z < f.z ? c1.z : c0.z);
     for (uint n = 0u; n < DD; ++n)
-      gValues[n] = visibility_texel(cell, n, D);
+    {
+      float v = visibility_texel(cell, n, D) + epsilon;
+      gValues[n] = strategy == VS_STRATEGY_VISIBILITY ? v : v * vs_env_node(level, uvec2(n % D, n / D));
+    }
   }
   else
   {
+    for (uint n = 0u; n < DD; ++n)
+      gValues[n] = 0.0;
     for (uint k = 0u; k < 8u; ++k)
     {
       uvec3 cell = uvec3((k & 1u) != 0u ? c1.x : c0.x, (k & 2u) != 0u ? c1.y : c0.y, (k & 4u) != 0u ? c1.z : c0.z);
@@ -322,12 +333,18 @@ void direction_values(vec3 x, uint strategy, uint D, inout VsRng rng)
         for (uint n = 0u; n < DD; ++n)
           gValues[n] += w * visibility_texel(cell, n, D);
     }
+    for (uint n = 0u; n < DD; ++n)
+    {
+      float v = gValues[n] + epsilon;
+      gValues[n] = strategy == VS_STRATEGY_VISIBILITY ? v : v * vs_env_node(level, uvec2(n % D, n / D));
+    }
   }
-  uint level = vs_log2(D);
-  for (uint n = 0u; n < DD; ++n)
+  /* The sum pyramid behind the map (warp.h), level by level up to the total. */
+  for (uint size = D / 2u; size > 0u; size /= 2u)
   {
-    float v = gValues[n] + P.sampling2.x;
-    gValues[n] = strategy == VS_STRATEGY_VISIBILITY ? v : v * vs_env_node(level, uvec2(n % D, n / D));
+    uint base = vs_pyramid_offset(D, size);
+    for (uint n = 0u; n < size * size; ++n)
+      gValues[base + n] = vs_pyramid_parent(D, 2u * size, uvec2(n % size, n / size));
   }
 }
 
@@ -348,76 +365,18 @@ vec3 sample_direction(uint strategy, inout VsRng rng, out float pdf)
     return vs_sample_environment(K, vs_rng_vec2(rng), pdf);
   if (strategy == VS_STRATEGY_UNIFORM || D == 0u)
     return vs_sample_uniform(vs_rng_vec2(rng), pdf);
-  return vs_sample_direction(strategy, D, K, vs_rng_vec2(rng), pdf);
+  return vs_sample_direction_pyramid(strategy, D, K, vs_rng_vec2(rng), pdf);
 }
 
 /* ------------------------------------------------------------------ tracking */
 
-
-/* A tracked ray: o + t d up to t1, the current majorant segment [tSeg, tNext) of majorant mu, and
- * the next tentative collision at tSeg + dt (none in this segment when dt >= tNext - tSeg). The
- * iterator over majorant segments that delta and ratio tracking share. */
-struct Tracker
-{
-  vec3 o, d;
-  float t1, tSeg, tNext, mu, dt;
-};
-
-Tracker tracker_start(vec3 o, vec3 d, float t0, float t1)
-{
-  /* An empty interval (a ray that misses the box: both ends may be infinite) ends at once. */
-  bool empty = !(t0 < t1);
-  Tracker r;
-  r.o = o;
-  r.d = d;
-  r.t1 = empty ? 0.0 : t1;
-  r.tSeg = empty ? 0.0 : t0;
-  r.tNext = r.tSeg;
-  r.mu = 0.0;
-  r.dt = 0.0;
-  return r;
-}
-
-/* One step of the iterator, for either tracker: true when it stands at a tentative collision
- * (tracker_point); false after it moved to the next majorant segment (its first exponential
- * distance drawn; one that overshoots a segment is redrawn in the next: memoryless) or, with
- * `ended`, at the end of the ray. One loop iteration per step (the majorant walk has no loops), so
- * a SIMD group's iterations are the most any of its lanes takes, which `cost` counts. */
-bool tracker_step(inout Tracker r, inout VsRng rng, inout uint cost, out bool ended)
-{
-  ended = false;
-  cost += 1u;
-  if (r.dt < r.tNext - r.tSeg)
-    return true;
-  if (r.tNext >= r.t1)
-  {
-    ended = true;
-    return false;
-  }
-  r.tSeg = r.tNext;
-  float tNext;
-  r.mu = majorant_segment(r.o, r.d, r.tSeg, r.t1, tNext);
-  r.tNext = tNext;
-  r.dt = r.mu > 0.0 ? sample_exponential(vs_rng_float(rng), r.mu) : 3.4e38;
-  return false;
-}
-
-vec3 tracker_point(Tracker r)
-{
-  return r.o + (r.tSeg + r.dt) * r.d;
-}
-
-/* After a null collision (or a ratio-tracking step): the next tentative collision. */
-void tracker_advance(inout Tracker r, inout VsRng rng)
-{
-  r.dt += sample_exponential(vs_rng_float(rng), r.mu);
-}
 
 /* Delta tracking on [t0, t1): true at a real collision (tHit, its albedo). Distances inside a
  * segment count from its start, so steps far below the resolution of t still add up. */
 bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, inout uint cost, out float tHit,
   out vec3 albedo)
 {
+  set_ray(d);
   float t = t0;
   uint steps = 0u;
   while (t < t1)
@@ -431,12 +390,15 @@ bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, 
       float dt = 0.0;
       while (true)
       {
-        dt += sample_exponential(vs_rng_float(rng), mu);
+        /* One hash gives the step and the collision's test (the test's number is unused when the
+         * step leaves the segment). */
+        vec2 u = vs_rng_vec2(rng);
+        dt += sample_exponential(u.x, mu);
         if (dt >= h)
           break;
         VS_COUNT(0);
         vec4 c = vs_classify(vs_sample_scalar(o + (t + dt) * d, gDims), gTF);
-        if (vs_rng_float(rng) * mu < c.w || ++steps >= cap)
+        if (u.y * mu < c.w || ++steps >= cap)
         {
           tHit = t + dt;
           albedo = c.rgb;
@@ -454,6 +416,7 @@ bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, 
 /* Ratio tracking of the transmittance on [t0, t1), with Russian roulette once it is small. */
 float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, inout uint cost)
 {
+  set_ray(d);
   float T = 1.0;
   float t = t0;
   uint steps = 0u;
@@ -468,7 +431,8 @@ float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap,
       float dt = 0.0;
       while (true)
       {
-        dt += sample_exponential(vs_rng_float(rng), mu);
+        vec2 u = vs_rng_vec2(rng); /* the step, and Russian roulette's number */
+        dt += sample_exponential(u.x, mu);
         if (dt >= h)
           break;
         VS_COUNT(0);
@@ -481,7 +445,7 @@ float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap,
         }
         if (T < 0.05)
         {
-          if (vs_rng_float(rng) < 0.5)
+          if (u.y < 0.5)
           {
             cost += steps;
             return 0.0;
@@ -500,15 +464,15 @@ float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap,
 
 /* Back-edges a scatter step may take, an upper bound: the environment's descent (K levels), the
  * shadow ray's clip planes; for the grid strategies direction_values' loops over the D x D map
- * (clear, fill: one cell or 8 corners, weight) and the warp's block sums (vs_warp: at most
- * 4D + 4/3 D^2 for its levels). */
+ * (one pass for one cell; clear, 8 corners and weight for trilinear cells), its sum pyramid
+ * (D^2 / 3 values in log2 D loops) and the warp's descent (log2 D levels). */
 uint scatter_cost(uint strategy, uint D, uint K, uint cellMode)
 {
   uint DD = D * D;
   uint cost = 16u + 2u * K + 6u + 4u;
   if (strategy == VS_STRATEGY_UNIFORM || strategy == VS_STRATEGY_ENVIRONMENT || D == 0u)
     return cost;
-  cost += 16u + 4u * D + 2u * DD + (cellMode == VS_CELL_STOCHASTIC ? DD : 8u * (DD + 1u)) + 2u * DD;
+  cost += 16u + 2u * D + (cellMode == VS_CELL_STOCHASTIC ? DD : 2u * DD + 8u * (DD + 1u)) + DD / 2u + 8u;
   return cost;
 }
 
@@ -621,6 +585,7 @@ void main()
   gDims = ivec3(P.dims.xyz);
   gBricks = ivec3(P.bricks.xyz);
   gBrickSize = P.sampling2.z;
+  gInvBrickSize = 1.0 / P.sampling2.z;
   gTF = P.tf;
   gEnvSize = 1u << P.sampling.w;
   gClipCount = P.bricks.w;

@@ -220,9 +220,49 @@ testing::AssertionResult StrategyMatchesPdf(uint strategy, const Scene& s)
          << " (" << StrategyName(strategy) << ", " << s.name << ")";
 }
 
+// The same strategy through the pyramid form of the map (the render kernel's, warp.h).
+testing::AssertionResult PyramidStrategyMatchesPdf(uint strategy, const Scene& s)
+{
+  vstest::ScopedEnvMips scope(s.mips);
+  const Map values = ValuesFor(strategy, s);
+  std::vector<float> v((4 * s.D * s.D - 1) / 3, 0.0f);
+  std::copy(values.begin(), values.begin() + s.D * s.D, v.begin());
+  for (uint size = s.D / 2; size > 0; size /= 2)
+  {
+    for (uint i = 0; i < size * size; ++i)
+    {
+      v[vs_pyramid_offset(s.D, size) + i] = vs_pyramid_parent(v.data(), s.D, 2 * size, uvec2(i % size, i / size));
+    }
+  }
+  vstest::SamplerTestOptions o;
+  o.bins = 64;
+  o.sub = 2;
+  o.samples = 60000;
+  o.seed = strategy * 100u + s.D + s.K + 7u;
+  o.edgeResolution = int(std::max(s.D, 1u << s.K));
+  return vstest::SamplerMatchesPdf(
+           [&](vec2 u, float& pdf) { return vs_sample_direction_pyramid(strategy, v.data(), s.D, s.K, u, pdf); },
+           [&](vec3 d) { return vs_pdf_direction_pyramid(strategy, v.data(), s.D, s.K, d); }, o)
+         << " (pyramid, " << StrategyName(strategy) << ", " << s.name << ")";
+}
+
 } // namespace
 
 // ------------------------------------------------------------ chi-square tests
+
+// The render kernel's form of the grid strategies: the map with its sum pyramid.
+TEST(SamplingStrategies, PyramidFormsMatchPdf)
+{
+  for (uint strategy : { VS_STRATEGY_VISIBILITY, VS_STRATEGY_COMBINED, VS_STRATEGY_TWO_STEP })
+  {
+    for (const NamedMap& vis : kVisibilityMaps)
+    {
+      EXPECT_TRUE(PyramidStrategyMatchesPdf(strategy, MakeScene(vis, kEnvironments[1], 8, 5)));
+    }
+    EXPECT_TRUE(PyramidStrategyMatchesPdf(strategy, MakeScene(kVisibilityMaps[2], kEnvironments[3], 16, 6)));
+    EXPECT_TRUE(PyramidStrategyMatchesPdf(strategy, MakeScene(kVisibilityMaps[0], kEnvironments[2], 2, 4)));
+  }
+}
 
 TEST(SamplingStrategies, UniformMatchesPdf)
 {

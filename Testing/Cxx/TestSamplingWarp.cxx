@@ -59,6 +59,33 @@ WarpFn WarpN(uint n)
   };
 }
 
+// The map with its sum pyramid behind it (warp.h), built as the render kernel builds it.
+std::vector<float> WithPyramid(const Map& m, uint n)
+{
+  std::vector<float> v((4 * n * n - 1) / 3, 0.0f);
+  std::copy(m.begin(), m.begin() + n * n, v.begin());
+  for (uint size = n / 2; size > 0; size /= 2)
+  {
+    const uint base = vs_pyramid_offset(n, size);
+    for (uint i = 0; i < size * size; ++i)
+    {
+      v[base + i] = vs_pyramid_parent(v.data(), n, 2 * size, uvec2(i % size, i / size));
+    }
+  }
+  return v;
+}
+
+WarpFn WarpPyramidN(uint n)
+{
+  return [n](const Map& m, vec2 u)
+  {
+    std::vector<float> v = WithPyramid(m, n);
+    WarpResult r;
+    vs_warp_pyramid(v.data(), n, u, r.texel, r.prob, r.uRemapped);
+    return r;
+  };
+}
+
 double Total(const Map& m, uint n)
 {
   double t = 0.0;
@@ -172,6 +199,49 @@ TEST(SamplingWarp, WarpAnySizeMatchesMaps)
     ExpectWarpMatchesMap(WarpN(n), NearZeroMap(n), n, "near zero");
   }
   ExpectWarpMatchesMap(WarpN(16), OneHotMap(16, uvec2(15, 0)), 16, "one-hot");
+}
+
+// The pyramid warp (the render kernel's: log2 n steps instead of block sums) samples the map.
+TEST(SamplingWarp, PyramidWarpMatchesMaps)
+{
+  for (uint n : { 2u, 4u, 8u, 16u })
+  {
+    SCOPED_TRACE(n);
+    ExpectWarpMatchesMap(WarpPyramidN(n), RandomMap(n, 2), n, "random");
+    ExpectWarpMatchesMap(WarpPyramidN(n), NearZeroMap(n), n, "near zero");
+    ExpectWarpMatchesMap(WarpPyramidN(n), EpsilonFloorMap(n), n, "epsilon floor");
+  }
+  ExpectWarpMatchesMap(WarpPyramidN(8), OneHotMap(8, uvec2(5, 2)), 8, "one-hot");
+  ExpectWarpMatchesMap(WarpPyramidN(16), OneHotMap(16, uvec2(15, 0)), 16, "one-hot");
+}
+
+// Its probability function returns exactly what the descent reports, sums to one, and an all-zero
+// map gives probability 0.
+TEST(SamplingWarp, PyramidProbAgreesWithItsWarp)
+{
+  for (uint n : { 2u, 8u, 16u })
+  {
+    std::vector<float> v = WithPyramid(NearZeroMap(n), n);
+    VsRng rng = vs_rng_init(uvec2(6u, n), 0u, 1u);
+    for (int i = 0; i < 1000; ++i)
+    {
+      WarpResult r;
+      vs_warp_pyramid(v.data(), n, vs_rng_vec2(rng), r.texel, r.prob, r.uRemapped);
+      EXPECT_EQ(r.prob, vs_warp_pyramid_prob(v.data(), n, r.texel));
+    }
+    double sum = 0.0;
+    for (uint y = 0; y < n; ++y)
+      for (uint x = 0; x < n; ++x)
+        sum += vs_warp_pyramid_prob(v.data(), n, uvec2(x, y));
+    EXPECT_NEAR(sum, 1.0, 1e-5) << n;
+  }
+  Map zero{};
+  std::vector<float> v = WithPyramid(zero, 8);
+  WarpResult r;
+  vs_warp_pyramid(v.data(), 8, vec2(0.3f, 0.7f), r.texel, r.prob, r.uRemapped);
+  EXPECT_EQ(r.prob, 0.0f);
+  EXPECT_LT(r.texel.x, 8u);
+  EXPECT_LT(r.texel.y, 8u);
 }
 
 TEST(SamplingWarp, ProbFunctionsAgreeWithWarp)

@@ -159,6 +159,75 @@ VS_FUNC float vs_pdf_two_step(VS_MAP_PARAM uint D, uint finestLevel, vec3 dir)
   return vs_two_step_pdf_given_texel_prob(probTexel, leaf, D, finestLevel);
 }
 
+/* ---------------------------- the same from a map that carries its sum pyramid (warp.h) */
+
+VS_FUNC vec3 vs_sample_tabulated_pyramid(VS_MAP_PARAM uint D, vec2 u, VS_OUT(float) pdf)
+{
+  uvec2 t;
+  float prob;
+  vec2 uTexel;
+  vs_warp_pyramid(VS_MAP_ARG D, u, t, prob, uTexel);
+  pdf = vs_texel_pdf(prob, D);
+  return vs_dir_in_texel(t, uTexel, D);
+}
+
+VS_FUNC float vs_pdf_tabulated_pyramid(VS_MAP_PARAM uint D, vec3 dir)
+{
+  return vs_texel_pdf(vs_warp_pyramid_prob(VS_MAP_ARG D, vs_dir_to_texel(dir, D)), D);
+}
+
+VS_FUNC vec3 vs_sample_two_step_pyramid(VS_MAP_PARAM uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
+{
+  uvec2 t;
+  float prob;
+  vec2 uTexel;
+  vs_warp_pyramid(VS_MAP_ARG D, u, t, prob, uTexel);
+  return vs_two_step_descend(t, prob, uTexel, D, finestLevel, pdf);
+}
+
+VS_FUNC float vs_pdf_two_step_pyramid(VS_MAP_PARAM uint D, uint finestLevel, vec3 dir)
+{
+  uvec2 leaf = vs_dir_to_texel(dir, 1u << finestLevel);
+  float probTexel = vs_warp_pyramid_prob(VS_MAP_ARG D, leaf >> (finestLevel - vs_log2(D)));
+  return vs_two_step_pdf_given_texel_prob(probTexel, leaf, D, finestLevel);
+}
+
+/* vs_sample_direction for a map with its pyramid (the render kernel's form). */
+VS_FUNC vec3 vs_sample_direction_pyramid(
+  uint strategy, VS_MAP_PARAM uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
+{
+  if (strategy == VS_STRATEGY_ENVIRONMENT)
+  {
+    return vs_sample_environment(finestLevel, u, pdf);
+  }
+  if (strategy == VS_STRATEGY_VISIBILITY || strategy == VS_STRATEGY_COMBINED)
+  {
+    return vs_sample_tabulated_pyramid(VS_MAP_ARG D, u, pdf);
+  }
+  if (strategy == VS_STRATEGY_TWO_STEP)
+  {
+    return vs_sample_two_step_pyramid(VS_MAP_ARG D, finestLevel, u, pdf);
+  }
+  return vs_sample_uniform(u, pdf);
+}
+
+VS_FUNC float vs_pdf_direction_pyramid(uint strategy, VS_MAP_PARAM uint D, uint finestLevel, vec3 dir)
+{
+  if (strategy == VS_STRATEGY_ENVIRONMENT)
+  {
+    return vs_pdf_environment(finestLevel, dir);
+  }
+  if (strategy == VS_STRATEGY_VISIBILITY || strategy == VS_STRATEGY_COMBINED)
+  {
+    return vs_pdf_tabulated_pyramid(VS_MAP_ARG D, dir);
+  }
+  if (strategy == VS_STRATEGY_TWO_STEP)
+  {
+    return vs_pdf_two_step_pyramid(VS_MAP_ARG D, finestLevel, dir);
+  }
+  return vs_pdf_uniform(dir);
+}
+
 /* ------------------------------------------------------------ dispatch */
 
 /* Any strategy by its VS_STRATEGY_* id; the map = visibility or product map

@@ -151,6 +151,67 @@ VS_FUNC void vs_warp(VS_MAP_PARAM uint n, vec2 u, VS_OUT(uvec2) texel, VS_OUT(fl
   uRemapped = u;
 }
 
+/* ------------------ tabulated n x n with its sum pyramid (n in {2,4,8,16}) */
+
+/* The map may carry its sum pyramid behind it: the n x n values (index y*n + x), then the
+ * (n/2)^2 sums of their 2x2 blocks, and so on up to the total, (4n^2 - 1) / 3 values in all.
+ * Made once per map (vs_pyramid_parent), it lets the warp read 4 values per level instead of
+ * summing blocks: log2(n) steps instead of ~n^2. Where the size x size level starts: */
+VS_FUNC uint vs_pyramid_offset(uint n, uint size)
+{
+  return 4u * (n * n - size * size) / 3u;
+}
+
+/* The four children (size x size level, order x + 2y) of `node` of the size/2 level. */
+VS_FUNC vec4 vs_pyramid_children(VS_MAP_PARAM uint n, uint size, uvec2 node)
+{
+  uint base = vs_pyramid_offset(n, size);
+  uint i = base + 2u * node.y * size + 2u * node.x;
+  return vec4(VS_MAP(i), VS_MAP(i + 1u), VS_MAP(i + size), VS_MAP(i + size + 1u));
+}
+
+/* The value of `node` of the size/2 level: the sum of its children, as vs_quad_sum adds them. */
+VS_FUNC float vs_pyramid_parent(VS_MAP_PARAM uint n, uint size, uvec2 node)
+{
+  return vs_quad_sum(vs_pyramid_children(VS_MAP_ARG n, size, node));
+}
+
+/* Warp u down the pyramid: texel, its probability (the product of the child probabilities the
+ * descent took, so exactly what it samples with; 0 if the map is all zero) and u remapped into
+ * the texel. */
+VS_FUNC void vs_warp_pyramid(
+  VS_MAP_PARAM uint n, vec2 u, VS_OUT(uvec2) texel, VS_OUT(float) prob, VS_OUT(vec2) uRemapped)
+{
+  uvec2 node = uvec2(0u);
+  prob = 1.0f;
+  for (uint size = 2u; size <= n; size *= 2u)
+  {
+    vec4 w = vs_pyramid_children(VS_MAP_ARG n, size, node);
+    uvec2 c = vs_warp_choose_child(w, u);
+    prob *= vs_quad_child_prob(w, c);
+    node = 2u * node + c;
+  }
+  texel = node;
+  uRemapped = u;
+}
+
+/* The probability vs_warp_pyramid gives texel t. */
+VS_FUNC float vs_warp_pyramid_prob(VS_MAP_PARAM uint n, uvec2 t)
+{
+  float prob = 1.0f;
+  for (uint size = 2u; size <= n; size *= 2u)
+  {
+    /* t's ancestor at the size/2 level and its child at the size level on the way to t. */
+    uint shift = 0u;
+    for (uint m = n / size; m > 1u; m /= 2u)
+      shift += 1u;
+    uvec2 node = t >> (shift + 1u);
+    uvec2 c = (t >> shift) & uvec2(1u);
+    prob *= vs_quad_child_prob(vs_pyramid_children(VS_MAP_ARG n, size, node), c);
+  }
+  return prob;
+}
+
 /* ------------------------------------------ environment importance tree */
 
 /* Defined by the includer: entry `index` of the flat env mip array. */
