@@ -582,6 +582,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   p.sampling2 = glm::vec4(float(this->VisibilityEpsilon), float(this->EnvironmentIntensity),
     float(I.Scene->Majorants().BrickSize()), squareScale);
   p.tracking.y = float(this->ShadowRays);
+  p.tracking.z = float(this->CameraEstimator);
   if (grid)
   {
     auto c = grid->Cells();
@@ -1124,6 +1125,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PendingDirections: " << this->GetPendingDirections() << "\n";
   os << indent << "CellMode: " << this->GetCellModeAsString() << "\n";
   os << indent << "ShadowRays: " << this->ShadowRays << " per scatter point\n";
+  os << indent << "CameraEstimator: " << this->GetCameraEstimatorAsString() << "\n";
   os << indent << "SamplesPerFrame: " << this->SamplesPerFrame << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
   os << indent << "AccumulatedSamples: " << this->AccumulatedSamples << "\n";

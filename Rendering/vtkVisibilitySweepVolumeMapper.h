@@ -124,6 +124,23 @@ public:
   vtkGetMacro(ShadowRays, int);
   ///@}
 
+  enum CameraEstimators
+  {
+    CollisionCamera = 0, // delta tracking to one real collision (the paper's)
+    ReservoirCamera = 1  // ratio tracking; one scatter point resampled from all tentative collisions
+  };
+  ///@{
+  /** How a camera ray finds its scatter point. CollisionCamera: delta tracking to the first real
+   *  collision. ReservoirCamera: ratio tracking through the volume, one of its tentative collisions
+   *  drawn in proportion to its scattering weight (one shadow ray either way); its alpha is
+   *  1 - transmittance instead of 0 or 1. Both unbiased (TestMonteCarlo). Default CollisionCamera. */
+  vtkSetClampMacro(CameraEstimator, int, CollisionCamera, ReservoirCamera);
+  vtkGetMacro(CameraEstimator, int);
+  void SetCameraEstimatorToCollision() { this->SetCameraEstimator(CollisionCamera); }
+  void SetCameraEstimatorToReservoir() { this->SetCameraEstimator(ReservoirCamera); }
+  const char* GetCameraEstimatorAsString() { return this->CameraEstimator == ReservoirCamera ? "ReservoirCamera" : "CollisionCamera"; }
+  ///@}
+
   ///@{
   /** Samples per pixel added by each Render() (default 1) and the total to stop at (default 4096). */
   vtkSetClampMacro(SamplesPerFrame, int, 1, 1 << 16);
@@ -383,6 +400,7 @@ protected:
   double AutoProbeFraction = 0.05;
   int CellMode = StochasticCell;
   int ShadowRays = 1;
+  int CameraEstimator = CollisionCamera;
   int SamplesPerFrame = 1;
   int MaximumSamples = 4096;
   double VisibilityEpsilon = 0.01;

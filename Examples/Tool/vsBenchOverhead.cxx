@@ -36,6 +36,7 @@ struct Options
   bool CellModes = true;
   bool Quick = false;
   int ShadowRays = 1;
+  std::string Camera = "collision";
 };
 
 struct Measurement
@@ -71,6 +72,8 @@ Measurement Measure(SceneObjects& objects, const Options& o, const std::string& 
   mapper->SetSamplingStrategy(StrategyIndex(strategy, "--strategies"));
   mapper->SetCellMode(cellMode);
   mapper->SetShadowRays(o.ShadowRays);
+  mapper->SetCameraEstimator(o.Camera == "reservoir" ? vtkVisibilitySweepVolumeMapper::ReservoirCamera
+                                                     : vtkVisibilitySweepVolumeMapper::CollisionCamera);
   mapper->SetMaximumSamples(1 << 30);
   mapper->SetSamplesPerFrame(o.Spp);
   Measurement m;
@@ -236,6 +239,8 @@ void AddBenchOverhead(CLI::App& bench)
   cmd->add_flag("!--no-cell-modes", o->CellModes, "skip the trilinear-cells variants of the grid strategies");
   cmd->add_flag("--quick", o->Quick, "64 x 64, 1 spp, 1 frame (seconds; for tests)");
   cmd->add_option("--shadow-rays", o->ShadowRays, "shadow rays per scatter point (splitting)")->check(CLI::Range(1, 64));
+  cmd->add_option("--camera", o->Camera, "camera estimator: collision (delta tracking) or reservoir")
+    ->check(CLI::IsMember({ "collision", "reservoir" }));
   cmd->add_option("--json", o->Json, "write the figures as JSON");
   SetCommandRun(cmd, [o]() { return Run(*o); });
 }

@@ -43,6 +43,7 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(constant_id = 0) const uint VS_SPEC_STRATEGY = 4u;  /* VS_STRATEGY_*, = params.sampling.x */
 layout(constant_id = 1) const uint VS_SPEC_CELL_MODE = 1u; /* VS_CELL_*, = params.sampling.z */
 layout(constant_id = 2) const uint VS_SPEC_REFINE = 1u;    /* 0: no majorant segment reaches the refinement depth */
+layout(constant_id = 3) const uint VS_SPEC_CAMERA = 0u;    /* VS_CAMERA_*, = params.tracking.z */
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
 layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
 layout(binding = 2, r32f) uniform readonly image3D uMajorant;
@@ -460,6 +461,79 @@ float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap,
   return T;
 }
 
+/* The camera ray by ratio tracking with one scatter point resampled from all its tentative
+ * collisions (VS_CAMERA_RESERVOIR). At the tentative collisions x_i (rate mu) of the ray, ratio
+ * tracking's running transmittance T_i makes sum_i T_i sigma_s(x_i) / mu L_s(x_i) an unbiased
+ * estimate of the single-scattered light (the collision estimator); one point j drawn with
+ * probability s_j / S (s_i: the luminance of T_i sigma_s(x_i) / mu, S their sum: a weighted
+ * reservoir over the walk, no second loop) and scored (T_j sigma_s(x_j) / mu) S / s_j L_s(x_j) has
+ * the same expectation, for one shadow ray. `weight` is that factor (rgb: T_j albedo_j sigma_t / mu
+ * S / s_j), `T` the ray's transmittance (its alpha is 1 - T), tSel < 0 when nothing scatters. */
+void camera_reservoir(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, inout uint cost, out float tSel,
+  out vec3 weight, out float T)
+{
+  set_ray(d);
+  tSel = -1.0;
+  weight = vec3(0.0);
+  T = 1.0;
+  float S = 0.0, sSel = 0.0;
+  vec3 wSel = vec3(0.0);
+  float t = t0;
+  uint steps = 0u;
+  bool alive = true;
+  while (t < t1 && alive)
+  {
+    float tNext;
+    float mu = majorant_segment(o, d, t, t1, tNext);
+    steps++;
+    if (mu > 0.0)
+    {
+      float h = tNext - t;
+      float dt = 0.0;
+      while (true)
+      {
+        vec2 u = vs_rng_vec2(rng); /* the step, and the reservoir's choice */
+        dt += sample_exponential(u.x, mu);
+        if (dt >= h)
+          break;
+        VS_COUNT(0);
+        vec4 c = vs_classify(vs_sample_scalar(o + (t + dt) * d, gDims), gTF);
+        vec3 ws = T * c.rgb * (c.w / mu);
+        float si = dot(ws, vec3(0.2126, 0.7152, 0.0722));
+        if (si > 0.0)
+        {
+          S += si;
+          if (u.y * S < si)
+          {
+            tSel = t + dt;
+            wSel = ws;
+            sSel = si;
+          }
+        }
+        T *= max(0.0, 1.0 - c.w / mu);
+        if (++steps >= cap)
+          T = 0.0;
+        else if (T < 0.05)
+        {
+          if (vs_rng_float(rng) < 0.5)
+            T = 0.0;
+          else
+            T *= 2.0;
+        }
+        if (T == 0.0)
+        {
+          alive = false;
+          break;
+        }
+      }
+    }
+    t = tNext;
+  }
+  cost += steps;
+  if (tSel >= 0.0)
+    weight = wSel * (S / sSel);
+}
+
 /* ------------------------------------------------------------------ the loop budget */
 
 /* Back-edges a scatter step may take, an upper bound: the environment's descent (K levels), the
@@ -535,41 +609,54 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPer
   float t0 = max(ti.x, 0.0), t1 = min(ti.y, tDepth);
 
   vec4 result = vec4(0.0);
-  float tHit;
-  vec3 albedo;
-  if (t0 < t1 && delta_track(o, d, t0, t1, rng, VS_TRACKING_CAP, cameraCost, tHit, albedo))
+  bool seesEnvironment = tDepth >= 1e30 && P.background.w > 0.5;
+  /* The scatter point, and the factor its in-scattered light is scored with (albedo for delta
+   * tracking's collision; the reservoir's weight otherwise). */
+  bool scatter = false;
+  float tHit = 0.0;
+  vec3 albedo = vec3(0.0);
+  if (VS_SPEC_CAMERA == VS_CAMERA_RESERVOIR)
+  {
+    float T = 1.0;
+    if (t0 < t1)
+      camera_reservoir(o, d, t0, t1, rng, VS_TRACKING_CAP, cameraCost, tHit, albedo, T);
+    scatter = tHit >= 0.0 && t0 < t1 && any(greaterThan(albedo, vec3(0.0)));
+    result = seesEnvironment ? vec4(T * env_radiance_display(dw), 1.0) : vec4(0.0, 0.0, 0.0, 1.0 - T);
+  }
+  else if (t0 < t1 && delta_track(o, d, t0, t1, rng, VS_TRACKING_CAP, cameraCost, tHit, albedo))
   {
     result.a = 1.0;
-    if (any(greaterThan(albedo, vec3(0.0))))
-    {
-      scattered = true;
-      vec3 x = o + tHit * d;
-      prepare_directions(x, gStrategy, rng);
-      /* gShadowRays directions per scatter point (splitting): their mean is an unbiased estimate
-       * of the in-scattered light at x, for the cost of one camera ray. */
-      vec3 sum = vec3(0.0);
-      for (uint k = 0u; k < gShadowRays; ++k)
-      {
-        float pdf;
-        vec3 w = sample_direction(gStrategy, rng, pdf);
-        vec3 Le = pdf > 0.0 ? env_radiance(w) : vec3(0.0);
-        uint steps = 0u;
-        if (any(greaterThan(Le, vec3(0.0))))
-        {
-          vec3 di = (P.worldToIndex * vec4(w, 0.0)).xyz;
-          vec2 ts = ray_interval(x, di);
-          float T = ratio_track(x, di, 0.0, ts.y, rng, VS_TRACKING_CAP, steps);
-          sum += T * Le / pdf;
-        }
-        /* The lanes here run each shadow ray's loop as long as the longest of them. */
-        shadowCost += subgroupMax(steps) + scatterCostPerRay;
-      }
-      result.rgb = albedo * VS_INV_4PI * sum / float(gShadowRays);
-    }
+    scatter = any(greaterThan(albedo, vec3(0.0)));
   }
-  else if (tDepth >= 1e30 && P.background.w > 0.5)
+  else if (seesEnvironment)
   {
     result = vec4(env_radiance_display(dw), 1.0);
+  }
+  if (scatter)
+  {
+    scattered = true;
+    vec3 x = o + tHit * d;
+    prepare_directions(x, gStrategy, rng);
+    /* gShadowRays directions per scatter point (splitting): their mean is an unbiased estimate
+     * of the in-scattered light at x, for the cost of one camera ray. */
+    vec3 sum = vec3(0.0);
+    for (uint k = 0u; k < gShadowRays; ++k)
+    {
+      float pdf;
+      vec3 w = sample_direction(gStrategy, rng, pdf);
+      vec3 Le = pdf > 0.0 ? env_radiance(w) : vec3(0.0);
+      uint steps = 0u;
+      if (any(greaterThan(Le, vec3(0.0))))
+      {
+        vec3 di = (P.worldToIndex * vec4(w, 0.0)).xyz;
+        vec2 ts = ray_interval(x, di);
+        float T = ratio_track(x, di, 0.0, ts.y, rng, VS_TRACKING_CAP, steps);
+        sum += T * Le / pdf;
+      }
+      /* The lanes here run each shadow ray's loop as long as the longest of them. */
+      shadowCost += subgroupMax(steps) + scatterCostPerRay;
+    }
+    result.rgb += albedo * VS_INV_4PI * sum / float(gShadowRays);
   }
   /* Non-finite contributions (should not happen) are dropped rather than poisoning the pixel. */
   if (any(isnan(result)) || any(isinf(result)))

@@ -225,3 +225,49 @@ TEST(MonteCarlo, ShadowRaySplittingIsUnbiased)
     EXPECT_LT(varB, 0.9 * varA) << kNames[strategy] << ": 4 shadow rays should lower the variance of a sample";
   }
 }
+
+// The reservoir camera estimator (ratio tracking, one scatter point resampled from every tentative
+// collision) is unbiased: its image agrees with delta tracking's within the standard errors, alpha
+// included, with the environment seen and not, and it lowers the variance of a sample.
+TEST(MonteCarlo, ReservoirCameraIsUnbiased)
+{
+  RenderScene scene({ { 17, 15, 13 } },
+    [](int x, int y, int z) { return float((x * 7 + y * 3 + z * 5) % 11) / 10.0f * float(x > 4); }, 0.5,
+    glm::vec3(0.8f, 0.7f, 0.6f),
+    vs::EnvironmentMap::SunDisk(64, glm::normalize(glm::vec3(1, 1, 2)), 5.0, glm::vec3(50.0f), glm::vec3(0.2f)));
+  for (uint32_t strategy : { VS_STRATEGY_ENVIRONMENT, VS_STRATEGY_TWO_STEP })
+  {
+    for (bool background : { false, true })
+    {
+      auto p = scene.Params(8, 8, -2.0f, 18.0f, strategy, 512, 3u, true);
+      p.background.w = background ? 1.0f : 0.0f;
+      auto [a, va] = scene.Render(p, 2);
+      const double n = scene.LastSamples;
+      p.tracking.z = float(VS_CAMERA_RESERVOIR);
+      p.viewport.w = 4u; // independent samples
+      auto [b, vb] = scene.Render(p, 2);
+      double chi2 = 0.0, varA = 0.0, varB = 0.0;
+      int dof = 0;
+      for (size_t i = 0; i < a.size(); ++i)
+      {
+        const double se2 = (va[i] + vb[i]) / n;
+        if (se2 > 0.0)
+        {
+          chi2 += (a[i] - b[i]) * (a[i] - b[i]) / se2;
+          ++dof;
+        }
+        if (i % 4 < 3)
+        {
+          varA += va[i];
+          varB += vb[i];
+        }
+      }
+      const std::string what = std::string(kNames[strategy]) + (background ? ", environment seen" : ", transparent");
+      EXPECT_GT(dof, 150) << what;
+      EXPECT_LT(chi2, dof + 4.0 * std::sqrt(2.0 * dof) + 20.0) << what;
+      std::printf("[ reservoir ] %s: variance per sample %.4g (collision) -> %.4g (reservoir), chi2 %.1f dof %d\n",
+        what.c_str(), varA, varB, chi2, dof);
+      EXPECT_LT(varB, varA) << what << ": the reservoir should lower the variance of a sample";
+    }
+  }
+}

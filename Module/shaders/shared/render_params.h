@@ -15,6 +15,10 @@ VS_NAMESPACE_BEGIN
 VS_CONST uint VS_CELL_TRILINEAR = 0u;  /* interpolate the 8 cells' maps (von Radziewsky et al. 2017) */
 VS_CONST uint VS_CELL_STOCHASTIC = 1u; /* pick one cell with its trilinear weight */
 
+VS_CONST uint VS_CAMERA_COLLISION = 0u; /* the camera ray delta-tracked to one real collision */
+VS_CONST uint VS_CAMERA_RESERVOIR = 1u; /* ratio-tracked, one scatter point resampled from all its
+                                          tentative collisions (mc_render.glsl camera_reservoir) */
+
 /* Loop back-edges one invocation of the render kernel takes at most per dispatch (an upper bound
  * the kernel keeps). Lavapipe ends every loop of an invocation once they have taken 65535 together
  * (llvmpipe's loop limiter), silently: the kernel stops below that and resumes in the next dispatch
@@ -40,7 +44,8 @@ struct VsRenderParams
   vec4 clipPlanes[6];/* index space: kept where dot(n, x) + w >= 0 */
   vec4 tracking;     /* x: optical depth of a majorant segment above which the trackers walk voxel
                         cells instead of the brick (0 = 32), see mc_render.glsl; y: shadow rays per
-                        scatter point (0 = 1, at most 64); z, w: unused (0) */
+                        scatter point (0 = 1, at most 64); z: the camera estimator (VS_CAMERA_*);
+                        w: unused (0) */
 };
 
 VS_NAMESPACE_END
