@@ -145,6 +145,7 @@ int vtkVisibilityGridFilter::RequestData(
   p.Algorithm = this->Method == BruteForce ? vs::VisibilityGridParameters::Method::BruteForce
                                            : vs::VisibilityGridParameters::Method::Sweep;
   p.BruteForceSamples = uint32_t(this->BruteForceSamples);
+  p.NearestInterpolation = this->VolumeProperty->GetInterpolationType() == VTK_NEAREST_INTERPOLATION;
   p.StorageFormat = this->StorageFormat == Float32 ? vs::VisibilityGridParameters::Format::Float32
     : this->StorageFormat == Unorm16               ? vs::VisibilityGridParameters::Format::Unorm16
                                                    : vs::VisibilityGridParameters::Format::Unorm8;

@@ -65,12 +65,6 @@ std::vector<std::string> PropertyChecks::Ignored(
   std::vector<std::string> ignored;
   if (property)
   {
-    if (property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION)
-    {
-      ignored.push_back("vtkVolumeProperty InterpolationType is nearest (VTK's default), but VisSweep interpolates "
-                        "trilinearly: label maps show blended labels between their regions. Call "
-                        "SetInterpolationTypeToLinear() to silence this");
-    }
     if (HasEffectiveGradientOpacity(property))
     {
       ignored.push_back("the vtkVolumeProperty's gradient opacity is ignored: VisSweep's opacity depends on the "

@@ -12,6 +12,7 @@
 #include "vsStrategySelector.h"
 #include "vsVisibilityGrid.h"
 #include "vsVisibilityGridUpdater.h"
+#include "shared/interpolation.h"
 #include "shared/update_order.h"
 #include "vsVisibilityImage.h"
 #include "vsError.h"
@@ -391,6 +392,7 @@ void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, 
     p.clipPlanes[i] = glm::vec4(planes[i]);
   }
   p.counts.x = uint32_t(planes.size());
+  p.counts.y = I.Scene->Interpolation();
   if (!I.EA)
   {
     I.EA = std::make_unique<vs::EmissionAbsorptionPass>(I.Context);
@@ -531,6 +533,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   }
   auto b = I.Scene->Majorants().Bricks();
   p.bricks = glm::uvec4(b[0], b[1], b[2], uint32_t(planes.size()));
+  p.tracking.y = float(I.Scene->Interpolation()); // nearest (VTK's default) or trilinear
   const glm::dmat3 m(geometry.IndexToWorld);
   const glm::dvec3 o(geometry.IndexToWorld[3]);
   for (size_t i = 0; i < planes.size(); ++i)
@@ -719,6 +722,7 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
   vs::GridUpdateRequest& r = I.LastGridRequest;
   r.Parameters = GridParameters(
     this->DirectionResolution, this->VoxelsPerCell, this->KernelResolution, this->Filtering, this->FilterAngleFraction);
+  r.Parameters.NearestInterpolation = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
   r.Geometry = I.GridGeometry;
   r.WorldPlanes = WorldPlanes(this->ClippingPlanes);
   const int side = int(r.Parameters.DirectionResolution);

@@ -21,6 +21,10 @@
  * - EmissionAbsorption: ray casting of VTK's transfer functions (opacity per
  *   ScalarOpacityUnitDistance, colour as emission), a jittered sample per step.
  *
+ * The vtkVolumeProperty's InterpolationType is honoured everywhere (render, majorants, sweeps):
+ * nearest (VTK's default) reads the nearest voxel, so a label map never shows blended labels;
+ * linear interpolates trilinearly.
+ *
  * The environment is input port 1: SetEnvironmentConnection(reader->GetOutputPort())
  * with a vtkEnvironmentMapReader or vtkEnvironmentMapSource; without one, a constant
  * white sky of radiance 1.
@@ -323,8 +327,8 @@ public:
   ///@}
 
   /** Renders the volume into the renderer's viewport; TimeToDraw is then its wall seconds.
-   *  Settings VisSweep does not honour (nearest interpolation, gradient opacity, shading, blend
-   *  modes other than composite, depth peeling for volumes) are warned about once per change;
+   *  Settings VisSweep does not honour (gradient opacity, shading, blend modes other than
+   *  composite, depth peeling for volumes) are warned about once per change;
    *  an error is logged once per change too (GetLastError() holds it on every failed render). */
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
   /** Frees the device resources; the next Render() re-creates them and accumulates anew. The last

@@ -8,6 +8,7 @@
 #include "vsMajorantGrid.h"
 #include "vsPipeline.h"
 #include "vsTransferFunctionTable.h"
+#include "shared/interpolation.h"
 
 #include "vs_spirv_sweep_filter.h"
 #include "vs_spirv_sweep_march.h"
@@ -48,7 +49,8 @@ bool SameLayout(const VisibilityGridParameters& a, const VisibilityGridParameter
     a.FilterAngleFraction == b.FilterAngleFraction && a.Algorithm == b.Algorithm &&
     a.BruteForceSamples == b.BruteForceSamples && a.StorageFormat == b.StorageFormat &&
     a.StopTransmittance == b.StopTransmittance && a.AutoKernelRaysPerCell == b.AutoKernelRaysPerCell &&
-    a.Directions == b.Directions && a.ExtinctionPooling == b.ExtinctionPooling && a.MaxPooling == b.MaxPooling;
+    a.Directions == b.Directions && a.ExtinctionPooling == b.ExtinctionPooling && a.MaxPooling == b.MaxPooling &&
+    a.NearestInterpolation == b.NearestInterpolation;
 }
 
 template <typename T>
@@ -200,7 +202,8 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
   auto t = tf.Params();
   g.tf = glm::vec4(t[0], t[1], t[2], t[3]);
   const double step = parameters.StepSize > 0.0 ? parameters.StepSize : geometry.MinSpacing;
-  g.march = glm::vec4(float(step), float(majorants.BrickSize()), parameters.StopTransmittance, 0.0f);
+  g.march = glm::vec4(float(step), float(majorants.BrickSize()), parameters.StopTransmittance,
+    float(parameters.NearestInterpolation ? shared::VS_INTERPOLATION_NEAREST : shared::VS_INTERPOLATION_LINEAR));
   auto bricks = majorants.Bricks();
   g.bricks = glm::uvec4(bricks[0], bricks[1], bricks[2], uint32_t(worldClipPlanes.size()));
   // World planes to index space: n.(M x + o) + w = (M^T n).x + (n.o + w).

@@ -59,7 +59,7 @@ void main()
     {
       float b = min(a + stepSize, t.y);
       float ts = a + jitter * (b - a);
-      vec4 c = vs_classify(vs_sample_scalar(oi + ts * di, dims), P.tf);
+      vec4 c = vs_classify(vs_sample(oi + ts * di, dims, P.counts.y), P.tf);
       float A = 1.0 - exp(-c.w * (b - a));
       color += (1.0 - alpha) * A * c.rgb;
       alpha += (1.0 - alpha) * A;

@@ -59,6 +59,7 @@ uint gEnvSize;
 uint gClipCount;
 uint gStrategy;
 float gRefineDepth;
+uint gInterpolation; /* interpolation.h: the scalar's reconstruction (P.tracking.y) */
 /* The direction map of this sample (D x D <= 256 values), which the strategies read through
  * vs_map_value (vs_prelude.h): one module-scope array, never copied into calls. */
 float gValues[256];
@@ -148,6 +149,8 @@ float segment_max_extinction(vec3 o, vec3 d, float ta, float tb, ivec3 lo, vec4 
   vec3 fa = clamp(clamp(o + ta * d, vec3(0.0), top) - vec3(lo), 0.0, 1.0);
   vec3 fb = clamp(clamp(o + tb * d, vec3(0.0), top) - vec3(lo), 0.0, 1.0);
   vec3 f0 = min(fa, fb), f1 = max(fa, fb);
+  if (gInterpolation == VS_INTERPOLATION_NEAREST)
+    return vs_nearest_max_extinction(f0, f1, c0, c1, gTF); /* the corners whose halves it reaches */
   float smin = 3.4e38, smax = -3.4e38;
   for (uint k = 0u; k < 8u; ++k)
   {
@@ -188,9 +191,9 @@ float refine_majorant(vec3 o, vec3 d, float t, inout float tNext, float mu)
   vec4 c1 = vec4(imageLoad(uVolume, ivec3(lo.x, lo.y, hi.z)).r, imageLoad(uVolume, ivec3(hi.x, lo.y, hi.z)).r,
     imageLoad(uVolume, ivec3(lo.x, hi.y, hi.z)).r, imageLoad(uVolume, ivec3(hi.x, hi.y, hi.z)).r);
   VS_COUNT(0);
-  if (any(isnan(c0)) || any(isnan(c1)))
+  if (gInterpolation != VS_INTERPOLATION_NEAREST && (any(isnan(c0)) || any(isnan(c1))))
   {
-    /* A NaN corner makes every sample of the cell NaN: empty space (volume_access.glsl). */
+    /* A NaN corner makes every trilinear sample of the cell NaN: empty space (volume_access.glsl). */
     tNext = t + hMax;
     return 0.0;
   }
@@ -259,7 +262,7 @@ bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, out float 
         if (dt >= h)
           break;
         VS_COUNT(0);
-        vec4 c = vs_classify(vs_sample_scalar(o + (t + dt) * d, gDims), gTF);
+        vec4 c = vs_classify(vs_sample(o + (t + dt) * d, gDims, gInterpolation), gTF);
         if (vs_rng_float(rng) * mu < c.w || ++steps >= VS_MAX_TRACKING_STEPS)
         {
           tHit = t + dt;
@@ -293,7 +296,7 @@ float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng)
         if (dt >= h)
           break;
         VS_COUNT(0);
-        float sigma = vs_classify(vs_sample_scalar(o + (t + dt) * d, gDims), gTF).w;
+        float sigma = vs_classify(vs_sample(o + (t + dt) * d, gDims, gInterpolation), gTF).w;
         T *= max(0.0, 1.0 - sigma / mu);
         if (++steps >= VS_MAX_TRACKING_STEPS)
           return 0.0;
@@ -469,6 +472,7 @@ void main()
   gClipCount = P.bricks.w;
   gStrategy = P.sampling.x;
   gRefineDepth = P.tracking.x > 0.0 ? P.tracking.x : 32.0;
+  gInterpolation = uint(P.tracking.y);
   uint idx = pix.y * W + pix.x;
   float depth = uDepth[idx];
 

@@ -4,8 +4,9 @@
  *   layout(binding = VS_BINDING_VOLUME, r32f) uniform readonly image3D uVolume;
  *   layout(std430, binding = VS_BINDING_TF) readonly buffer TransferFunction { vec4 uTF[]; };
  * Non-finite voxels are stored as NaN; any interpolated NaN classifies to zero
- * extinction and zero albedo (DESIGN: NaN/Inf voxels are empty space).
+ * extinction and zero albedo (NaN/Inf voxels are empty space).
  */
+#include "interpolation.h"
 
 /* Trilinear interpolation of the scalar at continuous index p with 8 imageLoads
  * (measured faster than sampler3D on lavapipe). Indices clamp to the volume. */
@@ -28,6 +29,21 @@ float vs_sample_scalar(vec3 p, ivec3 dims)
   float c01 = mix(c001, c101, f.x);
   float c11 = mix(c011, c111, f.x);
   return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
+}
+
+/* The nearest voxel's scalar at continuous index p (voxel i owns [i - 0.5, i + 0.5) per axis, as
+ * VTK's nearest interpolation), clamped to the volume: one imageLoad. */
+float vs_sample_nearest(vec3 p, ivec3 dims)
+{
+  vec3 q = clamp(p, vec3(0.0), vec3(dims - 1));
+  return imageLoad(uVolume, min(ivec3(floor(q + 0.5)), dims - 1)).r;
+}
+
+/* The scalar at p under `interpolation` (interpolation.h: VS_INTERPOLATION_LINEAR or _NEAREST,
+ * the vtkVolumeProperty's InterpolationType). */
+float vs_sample(vec3 p, ivec3 dims, uint interpolation)
+{
+  return interpolation == VS_INTERPOLATION_NEAREST ? vs_sample_nearest(p, dims) : vs_sample_scalar(p, dims);
 }
 
 /* Post-classification: (albedo rgb, extinction per world unit) of scalar s,
@@ -67,6 +83,28 @@ float vs_max_extinction(float s0, float s1, vec4 tf)
   int j = int(ceil(b));
   int k = findMSB(j - i + 1);
   return max(vs_tf_level_max(k, i, tf), vs_tf_level_max(k, j - (1 << k) + 1, tf));
+}
+
+/* The largest extinction nearest-neighbour samples take on a segment inside the voxel cell whose
+ * corners are c0 = (000, 100, 010, 110), c1 = (001, 101, 011, 111) and whose local coordinates
+ * (in [0,1]^3) span the box [f0, f1]: a sample reads the corner it is nearest to, so only the
+ * corners whose half of the cell the box reaches along every axis can be read, and the result is
+ * the largest of their own classified extinctions (exactly what those samples compute; a NaN
+ * corner classifies to 0 and leaves its neighbours' halves as they are). The halves are widened by
+ * 1/64 voxel against the rounding of sample positions along the ray. */
+float vs_nearest_max_extinction(vec3 f0, vec3 f1, vec4 c0, vec4 c1, vec4 tf)
+{
+  const float slack = 1.0 / 64.0;
+  bvec3 low = lessThan(f0, vec3(0.5 + slack));
+  bvec3 high = greaterThanEqual(f1, vec3(0.5 - slack));
+  float m = 0.0;
+  for (uint k = 0u; k < 8u; ++k)
+  {
+    bool x = (k & 1u) != 0u, y = (k & 2u) != 0u, z = (k & 4u) != 0u;
+    if ((x ? high.x : low.x) && (y ? high.y : low.y) && (z ? high.z : low.z))
+      m = max(m, vs_classify(z ? c1[k & 3u] : c0[k & 3u], tf).w);
+  }
+  return m;
 }
 
 /* Ray-box intersection in index space; returns (tNear, tFar), empty when tNear >= tFar. */

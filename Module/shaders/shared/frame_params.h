@@ -22,7 +22,7 @@ struct VsFrameParams
   uvec4 viewport;    /* width, height, frame index, seed */
   vec4 march;        /* x: step (world units), y: early-termination opacity, z,w: unused */
   vec4 clipPlanes[6];/* xyz normal, w offset, world space: kept where dot(n,x)+w >= 0 */
-  uvec4 counts;      /* x: clip planes in use */
+  uvec4 counts;      /* x: clip planes in use, y: the scalar's interpolation (interpolation.h) */
 };
 
 VS_NAMESPACE_END

@@ -33,7 +33,8 @@ struct VsRenderParams
   uvec4 bricks;      /* majorant bricks (xyz), w: clip planes in use */
   vec4 clipPlanes[6];/* index space: kept where dot(n, x) + w >= 0 */
   vec4 tracking;     /* x: optical depth of a majorant segment above which the trackers walk voxel
-                        cells instead of the brick (0 = 32), see mc_render.glsl; y, z, w: unused (0) */
+                        cells instead of the brick (0 = 32), see mc_render.glsl; y: the scalar's interpolation
+                        (interpolation.h: 0 linear, 1 nearest); z, w: unused (0) */
 };
 
 VS_NAMESPACE_END

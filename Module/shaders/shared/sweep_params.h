@@ -35,7 +35,8 @@ struct VsSweepGlobals
   uvec4 grid;       /* visibility cells per axis (xyz), w: directions per side D */
   vec4 dims;        /* voxels per axis */
   vec4 tf;          /* transfer-function LUT parameters (see frame_params.h) */
-  vec4 march;       /* x: step (world units), y: brick size (voxels), z: stop when V below this, w: unused */
+  vec4 march;       /* x: step (world units), y: brick size (voxels), z: stop when V below this,
+                       w: the scalar's interpolation (interpolation.h: 0 linear, 1 nearest) */
   uvec4 bricks;     /* majorant bricks per axis (xyz), w: clip planes in use */
   vec4 clipPlanes[6];  /* index space: kept where dot(n, x) + w >= 0 */
   uvec4 bruteForce; /* x: spatial x angular supersamples per side (1 = centre only), y: seed */
