@@ -80,6 +80,19 @@ struct vtkVisibilitySweepVolumeMapper::Internals
 
 namespace
 {
+static_assert(vs::shared::VS_BLEND_MAXIMUM == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND &&
+    vs::shared::VS_BLEND_MINIMUM == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND &&
+    vs::shared::VS_BLEND_AVERAGE == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND &&
+    vs::shared::VS_BLEND_ADDITIVE == vtkVolumeMapper::ADDITIVE_BLEND,
+  "the shaders' blend modes are VTK's values");
+
+// The blend modes rendered as projections through the emission-absorption path.
+bool IsProjection(int blendMode)
+{
+  return blendMode == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND || blendMode == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND ||
+    blendMode == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND || blendMode == vtkVolumeMapper::ADDITIVE_BLEND;
+}
+
 // Filmic tone curve (Narkowicz's fit of ACES) and the sRGB transfer function.
 float Filmic(float x)
 {
@@ -247,8 +260,11 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     this->ReportError("the input volume's scalars are cell data; VisSweep renders point scalars");
     return;
   }
+  // MIP, MinIP, average and additive are projections, not light transport: the emission-absorption
+  // path renders them whatever the RenderMode.
+  const bool projection = IsProjection(this->BlendMode);
   for (const auto& w : I.Checks.NewWarnings(vs::PropertyChecks::Ignored(
-         this, vol ? vol->GetProperty() : nullptr, ren, this->RenderMode == MonteCarlo)))
+         this, vol ? vol->GetProperty() : nullptr, ren, this->RenderMode == MonteCarlo && !projection)))
   {
     vtkWarningMacro(<< w);
   }
@@ -285,7 +301,7 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     {
       I.GridNeedsFull = true;
     }
-    if (this->RenderMode == EmissionAbsorption)
+    if (this->RenderMode == EmissionAbsorption || projection)
     {
       this->RenderEmissionAbsorption(ren, vol);
     }
@@ -363,7 +379,7 @@ vs::VolumeGeometry CroppedGeometry(vtkVolumeMapper* mapper, const vs::VolumeGeom
 }
 }
 
-void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume*)
+void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
   const vs::VolumeGeometry geometry = CroppedGeometry(this, I.Scene->Geometry());
@@ -393,18 +409,28 @@ void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, 
   }
   p.counts.x = uint32_t(planes.size());
   p.counts.y = I.Scene->Interpolation();
+  if (IsProjection(this->BlendMode))
+  {
+    p.counts.z = uint32_t(this->BlendMode); // VS_BLEND_* are VTK's values
+    const double lo = std::clamp(this->AverageIPScalarRange[0], -3.0e38, 3.0e38);
+    const double hi = std::clamp(this->AverageIPScalarRange[1], -3.0e38, 3.0e38);
+    const double unit = vol && vol->GetProperty() ? vol->GetProperty()->GetScalarOpacityUnitDistance(0) : 1.0;
+    p.projection = glm::vec4(float(lo), float(hi), float(std::max(unit, 1e-30)), 0.0f);
+  }
   if (!I.EA)
   {
     I.EA = std::make_unique<vs::EmissionAbsorptionPass>(I.Context);
   }
   std::vector<float> rgba = I.EA->Render(I.Scene->Volume(), I.Scene->TF(), p, depth);
   this->LastDeviceSeconds = I.EA->LastSeconds();
+  this->LastRenderComplete = true;
   vs::WindowCompositor::Draw(ren, vp, rgba);
 }
 
 void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
+  this->LastRenderComplete = false;
   const vs::VolumeGeometry geometry = CroppedGeometry(this, I.Scene->Geometry());
   const bool croppedAway = glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax));
 

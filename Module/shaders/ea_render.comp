@@ -5,6 +5,8 @@
  * render path: front-to-back compositing with opacity A = 1 - exp(-sigma_t dt)
  * per segment, colour from the colour transfer function, a jittered sample in
  * every segment, early termination, rays stopped at the opaque depth.
+ * The blend modes MIP, MinIP, average and additive are projections, not light transport: with
+ * P.counts.z one of them, the ray is projected instead (project(), as vtkGPUVolumeRayCastMapper).
  * Output: premultiplied RGBA per pixel, rows bottom-up (OpenGL order).
  */
 #include "rng.h"
@@ -18,6 +20,56 @@ layout(std430, binding = 3) readonly buffer Depth { float uDepth[]; };
 layout(std430, binding = 4) writeonly buffer Result { vec4 uOut[]; };
 
 #include "volume_access.glsl"
+
+/* The projections, as vtkGPUVolumeRayCastMapper computes them (single component), over the samples
+ * of the ray's interval t (one jittered sample per step): maximum / minimum intensity, the colour
+ * and opacity of the largest / smallest scalar (premultiplied); average, the mean over the samples
+ * whose scalar lies in the average range of opacity(s) x s normalised to the data's range, as an
+ * opaque grey (transparent without such samples); additive, the integral of opacity(s) x normalised
+ * s per opacity unit distance (VTK's sum over samples one unit distance apart), clamped to 1, an
+ * opaque grey. The opacity is that of the transfer function, alpha = 1 - exp(-sigma_t u). */
+vec4 project(vec3 oi, vec3 di, vec2 t, float stepSize, uint blend, float jitter)
+{
+  ivec3 dims = ivec3(P.dims.xyz);
+  float unitDistance = P.projection.z;
+  float extreme = blend == VS_BLEND_MINIMUM ? 3.4e38 : -3.4e38;
+  float sum = 0.0;
+  uint samples = 0u;
+  for (float a = t.x; a < t.y; a += stepSize)
+  {
+    float b = min(a + stepSize, t.y);
+    float s = vs_sample(oi + (a + jitter * (b - a)) * di, dims, P.counts.y);
+    if (isnan(s))
+      continue; /* non-finite voxels are empty space */
+    if (blend == VS_BLEND_MAXIMUM)
+      extreme = max(extreme, s);
+    else if (blend == VS_BLEND_MINIMUM)
+      extreme = min(extreme, s);
+    else
+    {
+      float normalised = clamp((s - P.tf.x) * P.tf.y / max(P.tf.z - 1.0, 1.0), 0.0, 1.0);
+      float opacity = 1.0 - exp(-vs_classify(s, P.tf).w * unitDistance);
+      if (blend == VS_BLEND_ADDITIVE)
+        sum += opacity * normalised * (b - a) / unitDistance;
+      else if (s >= P.projection.x && s <= P.projection.y)
+      {
+        sum += opacity * normalised;
+        ++samples;
+      }
+    }
+  }
+  if (blend == VS_BLEND_MAXIMUM || blend == VS_BLEND_MINIMUM)
+  {
+    if (abs(extreme) > 3.0e38)
+      return vec4(0.0); /* no finite sample */
+    vec4 c = vs_classify(extreme, P.tf);
+    float opacity = 1.0 - exp(-c.w * unitDistance);
+    return vec4(c.rgb * opacity, opacity);
+  }
+  if (blend == VS_BLEND_AVERAGE)
+    return samples == 0u ? vec4(0.0) : vec4(vec3(clamp(sum / float(samples), 0.0, 1.0)), 1.0);
+  return vec4(vec3(clamp(sum, 0.0, 1.0)), 1.0);
+}
 
 void main()
 {
@@ -52,6 +104,12 @@ void main()
   float alpha = 0.0;
   ivec3 dims = ivec3(P.dims.xyz);
   float stepSize = P.march.x;
+  uint blend = P.counts.z;
+  if (blend != VS_BLEND_COMPOSITE)
+  {
+    uOut[idx] = t.x < t.y ? project(oi, di, t, stepSize, blend, vs_rng_float(rng)) : vec4(0.0);
+    return;
+  }
   if (t.x < t.y)
   {
     float jitter = vs_rng_float(rng);
