@@ -179,6 +179,7 @@ int vtkVisibilityGridFilter::RequestData(
       }
     }
     const vs::VolumeScene& scene = *this->Impl->Scene;
+    planes = vs::EffectiveClipPlanes(planes, scene.Geometry()); // only those that cut the volume count
     vs::VisibilityGrid::CheckFits(*ctx, scene.Geometry(), p);
     this->UpdateProgress(0.0);
     this->Impl->Grid->Compute(scene.Volume(), scene.TF(), scene.Majorants(), scene.Geometry(), planes, p, {},

@@ -128,7 +128,7 @@ bool NearlyEqual(const std::vector<double>& a, const std::vector<double>& b)
 // so switching Uniform -> Environment kept accumulating into the old image.
 std::vector<double> RenderSignature(const vs::shared::VsRenderParams& p)
 {
-  static_assert(sizeof(vs::shared::VsRenderParams) == 2 * 64 + 18 * 16,
+  static_assert(sizeof(vs::shared::VsRenderParams) == 2 * 64 + (12 + vs::shared::VS_MAX_CLIP_PLANES) * 16,
     "a member was added to VsRenderParams: add it to the signature");
   std::vector<double> s;
   auto addMat = [&s](const glm::mat4& m) { s.insert(s.end(), &m[0][0], &m[0][0] + 16); };
@@ -336,8 +336,9 @@ View MakeView(vtkRenderer* ren)
   return v;
 }
 
-// World clipping planes (n, w): kept where dot(n, x) + w >= 0.
-std::vector<glm::dvec4> WorldPlanes(vtkPlaneCollection* planes)
+// World clipping planes (n, w): kept where dot(n, x) + w >= 0, those that cut the (cropped) box
+// of `geometry` (vs::EffectiveClipPlanes: planes that clip nothing are dropped, at most 8 may cut it).
+std::vector<glm::dvec4> WorldPlanes(vtkPlaneCollection* planes, const vs::VolumeGeometry& geometry)
 {
   std::vector<glm::dvec4> out;
   if (!planes)
@@ -353,11 +354,7 @@ std::vector<glm::dvec4> WorldPlanes(vtkPlaneCollection* planes)
     plane->GetOrigin(o);
     out.emplace_back(n[0], n[1], n[2], -(n[0] * o[0] + n[1] * o[1] + n[2] * o[2]));
   }
-  if (out.size() > 6)
-  {
-    throw vs::InputError("at most 6 clipping planes are supported, got " + std::to_string(out.size()));
-  }
-  return out;
+  return vs::EffectiveClipPlanes(out, geometry);
 }
 }
 
@@ -402,7 +399,7 @@ void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, 
   p.viewport = glm::uvec4(vp.Width, vp.Height, I.Frame++, static_cast<uint32_t>(this->Seed));
   double step = this->SampleDistance > 0.0 ? this->SampleDistance : 0.5 * geometry.MinSpacing;
   p.march = glm::vec4(float(step), 0.995f, 0.0f, 0.0f);
-  auto planes = WorldPlanes(this->ClippingPlanes);
+  auto planes = WorldPlanes(this->ClippingPlanes, geometry);
   for (size_t i = 0; i < planes.size(); ++i)
   {
     p.clipPlanes[i] = glm::vec4(planes[i]);
@@ -484,7 +481,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   }
 
   // The visibility grid, only for the strategies that use it.
-  const std::vector<glm::dvec4> planes = WorldPlanes(this->ClippingPlanes);
+  const std::vector<glm::dvec4> planes = WorldPlanes(this->ClippingPlanes, geometry);
   const bool emptyVolume = I.Scene->Majorants().MaxMajorant() <= 0.0f || croppedAway;
   const bool autoStrategy = this->SamplingStrategy == Auto;
   // Auto skips the grid of a volume too thin to shadow: with the largest extinction along the
@@ -750,7 +747,7 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
     this->DirectionResolution, this->VoxelsPerCell, this->KernelResolution, this->Filtering, this->FilterAngleFraction);
   r.Parameters.NearestInterpolation = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
   r.Geometry = I.GridGeometry;
-  r.WorldPlanes = WorldPlanes(this->ClippingPlanes);
+  r.WorldPlanes = WorldPlanes(this->ClippingPlanes, I.GridGeometry);
   const int side = int(r.Parameters.DirectionResolution);
   if (this->LightWeightedDirections && I.EnvironmentSource && I.EnvironmentSource->Size >= side)
   {

@@ -594,10 +594,6 @@ std::vector<Scene::ClipPlane> ParseClipPlanes(const json& v)
   {
     Fail("clip_planes", std::string("expected an array of {\"origin\", \"normal\"} objects, got ") + v.type_name());
   }
-  if (v.size() > 6)
-  {
-    Fail("clip_planes", "at most 6 planes, got " + std::to_string(v.size()));
-  }
   std::vector<Scene::ClipPlane> planes;
   for (size_t i = 0; i < v.size(); ++i)
   {

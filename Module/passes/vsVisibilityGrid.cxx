@@ -171,9 +171,10 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
 {
   const auto wallStart = std::chrono::steady_clock::now();
   parameters.Validate();
-  if (worldClipPlanes.size() > 6)
+  if (worldClipPlanes.size() > shared::VS_MAX_CLIP_PLANES)
   {
-    throw InputError("at most 6 clipping planes are supported, got " + std::to_string(worldClipPlanes.size()));
+    throw InputError("at most " + std::to_string(shared::VS_MAX_CLIP_PLANES) +
+      " clipping planes that cut the volume are supported, got " + std::to_string(worldClipPlanes.size()));
   }
   const auto& info = this->Context_->Info();
   const uint64_t maxFloats = std::min<uint64_t>(info.MaxStorageBufferRange, 64ull << 20) / sizeof(float);

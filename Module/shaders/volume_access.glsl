@@ -7,6 +7,7 @@
  * extinction and zero albedo (NaN/Inf voxels are empty space).
  */
 #include "interpolation.h"
+#include "vs_prelude.h"
 
 /* Trilinear interpolation of the scalar at continuous index p with 8 imageLoads
  * (measured faster than sampler3D on lavapipe). Indices clamp to the volume. */
@@ -125,7 +126,7 @@ vec2 vs_intersect_box(vec3 o, vec3 d, vec3 bmin, vec3 bmax)
 }
 
 /* Clip the interval [t0,t1] of world ray o + t d against the half-spaces kept by the planes. */
-vec2 vs_clip_planes(vec3 o, vec3 d, vec2 t, vec4 planes[6], uint count)
+vec2 vs_clip_planes(vec3 o, vec3 d, vec2 t, vec4 planes[VS_MAX_CLIP_PLANES], uint count)
 {
   for (uint i = 0u; i < count; ++i)
   {

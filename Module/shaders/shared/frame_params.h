@@ -21,7 +21,7 @@ struct VsFrameParams
   vec4 background;   /* rgb + alpha of the constant background (premultiplied) */
   uvec4 viewport;    /* width, height, frame index, seed */
   vec4 march;        /* x: step (world units), y: early-termination opacity, z,w: unused */
-  vec4 clipPlanes[6];/* xyz normal, w offset, world space: kept where dot(n,x)+w >= 0 */
+  vec4 clipPlanes[VS_MAX_CLIP_PLANES];/* xyz normal, w offset, world space: kept where dot(n,x)+w >= 0 */
   uvec4 counts;      /* x: clip planes in use, y: the scalar's interpolation (interpolation.h), z: blend mode
                         (VS_BLEND_*), w: unused */
   vec4 projection;   /* the projections' (VS_BLEND_MAXIMUM..ADDITIVE): x, y: the average's scalar range

@@ -31,7 +31,7 @@ struct VsRenderParams
   uvec4 grid;        /* visibility cells (xyz), w: directions per side D (0 = no grid) */
   vec4 cellSize;     /* index units per visibility cell */
   uvec4 bricks;      /* majorant bricks (xyz), w: clip planes in use */
-  vec4 clipPlanes[6];/* index space: kept where dot(n, x) + w >= 0 */
+  vec4 clipPlanes[VS_MAX_CLIP_PLANES];/* index space: kept where dot(n, x) + w >= 0 */
   vec4 tracking;     /* x: optical depth of a majorant segment above which the trackers walk voxel
                         cells instead of the brick (0 = 32), see mc_render.glsl; y: the scalar's interpolation
                         (interpolation.h: 0 linear, 1 nearest); z, w: unused (0) */

@@ -38,7 +38,7 @@ struct VsSweepGlobals
   vec4 march;       /* x: step (world units), y: brick size (voxels), z: stop when V below this,
                        w: the scalar's interpolation (interpolation.h: 0 linear, 1 nearest) */
   uvec4 bricks;     /* majorant bricks per axis (xyz), w: clip planes in use */
-  vec4 clipPlanes[6];  /* index space: kept where dot(n, x) + w >= 0 */
+  vec4 clipPlanes[VS_MAX_CLIP_PLANES];  /* index space: kept where dot(n, x) + w >= 0 */
   uvec4 bruteForce; /* x: spatial x angular supersamples per side (1 = centre only), y: seed */
   /* The pooled extinction volume the sweeps march (sweep_march_pooled.comp): texel j holds the mean
    * (or max) of sigma_t over voxels [j P, j P + P - 1], so its centre is at index j P + (P - 1) / 2. */
