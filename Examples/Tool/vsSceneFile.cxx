@@ -280,7 +280,7 @@ Scene::TransferFunctionSection ParseTransferFunction(const json& v)
 {
   const std::string path = "transfer_function";
   RequireObject(v, path);
-  CheckKeys(v, path, { "opacity", "color", "unit_distance", "density_scale" });
+  CheckKeys(v, path, { "opacity", "color", "unit_distance", "density_scale", "interpolation" });
   Scene::TransferFunctionSection s;
   const json& op = Require(v, path, "opacity");
   if (!op.is_array() || op.empty())
@@ -329,6 +329,15 @@ Scene::TransferFunctionSection ParseTransferFunction(const json& v)
   if (v.contains("density_scale"))
   {
     s.DensityScale = NonNegative(v["density_scale"], "transfer_function.density_scale", "the density scale");
+  }
+  if (v.contains("interpolation"))
+  {
+    const std::string m = String(v["interpolation"], "transfer_function.interpolation");
+    if (m != "linear" && m != "nearest")
+    {
+      Fail("transfer_function.interpolation", "unknown interpolation '" + m + "' (expected linear, nearest)");
+    }
+    s.Nearest = m == "nearest";
   }
   return s;
 }
@@ -673,8 +682,8 @@ bool Scene::VolumeSection::operator==(const VolumeSection& o) const
 
 bool Scene::TransferFunctionSection::operator==(const TransferFunctionSection& o) const
 {
-  return std::tie(Opacity, Color, UnitDistance, DensityScale) ==
-    std::tie(o.Opacity, o.Color, o.UnitDistance, o.DensityScale);
+  return std::tie(Opacity, Color, UnitDistance, DensityScale, Nearest) ==
+    std::tie(o.Opacity, o.Color, o.UnitDistance, o.DensityScale, o.Nearest);
 }
 
 bool Scene::EnvironmentSection::operator==(const EnvironmentSection& o) const
@@ -854,6 +863,7 @@ json ToJson(const Scene& s)
   }
   tf["unit_distance"] = s.TransferFunction.UnitDistance;
   tf["density_scale"] = s.TransferFunction.DensityScale;
+  tf["interpolation"] = s.TransferFunction.Nearest ? "nearest" : "linear";
   j["transfer_function"] = tf;
 
   const auto& e = s.Environment;
