@@ -238,6 +238,48 @@ VolumeGeometry CropGeometry(const VolumeGeometry& geometry, vtkImageData* image,
   return g;
 }
 
+VolumeGeometry CropRegions(const VolumeGeometry& geometry, vtkImageData* image, const double planes[6], int flags)
+{
+  // The planes in index space: CropGeometry with the full box gives them (clamped to the box).
+  const VolumeGeometry inner = CropGeometry(geometry, image, planes);
+  const uint32_t visible = uint32_t(flags) & 0x7ffffffu;
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  int regions = 0;
+  for (uint32_t r = 0; r < 27; ++r)
+  {
+    if (!(visible & (1u << r)))
+    {
+      continue;
+    }
+    ++regions;
+    const uint32_t c[3] = { r % 3, (r / 3) % 3, r / 9 };
+    for (int i = 0; i < 3; ++i)
+    {
+      const float a = c[i] == 0 ? geometry.BoxMin[i] : c[i] == 1 ? inner.BoxMin[i] : inner.BoxMax[i];
+      const float b = c[i] == 0 ? inner.BoxMin[i] : c[i] == 1 ? inner.BoxMax[i] : geometry.BoxMax[i];
+      lo[i] = std::min(lo[i], a);
+      hi[i] = std::max(hi[i], b);
+    }
+  }
+  VolumeGeometry g = geometry;
+  if (regions == 0)
+  {
+    g.BoxMin = glm::vec3(1.0f);
+    g.BoxMax = glm::vec3(0.0f); // nothing visible
+    return g;
+  }
+  g.BoxMin = glm::max(geometry.BoxMin, lo);
+  g.BoxMax = glm::min(geometry.BoxMax, hi);
+  if (regions > 1)
+  {
+    // A union of boxes: the passes test each point's region (a single region is exactly the box).
+    g.CropLo = inner.BoxMin;
+    g.CropHi = inner.BoxMax;
+    g.CropFlags = visible;
+  }
+  return g;
+}
+
 std::vector<glm::dvec4> EffectiveClipPlanes(const std::vector<glm::dvec4>& planes, const VolumeGeometry& geometry)
 {
   if (glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax)))

@@ -128,7 +128,7 @@ bool NearlyEqual(const std::vector<double>& a, const std::vector<double>& b)
 // so switching Uniform -> Environment kept accumulating into the old image.
 std::vector<double> RenderSignature(const vs::shared::VsRenderParams& p)
 {
-  static_assert(sizeof(vs::shared::VsRenderParams) == 2 * 64 + (12 + vs::shared::VS_MAX_CLIP_PLANES) * 16,
+  static_assert(sizeof(vs::shared::VsRenderParams) == 2 * 64 + (15 + vs::shared::VS_MAX_CLIP_PLANES) * 16,
     "a member was added to VsRenderParams: add it to the signature");
   std::vector<double> s;
   auto addMat = [&s](const glm::mat4& m) { s.insert(s.end(), &m[0][0], &m[0][0] + 16); };
@@ -136,11 +136,12 @@ std::vector<double> RenderSignature(const vs::shared::VsRenderParams& p)
   auto addUint = [&s](const glm::uvec4& v) { s.insert(s.end(), { double(v.x), double(v.y), double(v.z), double(v.w) }); };
   addMat(p.invViewProj);
   addMat(p.worldToIndex);
-  for (const auto& v : { p.boxMin, p.boxMax, p.dims, p.tf, p.background, p.sampling2, p.cellSize, p.tracking })
+  for (const auto& v : { p.boxMin, p.boxMax, p.dims, p.tf, p.background, p.sampling2, p.cellSize, p.tracking, p.cropLo,
+         p.cropHi })
   {
     addVec(v);
   }
-  for (const auto& v : { p.viewport, p.sampling, p.grid, p.bricks })
+  for (const auto& v : { p.viewport, p.sampling, p.grid, p.bricks, p.crop })
   {
     addUint(v);
   }
@@ -360,19 +361,16 @@ std::vector<glm::dvec4> WorldPlanes(vtkPlaneCollection* planes, const vs::Volume
 
 namespace
 {
-// The volume's geometry with VTK's cropping subvolume applied to its index box.
+// The volume's geometry with VTK's cropping regions applied (vs::CropRegions).
 vs::VolumeGeometry CroppedGeometry(vtkVolumeMapper* mapper, const vs::VolumeGeometry& full)
 {
   if (!mapper->GetCropping())
   {
     return full;
   }
-  if (mapper->GetCroppingRegionFlags() != VTK_CROP_SUBVOLUME)
-  {
-    throw vs::InputError("only the cropping subvolume (CroppingRegionFlags = VTK_CROP_SUBVOLUME) is supported, got " +
-      vs::PropertyChecks::CroppingFlagsName(mapper->GetCroppingRegionFlags()));
-  }
-  return vs::CropGeometry(full, vtkImageData::SafeDownCast(mapper->GetInput()), mapper->GetCroppingRegionPlanes());
+  // Any region flags: a union of the 27 boxes; one box (the subvolume, VTK's default) crops the box only.
+  return vs::CropRegions(full, vtkImageData::SafeDownCast(mapper->GetInput()), mapper->GetCroppingRegionPlanes(),
+    mapper->GetCroppingRegionFlags());
 }
 }
 
@@ -406,6 +404,9 @@ void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, 
   }
   p.counts.x = uint32_t(planes.size());
   p.counts.y = I.Scene->Interpolation();
+  p.cropLo = glm::vec4(geometry.CropLo, 0.0f);
+  p.cropHi = glm::vec4(geometry.CropHi, 0.0f);
+  p.crop = glm::uvec4(geometry.CropFlags, 0u, 0u, 0u);
   if (IsProjection(this->BlendMode))
   {
     p.counts.z = uint32_t(this->BlendMode); // VS_BLEND_* are VTK's values
@@ -557,6 +558,9 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   auto b = I.Scene->Majorants().Bricks();
   p.bricks = glm::uvec4(b[0], b[1], b[2], uint32_t(planes.size()));
   p.tracking.y = float(I.Scene->Interpolation()); // nearest (VTK's default) or trilinear
+  p.cropLo = glm::vec4(geometry.CropLo, 0.0f);
+  p.cropHi = glm::vec4(geometry.CropHi, 0.0f);
+  p.crop = glm::uvec4(geometry.CropFlags, 0u, 0u, 0u);
   const glm::dmat3 m(geometry.IndexToWorld);
   const glm::dvec3 o(geometry.IndexToWorld[3]);
   for (size_t i = 0; i < planes.size(); ++i)

@@ -98,6 +98,8 @@ std::vector<double> VisibilityGridUpdater::Signature(const GridUpdateRequest& r)
   {
     s.insert(s.end(), { r.Geometry.BoxMin[i], r.Geometry.BoxMax[i], double(r.Geometry.Dims[i]) });
   }
+  s.insert(s.end(), { double(r.Geometry.CropFlags), r.Geometry.CropLo.x, r.Geometry.CropLo.y, r.Geometry.CropLo.z,
+                      r.Geometry.CropHi.x, r.Geometry.CropHi.y, r.Geometry.CropHi.z });
   return s;
 }
 

@@ -78,6 +78,7 @@ void main()
   if (pix.x >= W || pix.y >= H)
     return;
   uint idx = pix.y * W + pix.x;
+  vs_set_cropping(P.cropLo, P.cropHi, P.crop.x);
   VsRng rng = vs_rng_init(pix, P.viewport.z, P.viewport.w);
 
   vec2 ndc = (vec2(pix) + 0.5) / vec2(W, H) * 2.0 - 1.0;

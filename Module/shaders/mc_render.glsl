@@ -473,6 +473,7 @@ void main()
   gStrategy = P.sampling.x;
   gRefineDepth = P.tracking.x > 0.0 ? P.tracking.x : 32.0;
   gInterpolation = uint(P.tracking.y);
+  vs_set_cropping(P.cropLo, P.cropHi, P.crop.x);
   uint idx = pix.y * W + pix.x;
   float depth = uDepth[idx];
 

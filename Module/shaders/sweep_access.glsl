@@ -32,6 +32,7 @@ void vs_load_sweep_globals()
   gBrickSize = G.pool.y;
   gStep = G.pool.w;
 #else
+  vs_set_cropping(G.cropLo, G.cropHi, G.crop.x); /* in index space: the pooled volume is masked when built */
   gDims = ivec3(G.dims.xyz);
   gBricks = ivec3(G.bricks.xyz);
   gBrickSize = G.march.y;

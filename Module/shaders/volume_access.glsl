@@ -32,6 +32,28 @@ float vs_sample_scalar(vec3 p, ivec3 dims)
   return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
 }
 
+/* VTK's cropping regions (vsVolumeGeometry.h CropFlags), set by the includer's main() with
+ * vs_set_cropping; flags 0 (the default) = no regions. Points of hidden regions are empty space:
+ * vs_sample reads NaN there, which classifies to zero extinction and albedo. */
+vec3 gCropLo = vec3(0.0), gCropHi = vec3(0.0);
+uint gCropFlags = 0u;
+
+void vs_set_cropping(vec4 lo, vec4 hi, uint flags)
+{
+  gCropLo = lo.xyz;
+  gCropHi = hi.xyz;
+  gCropFlags = flags;
+}
+
+/* Whether index-space point p lies in a cropping region whose flag is off. */
+bool vs_cropped_out(vec3 p)
+{
+  if (gCropFlags == 0u)
+    return false;
+  uvec3 r = uvec3(greaterThanEqual(p, gCropLo)) + uvec3(greaterThanEqual(p, gCropHi));
+  return (gCropFlags & (1u << (r.x + 3u * r.y + 9u * r.z))) == 0u;
+}
+
 /* The nearest voxel's scalar at continuous index p (voxel i owns [i - 0.5, i + 0.5) per axis, as
  * VTK's nearest interpolation), clamped to the volume: one imageLoad. */
 float vs_sample_nearest(vec3 p, ivec3 dims)
@@ -41,9 +63,11 @@ float vs_sample_nearest(vec3 p, ivec3 dims)
 }
 
 /* The scalar at p under `interpolation` (interpolation.h: VS_INTERPOLATION_LINEAR or _NEAREST,
- * the vtkVolumeProperty's InterpolationType). */
+ * the vtkVolumeProperty's InterpolationType); NaN in a hidden cropping region. */
 float vs_sample(vec3 p, ivec3 dims, uint interpolation)
 {
+  if (vs_cropped_out(p))
+    return uintBitsToFloat(0x7fc00000u); /* NaN: empty space */
   return interpolation == VS_INTERPOLATION_NEAREST ? vs_sample_nearest(p, dims) : vs_sample_scalar(p, dims);
 }
 

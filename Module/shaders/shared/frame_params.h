@@ -27,6 +27,9 @@ struct VsFrameParams
   vec4 projection;   /* the projections' (VS_BLEND_MAXIMUM..ADDITIVE): x, y: the average's scalar range
                         (vtkVolumeMapper AverageIPScalarRange), z: the opacity unit distance (opacity
                         alpha = 1 - exp(-sigma_t z)), w: unused */
+  vec4 cropLo;       /* the cropping regions (vsVolumeGeometry.h): index-space planes, xyz */
+  vec4 cropHi;
+  uvec4 crop;        /* x: the regions' flags (0 = none: the box is all), y, z, w: unused */
 };
 
 /* Blend modes, VTK's vtkVolumeMapper::BlendModes values. Composite is emission-absorption; the

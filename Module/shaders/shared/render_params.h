@@ -35,6 +35,9 @@ struct VsRenderParams
   vec4 tracking;     /* x: optical depth of a majorant segment above which the trackers walk voxel
                         cells instead of the brick (0 = 32), see mc_render.glsl; y: the scalar's interpolation
                         (interpolation.h: 0 linear, 1 nearest); z, w: unused (0) */
+  vec4 cropLo;       /* the cropping regions (vsVolumeGeometry.h): index-space planes, xyz */
+  vec4 cropHi;
+  uvec4 crop;        /* x: the regions' flags (0 = none: the box is all), y, z, w: unused */
 };
 
 VS_NAMESPACE_END

@@ -46,6 +46,9 @@ struct VsSweepGlobals
                        w: march step over the pooled volume (world units) */
   uvec4 poolDims;   /* pooled texels per axis (xyz) */
   uvec4 poolBricks; /* pooled occupancy bricks per axis (xyz) */
+  vec4 cropLo;       /* the cropping regions (vsVolumeGeometry.h): index-space planes, xyz */
+  vec4 cropHi;
+  uvec4 crop;        /* x: the regions' flags (0 = none: the box is all), y, z, w: unused */
 };
 
 /* Distance along the light (world units) from the start plane to the centre plane of
