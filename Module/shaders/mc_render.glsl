@@ -185,6 +185,8 @@ float refine_majorant(vec3 o, vec3 d, float t, inout float tNext, float mu)
     else if (d[i] < -1e-20 && lo[i] > 0)
       e = min(e, (float(lo[i]) - p[i]) / d[i]);
   }
+  if (gInterpolation == VS_INTERPOLATION_NEAREST)
+    e = min(e, vs_nearest_midplane_exit(p, d, lo)); /* segments end where the nearest voxel changes */
   float hMax = min(tNext - t, max(e, hMin));
   vec4 c0 = vec4(imageLoad(uVolume, ivec3(lo.x, lo.y, lo.z)).r, imageLoad(uVolume, ivec3(hi.x, lo.y, lo.z)).r,
     imageLoad(uVolume, ivec3(lo.x, hi.y, lo.z)).r, imageLoad(uVolume, ivec3(hi.x, hi.y, lo.z)).r);

@@ -110,18 +110,48 @@ float vs_max_extinction(float s0, float s1, vec4 tf)
   return max(vs_tf_level_max(k, i, tf), vs_tf_level_max(k, j - (1 << k) + 1, tf));
 }
 
+/* Under nearest interpolation the cell walk's segments end where the nearest voxel changes: the
+ * distance along d from p to the next midplane (lo + 0.5) of the voxel cell lo ahead, 1e30 if none.
+ * A midplane within VS_NEAREST_TOLERANCE of p is behind it (p is on it: the previous segment ended
+ * there), so a segment never starts with a sliver across it. */
+const float VS_NEAREST_TOLERANCE = 1e-4; /* voxels: above the rounding of positions o + t d */
+
+float vs_nearest_midplane_exit(vec3 p, vec3 d, ivec3 lo)
+{
+  float e = 1e30;
+  for (int i = 0; i < 3; ++i)
+  {
+    float m = float(lo[i]) + 0.5;
+    if (d[i] > 1e-20 && p[i] < m - VS_NEAREST_TOLERANCE)
+      e = min(e, (m - p[i]) / d[i]);
+    else if (d[i] < -1e-20 && p[i] > m + VS_NEAREST_TOLERANCE)
+      e = min(e, (m - p[i]) / d[i]);
+  }
+  return e;
+}
+
 /* The largest extinction nearest-neighbour samples take on a segment inside the voxel cell whose
  * corners are c0 = (000, 100, 010, 110), c1 = (001, 101, 011, 111) and whose local coordinates
  * (in [0,1]^3) span the box [f0, f1]: a sample reads the corner it is nearest to, so only the
- * corners whose half of the cell the box reaches along every axis can be read, and the result is
- * the largest of their own classified extinctions (exactly what those samples compute; a NaN
- * corner classifies to 0 and leaves its neighbours' halves as they are). The halves are widened by
- * 1/64 voxel against the rounding of sample positions along the ray. */
+ * corners whose half of the cell the segment's interior reaches along every axis can be read, and
+ * the result is the largest of their own classified extinctions (exactly what those samples
+ * compute; a NaN corner classifies to 0 and leaves its neighbours' halves as they are). The walk
+ * ends segments on the midplanes (vs_nearest_midplane_exit), so a segment reaches a half when it
+ * extends more than VS_NEAREST_TOLERANCE into it; one that lies within the tolerance of a midplane
+ * reaches both halves. This keeps the majorant tight: a half the segment only touches by the
+ * rounding of its end would cost null collisions at its extinction along the whole segment (at an
+ * extinction of 1e9 per voxel, tens of thousands per segment; lavapipe ends loops of 65535
+ * iterations). A sample whose position rounds across a midplane (a few ulps) may read the voxel
+ * beyond it: delta tracking then accepts it, a bias at the resolution of float positions. */
 float vs_nearest_max_extinction(vec3 f0, vec3 f1, vec4 c0, vec4 c1, vec4 tf)
 {
-  const float slack = 1.0 / 64.0;
-  bvec3 low = lessThan(f0, vec3(0.5 + slack));
-  bvec3 high = greaterThanEqual(f1, vec3(0.5 - slack));
+  bvec3 low = lessThan(f0, vec3(0.5 - VS_NEAREST_TOLERANCE));
+  bvec3 high = greaterThan(f1, vec3(0.5 + VS_NEAREST_TOLERANCE));
+  for (int i = 0; i < 3; ++i)
+  {
+    if (!low[i] && !high[i])
+      low[i] = high[i] = true; /* within the tolerance of the midplane: either voxel */
+  }
   float m = 0.0;
   for (uint k = 0u; k < 8u; ++k)
   {
