@@ -40,6 +40,7 @@
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+#include "vtkWeakPointer.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -71,12 +72,98 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::vector<double> ImageSignature; // what the accumulated image was rendered for
   vtkSmartPointer<vtkImageData> Radiance;
   vtkSmartPointer<vtkImageData> VisibilityImage;
+  // One accumulator per renderer (two views of one volume): MC, MCGrid, Interactive, ImageSignature
+  // and Selector above are the current view's; the other views' wait here (SwitchView).
+  struct View
+  {
+    vtkWeakPointer<vtkRenderer> Renderer;
+    std::unique_ptr<vs::MonteCarloPass> MC, MCGrid, Interactive;
+    std::vector<double> ImageSignature;
+    vs::StrategySelector Selector;
+    uint64_t GridGeneration = 0; // the grid its selector knows
+  };
+  vtkWeakPointer<vtkRenderer> CurrentView;
+  bool HasCurrentView = false;
+  std::vector<View> OtherViews;
+  uint64_t GridGeneration() const { return this->Grid ? uint64_t(this->Grid->Generation()) : 0u; }
+  void SwitchView(vtkRenderer* ren);
+  bool ReleaseViewsOf(vtkWindow* win);
   std::string LastError;
   vs::PropertyChecks Checks; // the settings VisSweep ignores, warned once per change
   vtkMTimeType ErrorStamp = 0;        // the inputs' newest modification time when LastError was reported
   vtkMTimeType RenderStamp = 0;       // the same, for the Render() in progress
   uint32_t Frame = 0;
 };
+
+// Makes `ren`'s accumulator the current one: the current view's state goes to OtherViews, ren's
+// comes back from there (or starts empty). Views whose renderer was deleted are forgotten.
+void vtkVisibilitySweepVolumeMapper::Internals::SwitchView(vtkRenderer* ren)
+{
+  if (this->HasCurrentView && this->CurrentView.GetPointer() == ren)
+  {
+    return;
+  }
+  if (this->HasCurrentView && this->CurrentView)
+  {
+    View v;
+    v.Renderer = this->CurrentView;
+    v.MC = std::move(this->MC);
+    v.MCGrid = std::move(this->MCGrid);
+    v.Interactive = std::move(this->Interactive);
+    v.ImageSignature = std::move(this->ImageSignature);
+    v.Selector = this->Selector;
+    v.GridGeneration = this->GridGeneration();
+    this->OtherViews.push_back(std::move(v));
+  }
+  this->OtherViews.erase(std::remove_if(this->OtherViews.begin(), this->OtherViews.end(),
+                           [](const View& v) { return !v.Renderer; }),
+    this->OtherViews.end());
+  this->MC.reset();
+  this->MCGrid.reset();
+  this->Interactive.reset();
+  this->ImageSignature.clear();
+  this->Selector = vs::StrategySelector();
+  for (auto it = this->OtherViews.begin(); it != this->OtherViews.end(); ++it)
+  {
+    if (it->Renderer.GetPointer() == ren)
+    {
+      this->MC = std::move(it->MC);
+      this->MCGrid = std::move(it->MCGrid);
+      this->Interactive = std::move(it->Interactive);
+      this->ImageSignature = std::move(it->ImageSignature);
+      this->Selector = it->Selector;
+      if (it->GridGeneration != this->GridGeneration())
+      {
+        this->Selector.ResetGrid(); // a new grid arrived while another view rendered
+      }
+      this->OtherViews.erase(it);
+      break;
+    }
+  }
+  this->CurrentView = ren;
+  this->HasCurrentView = true;
+}
+
+// Forgets the views shown in `win` (and those whose renderer is gone); returns whether views in
+// other windows remain, which keep the shared device state (volume, grid, environment).
+bool vtkVisibilitySweepVolumeMapper::Internals::ReleaseViewsOf(vtkWindow* win)
+{
+  auto inWindow = [win](vtkRenderer* r) { return !r || static_cast<vtkWindow*>(r->GetRenderWindow()) == win; };
+  this->OtherViews.erase(std::remove_if(this->OtherViews.begin(), this->OtherViews.end(),
+                           [&](const View& v) { return inWindow(v.Renderer); }),
+    this->OtherViews.end());
+  if (this->HasCurrentView && inWindow(this->CurrentView))
+  {
+    this->MC.reset();
+    this->MCGrid.reset();
+    this->Interactive.reset();
+    this->ImageSignature.clear();
+    this->Selector = vs::StrategySelector();
+    this->CurrentView = nullptr;
+    this->HasCurrentView = false;
+  }
+  return this->HasCurrentView || !this->OtherViews.empty();
+}
 
 namespace
 {
@@ -206,8 +293,12 @@ double* vtkVisibilitySweepVolumeMapper::GetBounds()
   return b;
 }
 
-void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow*)
+void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
+  // The device state is no window's (Vulkan), the accumulators are per renderer: a window that
+  // lets go of the prop takes its views' accumulators; while views in other windows remain, the
+  // volume, the grid and the environment stay (one volume shown in two windows would otherwise
+  // start over whenever either window initialises or drops a renderer).
   // VTK calls this when the window or the renderer lets go of the prop: free the device memory
   // (passes first, they hold views of the volume and the grid) and forget what it held, so the
   // next Render() uploads and sweeps again as a first render does. What a user may still ask
@@ -215,6 +306,10 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow*)
   // without variance; AccumulatedSamples still counts its samples) and the visibility grid
   // (downloaded now, every direction, if there is one).
   Internals& I = *this->Impl;
+  if (I.ReleaseViewsOf(win))
+  {
+    return;
+  }
   if (I.Grid && I.Grid->Grid() && I.Scene)
   {
     this->GetVisibilityGrid(); // completes a grid still filling in, then downloads it
@@ -225,6 +320,9 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow*)
   I.Interactive.reset();
   I.MC.reset();
   I.MCGrid.reset();
+  I.OtherViews.clear();
+  I.CurrentView = nullptr;
+  I.HasCurrentView = false;
   I.EA.reset();
   I.Scene.reset();
   I.EnvironmentTime = 0;
@@ -429,6 +527,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
 {
   Internals& I = *this->Impl;
   this->LastRenderComplete = false;
+  I.SwitchView(ren); // one accumulator per renderer
   const vs::VolumeGeometry geometry = CroppedGeometry(this, I.Scene->Geometry());
   const bool croppedAway = glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax));
 
@@ -1052,6 +1151,8 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SamplesPerFrame: " << this->SamplesPerFrame << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
   os << indent << "AccumulatedSamples: " << this->AccumulatedSamples << "\n";
+  os << indent << "Views: " << (this->Impl->OtherViews.size() + (this->Impl->CurrentView ? 1 : 0))
+     << " (renderers with their own accumulator)\n";
   os << indent << "VisibilityEpsilon: " << this->VisibilityEpsilon << "\n";
   os << indent << "DirectionResolution: " << this->DirectionResolution << "\n";
   os << indent << "VoxelsPerCell: " << this->VoxelsPerCell << "\n";

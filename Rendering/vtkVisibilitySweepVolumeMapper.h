@@ -201,7 +201,9 @@ public:
   vtkGetMacro(InteractiveSubsampling, int);
   ///@}
 
-  /** Samples per pixel accumulated so far (Monte Carlo). */
+  /** Samples per pixel accumulated so far (Monte Carlo) in the view rendered last. Each renderer
+   *  showing the volume (two views of it, in one window or two) has its own accumulator, so every
+   *  view converges; the visibility grid is shared. */
   vtkGetMacro(AccumulatedSamples, int);
   /** True when MaximumSamples are reached: further Render() calls only redraw. Also true after an
    *  emission-absorption render or a projection (blend modes MIP, MinIP, average, additive), whose
@@ -211,7 +213,7 @@ public:
     return this->LastRenderComplete || this->AccumulatedSamples >= this->MaximumSamples;
   }
 
-  /** The linear HDR radiance of the last render as image data (width x height, point array
+  /** The linear HDR radiance of the last render (of the view rendered last) as image data (width x height, point array
    *  "Radiance" with 3 floats and "Alpha"), rows bottom-up; nullptr before the first render.
    *  With `variance`, also "Variance" (per-sample variance of each channel, 4 components, double). */
   vtkImageData* GetRadiance(bool variance = false);
@@ -343,8 +345,10 @@ public:
    *  modes, depth peeling for volumes) are warned about once per change;
    *  an error is logged once per change too (GetLastError() holds it on every failed render). */
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
-  /** Frees the device resources; the next Render() re-creates them and accumulates anew. The last
-   *  GetRadiance() (no variance) and GetVisibilityGrid() stay on the host, e.g. after the window goes. */
+  /** Forgets the accumulators of the views (renderers) in this window; when no view in another
+   *  window remains, frees the device resources too: the next Render() re-creates them and
+   *  accumulates anew. The last GetRadiance() (no variance) and GetVisibilityGrid() stay on the
+   *  host, e.g. after the window goes. */
   void ReleaseGraphicsResources(vtkWindow*) override;
 
   /** Device seconds of the last render pass (0 if the device has no timestamps). */
