@@ -1,6 +1,7 @@
 #include "vsVolumeInput.h"
 #include "shared/vs_prelude.h"
 #include "vsError.h"
+#include "vsFloatRange.h"
 
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
@@ -162,7 +163,8 @@ std::string CheckProperty(vtkVolumeProperty* property)
   {
     return "the scalar opacity unit distance must be positive";
   }
-  return std::string();
+  // Transfer-function points and the unit distance must fit the device's float (issue 13, item 5).
+  return FloatRange::CheckProperty(property);
 }
 
 VolumeGeometry ComputeGeometry(vtkImageData* image, vtkMatrix4x4* volumeMatrix)

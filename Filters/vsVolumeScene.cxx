@@ -11,6 +11,9 @@
 #include "vtkImageData.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
+#include <limits>
+
 namespace vs
 {
 VolumeScene::VolumeScene(std::shared_ptr<Context> context)
@@ -19,6 +22,19 @@ VolumeScene::VolumeScene(std::shared_ptr<Context> context)
 }
 
 VolumeScene::~VolumeScene() = default;
+
+float VolumeScene::MaxResolvedExtinction(const VolumeGeometry& geometry)
+{
+  double largestIndex = 1.0, largestEdge = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    largestIndex = std::max(largestIndex, double(geometry.Dims[i]));
+    largestEdge = std::max(largestEdge, geometry.Spacing(i));
+  }
+  const double resolution = double(std::numeric_limits<float>::epsilon()) * largestIndex * largestEdge;
+  const double cap = resolution > 0.0 ? 1.0 / (kResolvedFreePaths * resolution) : 0.0;
+  return float(std::min(cap, double(TransferFunctionSamples::kMaxExtinction)));
+}
 
 VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scalars,
   vtkVolumeProperty* property, vtkMatrix4x4* volumeMatrix, double densityScale)
@@ -43,8 +59,9 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
     geometry.IndexToWorld != this->Geometry_.IndexToWorld;
   this->Geometry_ = geometry;
   // Before the data check: new data drops the table (it is resampled over the new range).
-  changes.TransferFunction =
-    !this->TF_ || property->GetMTime() > this->PropertyTime_ || densityScale != this->DensityScale_;
+  const float cap = MaxResolvedExtinction(geometry);
+  changes.TransferFunction = !this->TF_ || property->GetMTime() > this->PropertyTime_ ||
+    densityScale != this->DensityScale_ || cap != this->ExtinctionCap_;
 
   const vtkMTimeType dataTime = std::max(image->GetMTime(), scalars->GetMTime());
   if (!this->Volume_ || scalars != this->Scalars_ || dataTime > this->DataTime_ ||
@@ -70,6 +87,10 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
   {
     auto range = this->Volume_->Range();
     TransferFunctionSamples samples = SampleTransferFunction(property, range[0], range[1], densityScale);
+    for (size_t i = 3; i < samples.Entries.size(); i += 4)
+    {
+      samples.Entries[i] = std::min(samples.Entries[i], cap);
+    }
     // Compare with the previous table: only the columns that changed need work downstream.
     const bool comparable = this->TF_ && !changes.Data &&
       this->TF_->Samples().ScalarMin == samples.ScalarMin && this->TF_->Samples().ScalarMax == samples.ScalarMax &&
@@ -100,6 +121,7 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
     }
     this->PropertyTime_ = property->GetMTime();
     this->DensityScale_ = densityScale;
+    this->ExtinctionCap_ = cap;
   }
   // Nearest or trilinear reconstruction of the scalar: a different extinction between voxels
   // (the same table and majorants: a brick's majorant bounds both), so the visibility changes.

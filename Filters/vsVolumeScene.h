@@ -65,6 +65,18 @@ public:
   const MajorantGrid& Majorants() const { return *this->Majorants_; }
   const VolumeGeometry& Geometry() const { return this->Geometry_; }
 
+  /** The largest extinction (per world unit) the renderer resolves in `geometry` (issue 13, item 4):
+   *  the device holds positions along a ray to about FLT_EPSILON x the largest index x the largest
+   *  voxel edge; a medium whose mean free path is shorter than kResolvedFreePaths of those steps
+   *  scatters at points float rounds by more than the depth light penetrates, so a shadow ray
+   *  starts inside the opaque medium half the time (at 1e9 the image was several percent dark,
+   *  and at 1e20 the ball vanished). The table clamps extinction to this bound: the medium is
+   *  opaque at it (a mean free path of 1/32 of that resolution), and so is its image.
+   *  At most TransferFunctionSamples::kMaxExtinction. */
+  static float MaxResolvedExtinction(const VolumeGeometry& geometry);
+  static constexpr double kResolvedFreePaths = 32.0;
+  float ExtinctionCap() const { return this->ExtinctionCap_; }
+
   /** Counters of the work done (for tests of the skip rules). */
   int Uploads() const { return this->Uploads_; }
 
@@ -83,6 +95,7 @@ private:
   vtkDataArray* Scalars_ = nullptr;
   vtkMTimeType PropertyTime_ = 0;
   double DensityScale_ = -1.0;
+  float ExtinctionCap_ = -1.0f;
   int Uploads_ = 0, TableBuilds_ = 0;
   uint32_t Interpolation_ = 0;
 };

@@ -19,7 +19,9 @@
  * A missing, unreadable or corrupt file, or one larger than MaximumNumberOfPixels, is
  * an error (vtkErrorMacro naming the file and the reason) and leaves the output empty. Source pixels with a NaN,
  * infinite or negative channel have those channels replaced by 0, with one
- * warning giving the count.
+ * warning giving the count; negatives of at most 1% of the map's mean luminance (the
+ * ringing of lossy compression that real HDRIs, the shipped ones too, carry) are zeroed
+ * without a warning (vs::EnvironmentMap::RingingTexels counts them).
  *
  * @code{.py}
  * import vissweep

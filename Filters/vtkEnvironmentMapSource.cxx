@@ -1,5 +1,7 @@
 #include "vtkEnvironmentMapSource.h"
 
+#include "vsFloatRange.h"
+
 #include "vsEnvironmentMap.h"
 
 #include "vtkObjectFactory.h"
@@ -49,10 +51,15 @@ std::shared_ptr<vs::EnvironmentMap> vtkEnvironmentMapSource::ComputeMap()
     switch (this->Type)
     {
       case SunDisk:
-        map = vs::EnvironmentMap::SunDisk(this->OctahedralSize,
-          glm::vec3(float(this->SunDirection[0]), float(this->SunDirection[1]), float(this->SunDirection[2])),
+      {
+        // Normalised in double first (issue 13, item 9): a direction of (1e300, 0, 0) was an
+        // infinity in float, refused as "must be a non-zero vector"; it is +X.
+        double d[3] = { this->SunDirection[0], this->SunDirection[1], this->SunDirection[2] };
+        vs::FloatRange::Normalize(this->SunDirection, d);
+        map = vs::EnvironmentMap::SunDisk(this->OctahedralSize, glm::vec3(float(d[0]), float(d[1]), float(d[2])),
           this->SunAngularRadius, rgb(this->SunRadiance), rgb(this->SkyColor));
         break;
+      }
       case TwoToneSky:
         map = vs::EnvironmentMap::TwoToneSky(this->OctahedralSize, rgb(this->UpperColor), rgb(this->LowerColor));
         break;

@@ -9,6 +9,7 @@
 #include "vsMajorantGrid.h"
 #include "vsMonteCarloPass.h"
 #include "vsPropertyChecks.h"
+#include "vsRenderTargetLimits.h"
 #include "vsStrategySelector.h"
 #include "vsVisibilityGrid.h"
 #include "vsVisibilityGridUpdater.h"
@@ -16,6 +17,7 @@
 #include "shared/update_order.h"
 #include "vsVisibilityImage.h"
 #include "vsError.h"
+#include "vsFloatRange.h"
 #include "vsTransferFunctionTable.h"
 #include "vsVolumeInput.h"
 #include "vsVolumeScene.h"
@@ -47,6 +49,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 
 vtkStandardNewMacro(vtkVisibilitySweepVolumeMapper);
 
@@ -373,6 +376,12 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     {
       I.Context = vs::Context::Default();
     }
+    // The image size before anything is uploaded, allocated or read back (issue 13, item 7).
+    const vs::Viewport port = vs::WindowCompositor::GetViewport(ren);
+    if (port.Width > 0 && port.Height > 0)
+    {
+      vs::RenderTargetLimits::Check(*I.Context, uint32_t(port.Width), uint32_t(port.Height));
+    }
     if (!I.Scene)
     {
       I.Scene = std::make_unique<vs::VolumeScene>(I.Context);
@@ -425,14 +434,37 @@ struct View
   glm::mat4 InvViewProj;
 };
 
+// The device gets the camera as a float matrix: a camera value beyond float's range (issue 13,
+// item 5) is refused naming it, and so is a matrix whose float form is not finite.
 View MakeView(vtkRenderer* ren)
 {
   View v;
   v.Port = vs::WindowCompositor::GetViewport(ren);
+  vtkCamera* camera = ren->GetActiveCamera();
+  const std::string problem = vs::FloatRange::CheckCamera(camera);
+  if (!problem.empty())
+  {
+    throw vs::InputError(problem);
+  }
   double aspect = v.Port.Height > 0 ? double(v.Port.Width) / double(v.Port.Height) : 1.0;
-  v.InvViewProj =
-    glm::mat4(glm::inverse(ToGlm(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1))));
+  v.InvViewProj = glm::mat4(glm::inverse(ToGlm(camera->GetCompositeProjectionTransformMatrix(aspect, -1, 1))));
+  const float* m = glm::value_ptr(v.InvViewProj);
+  if (!std::all_of(m, m + 16, [](float x) { return std::isfinite(x); }))
+  {
+    throw vs::InputError("the camera's inverse view-projection matrix does not fit in float (check its position, "
+                         "focal point, clipping range and parallel scale)");
+  }
   return v;
+}
+
+// Before the window's depth is read back and before any pass allocates: the viewport must fit the
+// device's limits and the host's memory (issue 13, item 7).
+void CheckViewport(const vs::Context& context, const vs::Viewport& port)
+{
+  if (port.Width > 0 && port.Height > 0)
+  {
+    vs::RenderTargetLimits::Check(context, uint32_t(port.Width), uint32_t(port.Height));
+  }
 }
 
 // World clipping planes (n, w): kept where dot(n, x) + w >= 0, those that cut the (cropped) box
@@ -448,10 +480,32 @@ std::vector<glm::dvec4> WorldPlanes(vtkPlaneCollection* planes, const vs::Volume
   vtkCollectionSimpleIterator it;
   for (planes->InitTraversal(it); (plane = planes->GetNextPlane(it));)
   {
-    double n[3], o[3];
-    plane->GetNormal(n);
+    // The normal is normalised in double (a normal of 1e300 was an infinity in float, and the
+    // plane was ignored); the origin must fit a float, and so must the plane's offset.
+    double normal[3], n[3], o[3];
+    plane->GetNormal(normal);
     plane->GetOrigin(o);
-    out.emplace_back(n[0], n[1], n[2], -(n[0] * o[0] + n[1] * o[1] + n[2] * o[2]));
+    const std::string index = std::to_string(out.size());
+    if (!vs::FloatRange::Normalize(normal, n))
+    {
+      throw vs::InputError("clipping plane " + index + " has a zero or non-finite normal");
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      const std::string problem = vs::FloatRange::Check(o[i]);
+      if (!problem.empty())
+      {
+        std::ostringstream os;
+        os << "clipping plane " << index << "'s origin (" << "xyz"[i] << " = " << o[i] << ") is " << problem;
+        throw vs::InputError(os.str());
+      }
+    }
+    const double w = -(n[0] * o[0] + n[1] * o[1] + n[2] * o[2]);
+    if (!vs::FloatRange::Check(w).empty())
+    {
+      throw vs::InputError("clipping plane " + index + "'s offset from the origin does not fit in float");
+    }
+    out.emplace_back(n[0], n[1], n[2], w);
   }
   return vs::EffectiveClipPlanes(out, geometry);
 }
@@ -482,6 +536,7 @@ void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, 
   {
     return;
   }
+  CheckViewport(*I.Context, vp);
   std::vector<float> depth = vs::WindowCompositor::ReadDepth(ren, vp);
   vs::shared::VsFrameParams p{};
   p.invViewProj = view.InvViewProj;
@@ -530,6 +585,10 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   I.SwitchView(ren); // one accumulator per renderer
   const vs::VolumeGeometry geometry = CroppedGeometry(this, I.Scene->Geometry());
   const bool croppedAway = glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax));
+  // The camera and the image size first: nothing is uploaded, swept or read back for a view
+  // that cannot render.
+  View view = MakeView(ren);
+  CheckViewport(*I.Context, view.Port);
 
   // The environment: port 1, or a constant white sky.
   vtkImageData* envImage = nullptr;
@@ -594,7 +653,6 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   this->UpdateVisibilityGrid(needGrid, autoStrategy);
 
   // Parameters of this frame.
-  View view = MakeView(ren);
   vtkRenderWindow* win = ren->GetRenderWindow();
   const bool interactive = this->InteractiveUpdateRate > 0.0 && win &&
     win->GetDesiredUpdateRate() >= this->InteractiveUpdateRate;
@@ -666,6 +724,11 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   {
     glm::dvec3 n(planes[i]);
     p.clipPlanes[i] = glm::vec4(glm::vec3(glm::transpose(m) * n), float(glm::dot(n, o) + planes[i].w));
+    const glm::vec4& c = p.clipPlanes[i];
+    if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w)))
+    {
+      throw vs::InputError("clipping plane " + std::to_string(i) + " does not fit in float in the volume's index space");
+    }
   }
 
   vs::MonteCarloPass* pass = nullptr;
@@ -1111,6 +1174,47 @@ int vtkVisibilitySweepVolumeMapper::FillInputPortInformation(int port, vtkInform
   return this->Superclass::FillInputPortInformation(port, info);
 }
 
+// The device computes in float: a finite double beyond float's range turned into an infinity
+// there (an intensity of 1e39 gave an all-NaN image, a density scale of 1e39 an infinite
+// extinction), so such values are refused and the setting kept. Below the range (negative)
+// they are clamped to 0 as vtkSetClampMacro did.
+bool vtkVisibilitySweepVolumeMapper::SetFloatSetting(const char* name, double value, double& setting)
+{
+  const std::string problem = vs::FloatRange::Check(value);
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< name << " " << value << " is refused: " << problem << "; keeping " << setting);
+    return false;
+  }
+  value = std::max(value, 0.0);
+  if (setting != value)
+  {
+    setting = value;
+    this->Modified();
+  }
+  return true;
+}
+
+void vtkVisibilitySweepVolumeMapper::SetEnvironmentIntensity(double intensity)
+{
+  this->SetFloatSetting("EnvironmentIntensity", intensity, this->EnvironmentIntensity);
+}
+
+void vtkVisibilitySweepVolumeMapper::SetExposure(double exposure)
+{
+  this->SetFloatSetting("Exposure", exposure, this->Exposure);
+}
+
+void vtkVisibilitySweepVolumeMapper::SetSampleDistance(double distance)
+{
+  this->SetFloatSetting("SampleDistance", distance, this->SampleDistance);
+}
+
+void vtkVisibilitySweepVolumeMapper::SetDensityScale(double scale)
+{
+  this->SetFloatSetting("DensityScale", scale, this->DensityScale);
+}
+
 void vtkVisibilitySweepVolumeMapper::SetDirectionResolution(int resolution)
 {
   if (resolution != 2 && resolution != 4 && resolution != 8 && resolution != 16)
@@ -1159,6 +1263,11 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "KernelResolution: " << this->KernelResolution << "\n";
   os << indent << "Filtering: " << (this->Filtering ? "On" : "Off") << "\n";
   os << indent << "FilterAngleFraction: " << this->FilterAngleFraction << "\n";
+  // Issue 13, item 9: without an environment the mapper lights with white; say so.
+  os << indent << "Environment: "
+     << (this->GetNumberOfInputConnections(1) > 0 ? "input port 1"
+                                                  : "none connected: a constant white sky of radiance 1 (the default)")
+     << "\n";
   os << indent << "EnvironmentIntensity: " << this->EnvironmentIntensity << "\n";
   os << indent << "EnvironmentVisible: " << (this->EnvironmentVisible ? "On" : "Off") << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";

@@ -168,8 +168,10 @@ public:
   ///@}
 
   ///@{
-  /** Scales the environment's radiance. Default 1. */
-  vtkSetClampMacro(EnvironmentIntensity, double, 0.0, VTK_DOUBLE_MAX);
+  /** Scales the environment's radiance. Default 1. Negative values are clamped to 0; values the
+   *  device's float cannot hold (above 3.40282e+38, or NaN/Inf) are refused with an error and the
+   *  setting is kept (the same for Exposure, DensityScale and SampleDistance). */
+  virtual void SetEnvironmentIntensity(double intensity);
   vtkGetMacro(EnvironmentIntensity, double);
   ///@}
 
@@ -184,7 +186,7 @@ public:
   ///@{
   /** Display: exposure (a multiplier on radiance, default 1) and the filmic tone curve (default on;
    *  off = clamp). The radiance itself (GetRadiance) is never tone mapped. Output is sRGB. */
-  vtkSetClampMacro(Exposure, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetExposure(double exposure);
   vtkGetMacro(Exposure, double);
   vtkSetMacro(ToneMapping, bool);
   vtkGetMacro(ToneMapping, bool);
@@ -323,13 +325,13 @@ public:
   /** Ray-marching step of the EmissionAbsorption mode in world units; 0 (default) = half the
    *  smallest voxel edge. The MonteCarlo mode does not use it: delta and ratio tracking sample
    *  the exact free-flight distances and transmittance, so no step size enters the estimate. */
-  vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetSampleDistance(double distance);
   vtkGetMacro(SampleDistance, double);
   ///@}
 
   ///@{
   /** Multiplies the extinction of the transfer function. Default 1. */
-  vtkSetClampMacro(DensityScale, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetDensityScale(double scale);
   vtkGetMacro(DensityScale, double);
   ///@}
 
@@ -434,6 +436,7 @@ private:
   void operator=(const vtkVisibilitySweepVolumeMapper&) = delete;
 
   void ReportError(const std::string& message);
+  bool SetFloatSetting(const char* name, double value, double& setting);
   void RenderAndCheck(vtkRenderer* ren, vtkVolume* vol);
   void RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol);
   void RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol);

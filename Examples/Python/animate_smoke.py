@@ -55,6 +55,8 @@ def smoke_reader(folder):
 def read_step(reader, step):
     """Time step `step` as its own vtkImageData (a new data object: the mapper uploads it)."""
     reader.UpdateTimeStep(float(step))
+    if reader.GetOutput().GetNumberOfPoints() == 0:  # the reader reported why (vtkErrorMacro)
+        raise SystemExit(f"cannot read time step {step} of the smoke sequence")
     image = vtk.vtkImageData()
     image.ShallowCopy(reader.GetOutput())
     return image

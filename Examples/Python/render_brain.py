@@ -51,11 +51,14 @@ def main():
     t = time.perf_counter()
     reader = vtk.vtkNIFTIImageReader()
     reader.SetFileName(args.volume)
-    reader.Update()
-    print(f"read {args.volume}: {reader.GetOutput().GetDimensions()} in {time.perf_counter() - t:.2f} s")
+    try:
+        image = vissweep.read_checked(reader)  # a truncated or corrupt file is an error, not a partial image
+    except RuntimeError as e:
+        raise SystemExit(f"cannot read the volume: {e}")
+    print(f"read {args.volume}: {image.GetDimensions()} in {time.perf_counter() - t:.2f} s")
 
     mapper = vissweep.vtkVisibilitySweepVolumeMapper()
-    mapper.SetInputConnection(reader.GetOutputPort())
+    mapper.SetInputData(image)
     if args.emission_absorption:
         mapper.SetRenderModeToEmissionAbsorption()
     else:

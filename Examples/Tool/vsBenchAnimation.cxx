@@ -228,6 +228,7 @@ void AddBenchAnimation(CLI::App& bench)
   cmd->add_option("scene", o->SceneFile, "a scene with a volume 'files' sequence")->required();
   cmd->add_option("--frames", o->Frames, "time steps A:B (default: all)");
   cmd->add_option("--budget-per-frame", o->Budget, "seconds per frame, update + render (default 2)")
+    ->check(FiniteNumber())
     ->check(CLI::PositiveNumber);
   cmd->add_option("--reference-spp", o->ReferenceSpp, "samples per pixel of the per-frame references (default 1024)")
     ->check(CLI::Range(1, 1 << 24));

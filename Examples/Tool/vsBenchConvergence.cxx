@@ -439,7 +439,9 @@ void AddBenchConvergence(CLI::App& bench)
   cmd->add_option("--reference-strategy", o->ReferenceStrategy, "strategy of a rendered reference");
   cmd->add_option("--strategies", o->Strategies, "strategies to compare (default: all six)")->delimiter(',');
   cmd->add_option("--budgets", o->Budgets, "wall-clock budgets in seconds, sweeps included (default 1,2,4,8,16)")
-    ->delimiter(',');
+    ->delimiter(',')
+    ->check(FiniteNumber())
+    ->check(CLI::PositiveNumber);
   cmd->add_option("--spp-list", o->SppList, "equal-spp mode: these samples per pixel instead of time budgets")
     ->delimiter(',');
   cmd->add_option("--repeats", o->Repeats, "runs per strategy with different seeds")->check(CLI::Range(1, 100));

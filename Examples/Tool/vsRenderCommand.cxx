@@ -3,8 +3,12 @@
 #include "vsImageOutput.h"
 #include "vsPendingFile.h"
 #include "vsRenderFrames.h"
+#include "vsRenderTargetLimits.h"
+#include "vsToolCommand.h"
 #include "vsToolVolume.h"
 #include "vsContext.h"
+#include "vsDeviceVolume.h"
+#include "vsError.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
@@ -31,12 +35,14 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -409,7 +415,7 @@ vtkSmartPointer<vtkAlgorithm> MakeEnvironment(const Scene& scene)
         break;
       case Kind::Sun:
         source->SetTypeToSunDisk();
-        source->SetSunDirection(e.SunDirection.data());
+        source->SetSunDirection(Normalized(e.SunDirection).data()); // (1e300, 0, 0) is +X, not inf
         source->SetSunAngularRadius(e.SunRadiusDeg);
         source->SetSunRadiance(e.SunRadiance.data());
         source->SetSkyColor(e.SunSky.data());
@@ -504,18 +510,47 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   {
     vtkNew<vtkPlane> plane; // VTK keeps the half-space the normal points into
     plane->SetOrigin(p.Origin.data());
-    plane->SetNormal(p.Normal.data());
+    plane->SetNormal(Normalized(p.Normal).data()); // normalised in double: a normal of 1e300 is no infinity
     mapper->AddClippingPlane(plane);
   }
+}
+
+namespace
+{
+// A volume's dimensions against the device's limits (the volume image) and the host's memory,
+// before the reader allocates anything (issue 13, item 7).
+std::string VolumeFits(const std::array<int, 3>& dims)
+{
+  try
+  {
+    vs::DeviceVolume::CheckFits(*vs::Context::Default(), { uint32_t(dims[0]), uint32_t(dims[1]), uint32_t(dims[2]) });
+  }
+  catch (const vs::Error& e)
+  {
+    return e.what();
+  }
+  // The reader's values (up to 8 bytes a voxel), their float copy and the upload's staging.
+  const uint64_t voxels = uint64_t(dims[0]) * uint64_t(dims[1]) * uint64_t(dims[2]);
+  const uint64_t host = voxels * 16, memory = vs::RenderTargetLimits::HostMemoryBytes();
+  if (memory && host > memory / 2)
+  {
+    return "reading it needs about " + std::to_string(host >> 20) + " MiB of host memory (16 bytes a voxel), more "
+      "than half of this host's " + std::to_string(memory >> 20) + " MiB";
+  }
+  return std::string();
+}
 }
 
 SceneObjects BuildScene(const Scene& scene)
 {
   SceneObjects o;
+  // The image size against the device's limits and the host's memory before anything is read or
+  // allocated (issue 13, item 7): a 16384 x 16384 window alone is gigabytes of host memory.
+  vs::RenderTargetLimits::Check(*vs::Context::Default(), uint32_t(scene.Render.Width), uint32_t(scene.Render.Height));
   try
   {
     o.Image = scene.Volume.Files.empty()
-      ? ReadVolume(scene.Volume.File, scene.Volume.Grid)
+      ? ReadVolume(scene.Volume.File, scene.Volume.Grid, vtkIdType(1) << 31, VolumeFits)
       : ReadVolumeSequence(scene.Volume.Files, scene.Volume.Grid, scene.Volume.TimeStep);
   }
   catch (const std::exception& e)
@@ -547,7 +582,7 @@ SceneObjects BuildScene(const Scene& scene)
   vtkCamera* camera = o.Renderer->GetActiveCamera();
   camera->SetPosition(scene.Camera.Position.data());
   camera->SetFocalPoint(scene.Camera.FocalPoint.data());
-  camera->SetViewUp(scene.Camera.ViewUp.data());
+  camera->SetViewUp(Normalized(scene.Camera.ViewUp).data());
   camera->SetViewAngle(scene.Camera.ViewAngle);
   if (scene.Camera.ParallelScale)
   {
@@ -584,12 +619,15 @@ void AddRender(CLI::App& app)
   cmd->add_option("--height", o->Height, "image height (overrides the scene)")->check(CLI::Range(1, 16384));
   auto* spp = cmd->add_option("--spp", o->Spp, "samples per pixel (overrides the scene)")->check(CLI::Range(1, 1 << 30));
   auto* budget = cmd->add_option("--time-budget", o->TimeBudget, "render for this many seconds instead of a fixed spp")
+                   ->check(FiniteNumber())
                    ->check(CLI::PositiveNumber);
   spp->excludes(budget);
   cmd->add_option("--strategy", o->Strategy,
     "auto (the default), uniform, environment, visibility, combined or two-step, or the API's spelling (TwoStep) "
     "(overrides the scene)");
-  cmd->add_option("--seed", o->Seed, "random seed (overrides the scene)")->check(CLI::NonNegativeNumber);
+  // CLI::NonNegativeNumber printed its bound as a 309-digit double ("not in range 0.000000 to 17976...").
+  cmd->add_option("--seed", o->Seed, "random seed, 0 to 2147483647 (overrides the scene)")
+    ->check(CLI::Range(0, std::numeric_limits<int>::max()));
   cmd->add_option("--samples-per-frame", o->SamplesPerFrame, "samples per pixel added by each progressive frame")
     ->check(CLI::Range(1, 1 << 16));
   cmd->add_option("--json", o->Json, "write the statistics as JSON to this file ('-' = stdout)");

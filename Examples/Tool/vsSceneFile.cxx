@@ -90,6 +90,42 @@ double Number(const json& v, const std::string& key)
   return d;
 }
 
+// The renderer computes in float: a finite double beyond float's range became an infinity or a
+// zero on the device (issue 13, item 5), so such values are refused naming the key and the limit.
+constexpr double kFloatMax = double(std::numeric_limits<float>::max());
+constexpr double kFloatMinNormal = double(std::numeric_limits<float>::min());
+
+double FitsFloat(double d, const std::string& key)
+{
+  if (!(std::abs(d) <= kFloatMax))
+  {
+    Fail(key, Num(d) + " is outside the range of float, which the renderer computes in (magnitude at most " +
+        Num(kFloatMax) + ")");
+  }
+  return d;
+}
+
+double FloatNumber(const json& v, const std::string& key)
+{
+  return FitsFloat(Number(v, key), key);
+}
+
+// A positive length or scale whose float must be neither zero, denormal nor infinite.
+double PositiveFloat(const json& v, const std::string& key, const std::string& what)
+{
+  const double d = Number(v, key);
+  if (!(d > 0.0))
+  {
+    Fail(key, what + " must be positive, got " + Num(d));
+  }
+  if (!(d >= kFloatMinNormal && d <= kFloatMax))
+  {
+    Fail(key, what + " " + Num(d) + " is outside the range of float, which the renderer computes in (between " +
+        Num(kFloatMinNormal) + " and " + Num(kFloatMax) + ")");
+  }
+  return d;
+}
+
 double NumberIn(const json& v, const std::string& key, double lo, double hi, const std::string& what)
 {
   const double d = Number(v, key);
@@ -192,8 +228,20 @@ Vec3 Color3(const json& v, const std::string& key, const std::string& what)
     {
       Fail(At(key, i), what + " must not be negative, got " + Num(c[i]));
     }
+    FitsFloat(c[i], At(key, i));
   }
   return c;
+}
+
+// A point: every component within float's range.
+Vec3 Point3(const json& v, const std::string& key)
+{
+  Vec3 p = Numbers<3>(v, key);
+  for (size_t i = 0; i < 3; ++i)
+  {
+    FitsFloat(p[i], At(key, i));
+  }
+  return p;
 }
 
 Vec3 Direction(const json& v, const std::string& key)
@@ -291,6 +339,7 @@ Scene::TransferFunctionSection ParseTransferFunction(const json& v)
   {
     const std::string key = At("transfer_function.opacity", i);
     auto p = Numbers<2>(op[i], key);
+    FitsFloat(p[0], At(key, 0));
     NumberIn(op[i][1], At(key, 1), 0.0, 1.0, "opacity");
     if (!s.Opacity.empty() && !(p[0] > s.Opacity.back()[0]))
     {
@@ -310,6 +359,7 @@ Scene::TransferFunctionSection ParseTransferFunction(const json& v)
     {
       const std::string key = At("transfer_function.color", i);
       auto p = Numbers<4>(c[i], key);
+      FitsFloat(p[0], At(key, 0));
       for (size_t k = 1; k < 4; ++k)
       {
         NumberIn(c[i][k], At(key, k), 0.0, 1.0, "albedo");
@@ -324,11 +374,13 @@ Scene::TransferFunctionSection ParseTransferFunction(const json& v)
   }
   if (v.contains("unit_distance"))
   {
-    s.UnitDistance = Positive(v["unit_distance"], "transfer_function.unit_distance", "the unit distance");
+    s.UnitDistance = PositiveFloat(v["unit_distance"], "transfer_function.unit_distance", "the unit distance");
   }
   if (v.contains("density_scale"))
   {
-    s.DensityScale = NonNegative(v["density_scale"], "transfer_function.density_scale", "the density scale");
+    s.DensityScale = FitsFloat(
+      NonNegative(v["density_scale"], "transfer_function.density_scale", "the density scale"),
+      "transfer_function.density_scale");
   }
   if (v.contains("interpolation"))
   {
@@ -418,7 +470,7 @@ Scene::EnvironmentSection ParseEnvironment(const json& v, const std::string& bas
   }
   if (v.contains("intensity"))
   {
-    s.Intensity = NonNegative(v["intensity"], "environment.intensity", "the intensity");
+    s.Intensity = FitsFloat(NonNegative(v["intensity"], "environment.intensity", "the intensity"), "environment.intensity");
   }
   if (v.contains("visible_background"))
   {
@@ -437,8 +489,8 @@ Scene::CameraSection ParseCamera(const json& v)
   RequireObject(v, path);
   CheckKeys(v, path, { "position", "focal_point", "view_up", "view_angle", "parallel_scale" });
   Scene::CameraSection s;
-  s.Position = Numbers<3>(Require(v, path, "position"), "camera.position");
-  s.FocalPoint = Numbers<3>(Require(v, path, "focal_point"), "camera.focal_point");
+  s.Position = Point3(Require(v, path, "position"), "camera.position");
+  s.FocalPoint = Point3(Require(v, path, "focal_point"), "camera.focal_point");
   s.ViewUp = Vec3{ 0, 0, 1 };
   if (v.contains("view_up"))
   {
@@ -454,7 +506,7 @@ Scene::CameraSection ParseCamera(const json& v)
   }
   if (v.contains("parallel_scale"))
   {
-    s.ParallelScale = Positive(v["parallel_scale"], "camera.parallel_scale", "the parallel scale");
+    s.ParallelScale = PositiveFloat(v["parallel_scale"], "camera.parallel_scale", "the parallel scale");
   }
   const Vec3 d{ s.FocalPoint[0] - s.Position[0], s.FocalPoint[1] - s.Position[1], s.FocalPoint[2] - s.Position[2] };
   const double dn = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
@@ -462,10 +514,10 @@ Scene::CameraSection ParseCamera(const json& v)
   {
     Fail("camera.focal_point", "the focal point equals the position");
   }
-  const Vec3& u = s.ViewUp;
+  // The view up normalised in double first: (1e300, 0, 0) and (1e-300, 0, 0) are directions too.
+  const Vec3 u = Normalized(s.ViewUp);
   const Vec3 c{ d[1] * u[2] - d[2] * u[1], d[2] * u[0] - d[0] * u[2], d[0] * u[1] - d[1] * u[0] };
-  const double un = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-  if (std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) < 1e-6 * dn * un)
+  if (std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) < 1e-6 * dn)
   {
     Fail("camera.view_up", "parallel to the view direction");
   }
@@ -502,7 +554,7 @@ Scene::RenderSection ParseRender(const json& v)
   }
   if (v.contains("exposure"))
   {
-    s.Exposure = NonNegative(v["exposure"], "render.exposure", "the exposure");
+    s.Exposure = FitsFloat(NonNegative(v["exposure"], "render.exposure", "the exposure"), "render.exposure");
   }
   if (v.contains("tone_mapping"))
   {
@@ -610,7 +662,7 @@ std::vector<Scene::ClipPlane> ParseClipPlanes(const json& v)
     RequireObject(v[i], key);
     CheckKeys(v[i], key, { "origin", "normal" });
     Scene::ClipPlane p;
-    p.Origin = Numbers<3>(Require(v[i], key, "origin"), key + ".origin");
+    p.Origin = Point3(Require(v[i], key, "origin"), key + ".origin");
     p.Normal = Direction(Require(v[i], key, "normal"), key + ".normal");
     planes.push_back(p);
   }
@@ -621,6 +673,18 @@ json Array3(const Vec3& v)
 {
   return json::array({ v[0], v[1], v[2] });
 }
+}
+
+Vec3 Normalized(const Vec3& d)
+{
+  const double m = std::max({ std::abs(d[0]), std::abs(d[1]), std::abs(d[2]) });
+  if (!(m > 0.0) || !std::isfinite(m))
+  {
+    return d;
+  }
+  const Vec3 v{ d[0] / m, d[1] / m, d[2] / m }; // largest component 1: no square overflows
+  const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return Vec3{ v[0] / length, v[1] / length, v[2] / length };
 }
 
 const std::vector<std::string>& SceneStrategies()

@@ -137,6 +137,11 @@ struct Scene
   bool operator!=(const Scene& o) const { return !(*this == o); }
 };
 
+/** A direction as a unit vector, computed in double without overflow or underflow (scaled by its
+ *  largest component first): directions (sun, view up, clip-plane normals) are kept as written in
+ *  the scene and normalised when used, so (1e300, 0, 0) is +X. Zero or non-finite: returned as is. */
+Vec3 Normalized(const Vec3& direction);
+
 /** The strategies of the scene file, in the mapper's enum order (uniform = 0 ... two-step = 4). */
 const std::vector<std::string>& SceneStrategies();
 /** The mapper's enum value of a strategy name: the scene file's ("two-step") or the API's

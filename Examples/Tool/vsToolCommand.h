@@ -6,7 +6,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <string>
@@ -34,6 +36,25 @@ inline std::string ExampleScene(const std::string& name)
 inline std::string BenchmarksDir()
 {
   return (DataRoot() / "Benchmarks").string();
+}
+
+/** A validator for options of floating-point numbers: CLI11 parses "nan", "inf" and "1e999" as
+ *  doubles, and its PositiveNumber lets NaN and +inf through (NaN fails no comparison), so a
+ *  --time-budget of nan was accepted and ignored. Checked before the other validators. */
+inline CLI::Validator FiniteNumber()
+{
+  return CLI::Validator(
+    [](std::string& text) -> std::string {
+      const char* begin = text.c_str();
+      char* end = nullptr;
+      const double v = std::strtod(begin, &end);
+      if (end != begin && !std::isfinite(v))
+      {
+        return "Value " + text + " is not a finite number";
+      }
+      return std::string();
+    },
+    "FINITE", "FINITE");
 }
 
 template <class Run>

@@ -318,7 +318,8 @@ vtkStandardNewMacro(CheckedNrrdReader);
 
 /* Runs a vtkImageReader2 (NIfTI, MetaImage, NRRD): the header first, the size it claims checked
  * against `maxPoints` before anything is allocated, then the data. */
-vtkSmartPointer<vtkImageData> RunImageReader(vtkImageReader2* reader, const std::string& path, vtkIdType maxPoints)
+vtkSmartPointer<vtkImageData> RunImageReader(
+  vtkImageReader2* reader, const std::string& path, vtkIdType maxPoints, const VolumeSizeCheck& check)
 {
   const std::string what = Quote(path);
   const bool metaImage = reader->IsA("vtkMetaImageReader");
@@ -342,6 +343,15 @@ vtkSmartPointer<vtkImageData> RunImageReader(vtkImageReader2* reader, const std:
   {
     Fail(what, "its header describes " + Describe(extent, points) + ", more than the " + std::to_string(maxPoints) +
         " points this tool reads");
+  }
+  if (check)
+  {
+    const std::string problem =
+      check({ extent[1] - extent[0] + 1, extent[3] - extent[2] + 1, extent[5] - extent[4] + 1 });
+    if (!problem.empty())
+    {
+      Fail(what, "its header describes " + Describe(extent, points) + ": " + problem);
+    }
   }
   if (reader->GetNumberOfScalarComponents() != 1)
   {
@@ -476,6 +486,25 @@ vtkSmartPointer<vtkImageData> ReadVolumeSequence(
 
 vtkSmartPointer<vtkImageData> ReadVolume(const std::string& path, const std::string& grid, vtkIdType maxPoints)
 {
+  return ReadVolume(path, grid, maxPoints, VolumeSizeCheck());
+}
+
+vtkSmartPointer<vtkImageData> ReadVolume(
+  const std::string& path, const std::string& grid, vtkIdType maxPoints, const VolumeSizeCheck& check)
+{
+  auto checked = [&](vtkSmartPointer<vtkImageData> image) {
+    if (check && image)
+    {
+      int d[3];
+      image->GetDimensions(d);
+      const std::string problem = check({ d[0], d[1], d[2] });
+      if (!problem.empty())
+      {
+        Fail(Quote(path), problem);
+      }
+    }
+    return image;
+  };
   std::error_code ec;
   if (fs::is_directory(path, ec))
   {
@@ -487,7 +516,7 @@ vtkSmartPointer<vtkImageData> ReadVolume(const std::string& path, const std::str
     {
       throw std::runtime_error("no DICOM series in folder '" + path + "'");
     }
-    return CheckedOutput(reader, reader->GetOutput(), "the DICOM folder " + Quote(path), errors.Text);
+    return checked(CheckedOutput(reader, reader->GetOutput(), "the DICOM folder " + Quote(path), errors.Text));
   }
   CheckRegularFile(path, "volume file");
   if (EndsWith(path, ".vti"))
@@ -496,23 +525,23 @@ vtkSmartPointer<vtkImageData> ReadVolume(const std::string& path, const std::str
     ErrorCollector errors(reader.Get());
     reader->SetFileName(path.c_str());
     reader->Update();
-    return CheckedOutput(reader, reader->GetOutput(), Quote(path), errors.Text);
+    return checked(CheckedOutput(reader, reader->GetOutput(), Quote(path), errors.Text));
   }
   if (EndsWith(path, ".mha") || EndsWith(path, ".mhd"))
   {
     CheckMetaImageDataFile(path);
     vtkNew<vtkMetaImageReader> r;
-    return RunImageReader(r.Get(), path, maxPoints);
+    return RunImageReader(r.Get(), path, maxPoints, check);
   }
   if (EndsWith(path, ".nrrd") || EndsWith(path, ".nhdr"))
   {
     vtkNew<CheckedNrrdReader> r;
-    return RunImageReader(r.Get(), path, maxPoints);
+    return RunImageReader(r.Get(), path, maxPoints, check);
   }
   if (EndsWith(path, ".nii") || EndsWith(path, ".nii.gz"))
   {
     vtkNew<vtkNIFTIImageReader> r;
-    return RunImageReader(r.Get(), path, maxPoints);
+    return RunImageReader(r.Get(), path, maxPoints, check);
   }
   if (EndsWith(path, ".vdb"))
   {
@@ -520,6 +549,21 @@ vtkSmartPointer<vtkImageData> ReadVolume(const std::string& path, const std::str
     reader->SetFileName(path.c_str());
     reader->SetGridName(grid.c_str());
     reader->SetMaximumNumberOfPoints(maxPoints);
+    if (check)
+    {
+      // The grid's extent from its metadata, before its voxels are read.
+      reader->UpdateInformation();
+      int e[6];
+      reader->GetOutputInformation(0)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), e);
+      if (e[1] >= e[0] && e[3] >= e[2] && e[5] >= e[4])
+      {
+        const std::string problem = check({ e[1] - e[0] + 1, e[3] - e[2] + 1, e[5] - e[4] + 1 });
+        if (!problem.empty())
+        {
+          Fail("'" + path + "' (grid '" + grid + "')", "its grid spans " + Describe(e, PointCount(e)) + ": " + problem);
+        }
+      }
+    }
     return RunVDB(reader, "'" + path + "' (grid '" + grid + "')", 0);
   }
   throw std::runtime_error("unknown volume format of '" + path +

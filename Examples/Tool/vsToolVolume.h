@@ -7,6 +7,8 @@
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
+#include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,16 @@ namespace vstool
  *  reader opens it, and a header claiming more than `maxPoints` points before any allocation. */
 vtkSmartPointer<vtkImageData> ReadVolume(const std::string& path, const std::string& grid = "density",
   vtkIdType maxPoints = vtkIdType(1) << 31);
+
+/** What a volume's dimensions must pass before its data is read: "" when it may be read, else the
+ *  reason naming the limit (the render command checks the device's limits and the host's memory:
+ *  a header of 1200^3 floats made VTK's reader allocate 6.9 GB before the device refused it). */
+using VolumeSizeCheck = std::function<std::string(const std::array<int, 3>& dims)>;
+
+/** ReadVolume with `check` run on the header's dimensions before any data is read (NIfTI,
+ *  MetaImage, NRRD, .vdb); other formats are checked after reading. */
+vtkSmartPointer<vtkImageData> ReadVolume(
+  const std::string& path, const std::string& grid, vtkIdType maxPoints, const VolumeSizeCheck& check);
 
 /** Reads time step `step` of a .vdb sequence (one file per step, a fixed extent for all steps). */
 vtkSmartPointer<vtkImageData> ReadVolumeSequence(

@@ -31,14 +31,26 @@ bool Good(float c)
 }
 
 /* Zero the bad channels of n RGB triples; counts the triples that had one, and
- * those that had a NaN or infinite one. */
-void SanitizeRGB(float* rgb, std::size_t n, std::int64_t& bad, std::int64_t& nonFinite)
+ * those that had a NaN or infinite one. A triple whose only bad channels are
+ * negatives of magnitude at most ringingBound counts as ringing instead. */
+void SanitizeRGB(float* rgb, std::size_t n, std::int64_t& bad, std::int64_t& nonFinite, std::int64_t& ringing,
+  double ringingBound)
 {
   for (std::size_t i = 0; i < n; ++i)
   {
     float* p = rgb + 3 * i;
     if (!(Good(p[0]) && Good(p[1]) && Good(p[2])))
     {
+      const auto small = [ringingBound](float c) { return Good(c) || (c < 0.0f && -double(c) <= ringingBound); };
+      if (small(p[0]) && small(p[1]) && small(p[2]))
+      {
+        ++ringing;
+        for (int c = 0; c < 3; ++c)
+        {
+          p[c] = std::max(p[c], 0.0f);
+        }
+        continue;
+      }
       ++bad;
       if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
       {
@@ -308,7 +320,15 @@ void EnvironmentMap::Finalize()
 {
   const int n = this->Size;
   const std::size_t texels = std::size_t(n) * n;
-  SanitizeRGB(this->Radiance.data(), texels, this->BadTexels, this->NonFiniteTexels);
+  // The ringing bound: RingingFraction of the mean luminance of the good parts (equal-area texels).
+  double lum = 0.0;
+  for (std::size_t i = 0; i < texels; ++i)
+  {
+    const float* p = &this->Radiance[3 * i];
+    lum += Luminance(glm::vec3(Good(p[0]) ? p[0] : 0.0f, Good(p[1]) ? p[1] : 0.0f, Good(p[2]) ? p[2] : 0.0f));
+  }
+  const double bound = texels ? RingingFraction * lum / double(texels) : 0.0;
+  SanitizeRGB(this->Radiance.data(), texels, this->BadTexels, this->NonFiniteTexels, this->RingingTexels, bound);
   const int levels = this->Levels();
   this->ImportanceMips.assign(levels > 0 ? MipOffset(levels) : 0, 0.0f);
   this->MeanRadiance = glm::dvec3(0.0);
@@ -378,7 +398,11 @@ EnvironmentMap EnvironmentMap::FromLatLong(const LatLongImage& image, int size, 
   // children, all of equal solid angle.
   const int work = std::max(size, std::min(DefaultSize(src.Width), MaxWorkSize));
   EnvironmentMap map = Allocate(work);
-  SanitizeRGB(src.RGB.data(), std::size_t(src.Width) * src.Height, map.BadTexels, map.NonFiniteTexels);
+  // The ringing bound: RingingFraction of the source's mean luminance over the sphere (negative
+  // and non-finite channels count as 0 in LatLongPower).
+  const double ringingBound = RingingFraction * LatLongPower(src) / (4.0 * Pi);
+  SanitizeRGB(src.RGB.data(), std::size_t(src.Width) * src.Height, map.BadTexels, map.NonFiniteTexels,
+    map.RingingTexels, ringingBound);
 
   const int n = work;
   // Directions of the texel corners, (n+1)^2, to size each texel's sub-sample grid.

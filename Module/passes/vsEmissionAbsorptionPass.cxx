@@ -1,4 +1,5 @@
 #include "vsEmissionAbsorptionPass.h"
+#include "vsRenderTargetLimits.h"
 #include "vsBatch.h"
 #include "vsBuffer.h"
 #include "vsContext.h"
@@ -44,6 +45,7 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
   {
     return {};
   }
+  RenderTargetLimits::Check(*this->Context_, w, h);
   const uint64_t pixels = uint64_t(w) * h;
   if (!depth.empty() && depth.size() != pixels)
   {

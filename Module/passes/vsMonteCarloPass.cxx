@@ -1,4 +1,5 @@
 #include "vsMonteCarloPass.h"
+#include "shared/strategies.h"
 #include "vsBatch.h"
 #include "vsBuffer.h"
 #include "vsContext.h"
@@ -8,6 +9,7 @@
 #include "vsImage.h"
 #include "vsMajorantGrid.h"
 #include "vsPipeline.h"
+#include "vsRenderTargetLimits.h"
 #include "vsTransferFunctionTable.h"
 #include "vsVisibilityGrid.h"
 
@@ -17,6 +19,8 @@
 #include "vs_spirv_mc_render_r8.h"
 
 #include <algorithm>
+#include <cmath>
+#include <glm/glm.hpp>
 
 namespace vs
 {
@@ -27,40 +31,85 @@ MonteCarloPass::MonteCarloPass(std::shared_ptr<Context> context)
 
 MonteCarloPass::~MonteCarloPass() = default;
 
-const ComputePipeline& MonteCarloPass::PipelineFor(const VisibilityGrid* grid)
+namespace
+{
+const char* StrategyName(uint32_t s)
+{
+  static const char* names[] = { "uniform", "environment", "visibility", "combined", "two-step" };
+  return s < 5 ? names[s] : "?";
+}
+}
+
+const ComputePipeline& MonteCarloPass::PipelineFor(
+  const VisibilityGrid* grid, const shared::VsRenderParams& params, bool refine)
 {
   vk::Format f = grid && grid->Valid() ? grid->Image().Format() : vk::Format::eR8Unorm;
-  int i = f == vk::Format::eR8Unorm ? 0 : f == vk::Format::eR16Unorm ? 1 : 2;
+  int format = f == vk::Format::eR8Unorm ? 0 : f == vk::Format::eR16Unorm ? 1 : 2;
   if (this->CountLookups_)
   {
-    if (i != 0)
+    if (format != 0)
     {
       throw InputError("counting reads needs the r8 visibility grid (the default storage format)");
     }
-    i = 3;
+    format = 3;
   }
-  if (!this->Pipelines_[i])
+  const uint32_t strategy = params.sampling.x, cellMode = params.sampling.z;
+  if (strategy > shared::VS_STRATEGY_TWO_STEP)
+  {
+    throw InputError("unknown sampling strategy " + std::to_string(strategy));
+  }
+  const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u };
+  auto& slot = this->Pipelines_[specialization];
+  auto& pipeline = slot[format];
+  if (!pipeline)
   {
     using B = BindingType;
     std::vector<B> bindings{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageImage, B::StorageBuffer,
-      B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer };
-    if (i == 3)
+      B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer,
+      B::StorageBuffer };
+    static const char* formats[] = { "r8 visibility", "r16 visibility", "r32f visibility",
+      "r8 visibility, counting reads" };
+    const std::string name = std::string("monte carlo (") + formats[format] + ", " + StrategyName(strategy) + ", " +
+      (cellMode == shared::VS_CELL_STOCHASTIC ? "stochastic cell" : "trilinear cells") +
+      (refine ? ", cell walk)" : ")");
+    if (format == 3)
     {
       bindings.push_back(B::StorageBuffer);
-      this->Pipelines_[i] = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_mc_render_count), bindings,
-        2 * sizeof(uint32_t), "monte carlo (r8 visibility, counting reads)");
+      pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_mc_render_count), bindings, sizeof(uint32_t), name,
+        specialization);
     }
-    else if (i == 0)
-      this->Pipelines_[i] = SharedPipeline(
-        this->Context_, VS_SPIRV(vs_spirv_mc_render_r8), bindings, 2 * sizeof(uint32_t), "monte carlo (r8 visibility)");
-    else if (i == 1)
-      this->Pipelines_[i] = SharedPipeline(
-        this->Context_, VS_SPIRV(vs_spirv_mc_render_r16), bindings, 2 * sizeof(uint32_t), "monte carlo (r16 visibility)");
+    else if (format == 0)
+      pipeline = SharedPipeline(
+        this->Context_, VS_SPIRV(vs_spirv_mc_render_r8), bindings, sizeof(uint32_t), name, specialization);
+    else if (format == 1)
+      pipeline = SharedPipeline(
+        this->Context_, VS_SPIRV(vs_spirv_mc_render_r16), bindings, sizeof(uint32_t), name, specialization);
     else
-      this->Pipelines_[i] = SharedPipeline(
-        this->Context_, VS_SPIRV(vs_spirv_mc_render_r32f), bindings, 2 * sizeof(uint32_t), "monte carlo (r32f visibility)");
+      pipeline = SharedPipeline(
+        this->Context_, VS_SPIRV(vs_spirv_mc_render_r32f), bindings, sizeof(uint32_t), name, specialization);
   }
-  return *this->Pipelines_[i];
+  return *pipeline;
+}
+
+bool MonteCarloPass::NeedsCellWalk(const MajorantGrid& majorants, const shared::VsRenderParams& params)
+{
+  // The longest world-space path through a brick: its index-space diagonal (B sqrt 3) through the
+  // index-to-world matrix, bounded by the matrix's Frobenius norm (>= its largest singular value).
+  const glm::mat3 indexToWorld = glm::inverse(glm::mat3(params.worldToIndex));
+  double norm2 = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    for (int r = 0; r < 3; ++r)
+    {
+      norm2 += double(indexToWorld[c][r]) * indexToWorld[c][r];
+    }
+  }
+  const double longest = majorants.BrickSize() * std::sqrt(3.0) * std::sqrt(norm2);
+  const double depth = params.tracking.x > 0.0f ? params.tracking.x : 32.0;
+  const double worst = double(majorants.MaxMajorant()) * longest;
+  // 0.1% for the trackers' shortest step past a face; non-finite (a singular matrix, an infinite
+  // majorant) keeps the cell walk: it is the safe side.
+  return !(worst * 1.001 <= depth);
 }
 
 void MonteCarloPass::Reset(uint32_t width, uint32_t height)
@@ -70,21 +119,26 @@ void MonteCarloPass::Reset(uint32_t width, uint32_t height)
   {
     throw InputError("an image of zero pixels");
   }
+  RenderTargetLimits::Check(*this->Context_, width, height);
   if (width != this->Width_ || height != this->Height_ || !this->Sum_)
   {
     this->Sum_.reset();
     this->Comp_.reset();
     this->Squares_.reset();
     this->Depth_.reset();
+    this->Progress_.reset();
     this->Sum_ = std::make_unique<Buffer>(this->Context_, pixels * 16, "radiance sum");
     this->Comp_ = std::make_unique<Buffer>(this->Context_, pixels * 16, "radiance compensation");
     this->Squares_ = std::make_unique<Buffer>(this->Context_, pixels * 16, "radiance squares");
     this->Depth_ = std::make_unique<Buffer>(this->Context_, pixels * 4, "depth");
+    // Samples per pixel, then the count of pixels a dispatch left short of its target.
+    this->Progress_ = std::make_unique<Buffer>(this->Context_, (pixels + 1) * 4, "samples per pixel");
     this->LastDepth_.clear();
   }
   this->Sum_->Fill(0u);
   this->Comp_->Fill(0u);
   this->Squares_->Fill(0u);
+  this->Progress_->Fill(0u);
   this->Width_ = width;
   this->Height_ = height;
   this->Samples_ = 0;
@@ -126,7 +180,12 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   }
   this->Params_->Upload(&params, sizeof(params));
 
-  const ComputePipeline& pipeline = this->PipelineFor(useGrid ? grid : nullptr);
+  if (!useGrid && params.sampling.x > shared::VS_STRATEGY_ENVIRONMENT)
+  {
+    params.sampling.x = shared::VS_STRATEGY_UNIFORM; // what the kernel does without a grid (D = 0)
+  }
+  const ComputePipeline& pipeline =
+    this->PipelineFor(useGrid ? grid : nullptr, params, NeedsCellWalk(majorants, params));
   DescriptorSet set(pipeline);
   set.Bind(0, volume.Image())
     .Bind(1, tf.Lut())
@@ -138,7 +197,8 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     .Bind(7, *this->Depth_)
     .Bind(8, *this->Sum_)
     .Bind(9, *this->Comp_)
-    .Bind(10, *this->Squares_);
+    .Bind(10, *this->Squares_)
+    .Bind(11, *this->Progress_);
   if (this->CountLookups_)
   {
     if (!this->Lookups_)
@@ -146,22 +206,56 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
       this->Lookups_ = std::make_unique<Buffer>(this->Context_, 4 * sizeof(uint32_t), "read counters");
     }
     this->Lookups_->Fill(0u);
-    set.Bind(11, *this->Lookups_);
+    set.Bind(12, *this->Lookups_);
   }
-  Batch batch(this->Context_);
-  batch.BeginTimer("render");
-  // Up to SamplesPerDispatch samples per pixel per dispatch (a loop in mc_render.glsl); the
-  // image does not depend on the split.
+  // Each dispatch brings every pixel towards a target count, SamplesPerDispatch more than the
+  // last; a pixel the kernel's loop budget left short (mc_render.glsl) catches up in the next one.
+  // The image does not depend on the split.
   const uint32_t chunk = std::max<uint32_t>(1u, this->SamplesPerDispatch_);
-  for (uint32_t s = 0; s < params.sampling.y; s += chunk)
+  const uint32_t goal = this->Samples_ + params.sampling.y;
+  const uint64_t counterOffset = pixels * 4;
+  const uint32_t zero = 0;
+  const uint32_t groupsX = (this->Width_ + 7) / 8, groupsY = (this->Height_ + 7) / 8;
+  this->LastSeconds_ = 0.0;
+  this->LastCatchUps_ = 0;
+  for (uint32_t round = 0;; ++round)
   {
-    const uint32_t push[2] = { s, std::min(chunk, params.sampling.y - s) };
-    batch.Dispatch(pipeline, set, push, sizeof(push), (this->Width_ + 7) / 8, (this->Height_ + 7) / 8, 1);
-    batch.Barrier();
+    this->Progress_->Upload(&zero, 4, counterOffset);
+    Batch batch(this->Context_);
+    batch.BeginTimer("render");
+    if (round == 0)
+    {
+      for (uint32_t s = 0; s < params.sampling.y; s += chunk)
+      {
+        const uint32_t target = this->Samples_ + std::min(s + chunk, params.sampling.y);
+        batch.Dispatch(pipeline, set, &target, sizeof(target), groupsX, groupsY, 1);
+        batch.Barrier();
+      }
+    }
+    else
+    {
+      batch.Dispatch(pipeline, set, &goal, sizeof(goal), groupsX, groupsY, 1);
+      batch.Barrier();
+    }
+    batch.EndTimer();
+    batch.Submit();
+    this->LastSeconds_ += batch.Seconds("render");
+    uint32_t shortPixels = 0;
+    this->Progress_->Download(&shortPixels, 4, counterOffset);
+    if (shortPixels == 0)
+    {
+      break;
+    }
+    // Every round completes at least one sample of every short pixel (mc_render.glsl's tracking
+    // cap); this bound only stops a kernel that breaks that promise.
+    if (round >= kMaxCatchUpRounds)
+    {
+      throw Error("the render kernel left " + std::to_string(shortPixels) + " pixels short of " +
+        std::to_string(goal) + " samples after " + std::to_string(round) +
+        " catch-up dispatches (its loop budget per dispatch, VS_LOOP_BUDGET)");
+    }
+    this->LastCatchUps_ = round + 1;
   }
-  batch.EndTimer();
-  batch.Submit();
-  this->LastSeconds_ = batch.Seconds("render");
   this->TotalSeconds_ += this->LastSeconds_;
   this->Samples_ += params.sampling.y;
   this->SquareScale_ = params.sampling2.w > 0.0f ? params.sampling2.w : 1.0f;

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -64,10 +65,15 @@ public:
    *  any value. Fewer dispatches cost less on lavapipe; on a GPU a long dispatch may hit the
    *  driver's watchdog. */
   void SetSamplesPerDispatch(uint32_t n) { this->SamplesPerDispatch_ = std::min(std::max(n, 1u), kMaxSamplesPerDispatch); }
-  /** The longest sample loop measured exact on lavapipe: with TwoStep, loops of 160 samples and more
-   *  in one dispatch gave wrong pixels (up to 47% off at 255; 129 and below: bit-identical), a cause
-   *  not found yet (docs/benchmarks.md). TestMonteCarlo checks 128. */
-  static constexpr uint32_t kMaxSamplesPerDispatch = 128;
+  /** The most samples per pixel a dispatch aims at. The kernel's loop budget (VS_LOOP_BUDGET, which
+   *  keeps it below lavapipe's loop limiter) decides how many it completes; the rest follow in the
+   *  next dispatches, so any value gives the same image. */
+  static constexpr uint32_t kMaxSamplesPerDispatch = 4096;
+  /** Catch-up dispatches a Render may need at most before it reports a kernel error. */
+  static constexpr uint32_t kMaxCatchUpRounds = 256;
+  /** Catch-up dispatches (after the planned ones) the last Render needed: pixels whose samples took
+   *  more than the kernel's loop budget allowed in their dispatch. */
+  uint32_t LastCatchUps() const { return this->LastCatchUps_; }
   uint32_t SamplesPerDispatch() const { return this->SamplesPerDispatch_; }
 
   /** Device seconds of the last Render and of all Renders since the last Reset. */
@@ -75,16 +81,21 @@ public:
   double TotalSeconds() const { return this->TotalSeconds_; }
 
 private:
-  const ComputePipeline& PipelineFor(const VisibilityGrid* grid);
+  const ComputePipeline& PipelineFor(const VisibilityGrid* grid, const shared::VsRenderParams& params, bool refine);
+  /** Whether some majorant segment may reach the tracking's refinement depth (mc_render.glsl's
+   *  cell walk): the brick majorant times the longest world path through a brick, with a margin. */
+  static bool NeedsCellWalk(const MajorantGrid& majorants, const shared::VsRenderParams& params);
 
   std::shared_ptr<Context> Context_;
-  std::shared_ptr<ComputePipeline> Pipelines_[4]; // r8, r16, r32f visibility; r8 counting reads
+  // Per specialization (strategy, cell mode, cell walk): r8, r16, r32f visibility; r8 counting reads.
+  std::map<std::vector<uint32_t>, std::array<std::shared_ptr<ComputePipeline>, 4>> Pipelines_;
   std::unique_ptr<Buffer> Lookups_;
   bool CountLookups_ = false;
   uint32_t SamplesPerDispatch_ = 16;
   std::array<uint64_t, 3> LastLookups_{};
   std::unique_ptr<Image3D> NoGrid_;
-  std::unique_ptr<Buffer> Params_, Depth_, Sum_, Comp_, Squares_;
+  std::unique_ptr<Buffer> Params_, Depth_, Sum_, Comp_, Squares_, Progress_;
+  uint32_t LastCatchUps_ = 0;
   std::vector<float> LastDepth_;
   uint32_t Width_ = 0, Height_ = 0, Samples_ = 0;
   float SquareScale_ = 1.0f; // radiance scale of the sums of squares (render_params.h, sampling2.w)

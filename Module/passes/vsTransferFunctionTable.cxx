@@ -43,7 +43,8 @@ TransferFunctionSamples TransferFunctionSamples::FromFunctions(float smin, float
   t.Entries.resize(4 * count);
   for (size_t i = 0; i < count; ++i)
   {
-    double s = t.ScalarMin + (t.ScalarMax - t.ScalarMin) * double(i) / double(count - 1);
+    // In double: the span of points near float's limits (-3e38 .. 3e38) overflows a float.
+    double s = double(t.ScalarMin) + (double(t.ScalarMax) - double(t.ScalarMin)) * double(i) / double(count - 1);
     double rgb[3] = { 1, 1, 1 };
     color(s, rgb);
     for (int c = 0; c < 3; ++c)
@@ -59,7 +60,7 @@ TransferFunctionSamples TransferFunctionSamples::FromFunctions(float smin, float
 float TransferFunctionSamples::MaxExtinction(float s0, float s1) const
 {
   const size_t n = this->Size();
-  const double scale = double(n - 1) / (this->ScalarMax - this->ScalarMin);
+  const double scale = double(n - 1) / (double(this->ScalarMax) - double(this->ScalarMin));
   auto index = [&](float s) {
     return std::clamp((double(s) - this->ScalarMin) * scale, 0.0, double(n - 1));
   };
@@ -125,7 +126,7 @@ TransferFunctionTable::~TransferFunctionTable() = default;
 std::array<float, 4> TransferFunctionTable::Params() const
 {
   const auto& s = this->Samples_;
-  return { { s.ScalarMin, float(double(s.Size() - 1) / (s.ScalarMax - s.ScalarMin)), float(s.Size()),
+  return { { s.ScalarMin, float(double(s.Size() - 1) / (double(s.ScalarMax) - double(s.ScalarMin))), float(s.Size()),
     float(s.RangeMaxLevelCount()) } };
 }
 }

@@ -11,15 +11,38 @@
  * The approximate visibility only shapes the pdf; T is the true transmittance, which
  * keeps the estimator unbiased. Escaping rays see the environment (or are transparent,
  * so VTK's background shows); rays reaching the opaque depth are transparent.
- * Accumulates compensated (Kahan) sums of (rgb, alpha) and their squares per pixel;
- * one dispatch adds `sampleCount` samples per pixel, from sample `sampleOffset` of the frame.
+ * Accumulates compensated (Kahan) sums of (rgb, alpha) and their squares per pixel, and how many
+ * samples they hold; one dispatch brings every pixel towards `target` samples.
+ *
+ * Delta and ratio tracking are one loop each, of one step per iteration (the next majorant
+ * segment, or a tentative collision): a SIMD group then runs each loop as long as its longest lane.
+ *
+ * Lavapipe ends every loop once an invocation's loops have taken 65535 back-edges together
+ * (llvmpipe's loop limiter), silently: that, not the loop itself, gave wrong pixels past ~130
+ * TwoStep samples per dispatch. The sample loop keeps `cost`, an upper bound of the group's
+ * back-edges (the same in every lane), and starts a sample only while one more at its most
+ * expensive fits below VS_LOOP_BUDGET; the pixels it leaves short of the target are counted, and
+ * the host dispatches again until none is. A pixel's samples are its indices 0, 1, ... in order
+ * whatever the split, so its sums are the same bits for any split into dispatches and frames.
  */
 #include "octahedral.h"
 #include "render_params.h"
 #include "rng.h"
 #include "strategies.h"
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_ballot : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+/* Specialization constants: the host compiles one pipeline per combination it renders with, so the
+ * code of the other strategies, the other cell mode and (where no brick is optically thick) the
+ * cell walk is gone. That matters on lavapipe, which runs both sides of every `if` (masked) and
+ * every loop body at least once: such code costs as if it were always taken. */
+layout(constant_id = 0) const uint VS_SPEC_STRATEGY = 4u;  /* VS_STRATEGY_*, = params.sampling.x */
+layout(constant_id = 1) const uint VS_SPEC_CELL_MODE = 1u; /* VS_CELL_*, = params.sampling.z */
+layout(constant_id = 2) const uint VS_SPEC_REFINE = 1u;    /* 0: no majorant segment reaches the refinement depth */
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
 layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
 layout(binding = 2, r32f) uniform readonly image3D uMajorant;
@@ -31,12 +54,14 @@ layout(std430, binding = 7) readonly buffer Depth { float uDepth[]; };
 layout(std430, binding = 8) buffer Sum { vec4 uSum[]; };
 layout(std430, binding = 9) buffer Compensation { vec4 uComp[]; };
 layout(std430, binding = 10) buffer Squares { vec4 uSq[]; };
-layout(push_constant) uniform Push { uint sampleOffset; uint sampleCount; } pc;
+/* Samples each pixel holds (W x H), then one counter of the pixels a dispatch left short of target. */
+layout(std430, binding = 11) buffer Progress { uint uCount[]; };
+layout(push_constant) uniform Push { uint target; } pc;
 
 /* The instrumented variant (mc_render_count.comp) counts what a sample reads:
  * uLookups[0] trilinear volume samples, [1] majorant-brick loads, [2] visibility texels. */
 #ifdef VS_COUNT_LOOKUPS
-layout(std430, binding = 11) buffer Lookups { uint uLookups[]; };
+layout(std430, binding = 12) buffer Lookups { uint uLookups[]; };
 uvec3 gLookups = uvec3(0u);
 #define VS_COUNT(i) (gLookups[i]++)
 #else
@@ -102,6 +127,31 @@ float min_step(float t, vec3 d)
   return 2e-6 * max(abs(t), 1.0 / max(length(d), 1e-20));
 }
 
+/* The kernel's hot paths are written without constant-length loops: lavapipe's loop limiter counts
+ * every back-edge (see the top of this file), and a loop the compiler keeps would cost budget. */
+
+/* The distance along d from p to the face ahead on one axis, between lo and hi (1e30 when the
+ * ray is parallel to the axis). */
+float face_distance(float p, float d, float lo, float hi)
+{
+  if (d > 1e-20)
+    return (hi - p) / d;
+  if (d < -1e-20)
+    return (lo - p) / d;
+  return 1e30;
+}
+
+/* The same for the voxel cell from lo to lo + 1, except the volume's outer faces (of `dim`
+ * voxels): scalars clamp beyond them. */
+float cell_face_distance(float p, float d, int lo, int dim)
+{
+  if (d > 1e-20)
+    return lo + 1 < dim - 1 ? (float(lo + 1) - p) / d : 1e30;
+  if (d < -1e-20)
+    return lo > 0 ? (float(lo) - p) / d : 1e30;
+  return 1e30;
+}
+
 /* The brick the ray o + t d is in just after t (at t + half the shortest step: a brick and a cell
  * are picked at the same point), and the distance t where it leaves it (at least the shortest step
  * on: a sliver of the previous brick shorter than float resolves may go with this one). */
@@ -112,14 +162,8 @@ ivec3 brick_at(vec3 o, vec3 d, float t, out float tExit)
   vec3 probe = o + (t + 0.5 * h) * d;
   ivec3 b = ivec3(floor(probe / gBrickSize));
   vec3 lo = vec3(b) * gBrickSize, hi = lo + gBrickSize;
-  float e = 1e30;
-  for (int i = 0; i < 3; ++i)
-  {
-    if (d[i] > 1e-20)
-      e = min(e, (hi[i] - p[i]) / d[i]);
-    else if (d[i] < -1e-20)
-      e = min(e, (lo[i] - p[i]) / d[i]);
-  }
+  float e = min(face_distance(p.x, d.x, lo.x, hi.x),
+    min(face_distance(p.y, d.y, lo.y, hi.y), face_distance(p.z, d.z, lo.z, hi.z)));
   /* Always move forward, even when rounding put p on the far side of a face. */
   tExit = t + max(e, h);
   return b;
@@ -151,15 +195,30 @@ float segment_max_extinction(vec3 o, vec3 d, float ta, float tb, ivec3 lo, vec4 
   vec3 f0 = min(fa, fb), f1 = max(fa, fb);
   if (gInterpolation == VS_INTERPOLATION_NEAREST)
     return vs_nearest_max_extinction(f0, f1, c0, c1, gTF); /* the corners whose halves it reaches */
-  float smin = 3.4e38, smax = -3.4e38;
-  for (uint k = 0u; k < 8u; ++k)
-  {
-    vec3 f = vec3((k & 1u) != 0u ? f1.x : f0.x, (k & 2u) != 0u ? f1.y : f0.y, (k & 4u) != 0u ? f1.z : f0.z);
-    float v = cell_trilinear(c0, c1, f);
-    smin = min(smin, v);
-    smax = max(smax, v);
-  }
+  /* The 8 corners of the box [f0, f1], unrolled. */
+  float v0 = cell_trilinear(c0, c1, vec3(f0.x, f0.y, f0.z)), v1 = cell_trilinear(c0, c1, vec3(f1.x, f0.y, f0.z));
+  float v2 = cell_trilinear(c0, c1, vec3(f0.x, f1.y, f0.z)), v3 = cell_trilinear(c0, c1, vec3(f1.x, f1.y, f0.z));
+  float v4 = cell_trilinear(c0, c1, vec3(f0.x, f0.y, f1.z)), v5 = cell_trilinear(c0, c1, vec3(f1.x, f0.y, f1.z));
+  float v6 = cell_trilinear(c0, c1, vec3(f0.x, f1.y, f1.z)), v7 = cell_trilinear(c0, c1, vec3(f1.x, f1.y, f1.z));
+  float smin = min(min(min(v0, v1), min(v2, v3)), min(min(v4, v5), min(v6, v7)));
+  float smax = max(max(max(v0, v1), max(v2, v3)), max(max(v4, v5), max(v6, v7)));
   return vs_max_extinction(smin, smax, gTF);
+}
+
+/* One step of refine_majorant's bisection in log length, while the bracket is wider than 1%. */
+void bisect_step(vec3 o, vec3 d, float t, ivec3 lo, vec4 c0, vec4 c1, inout float hLo, inout float hHi, inout float mLo)
+{
+  if (!(hHi > 1.01 * hLo))
+    return;
+  float hMid = sqrt(hLo * hHi);
+  float mMid = segment_max_extinction(o, d, t, t + hMid, lo, c0, c1);
+  if (mMid * hMid <= gRefineDepth)
+  {
+    hLo = hMid;
+    mLo = mMid;
+  }
+  else
+    hHi = hMid;
 }
 
 /* A brick whose majorant segment is optically thick (mu * length > gRefineDepth: a dense medium, or a
@@ -176,15 +235,8 @@ float refine_majorant(vec3 o, vec3 d, float t, inout float tNext, float mu)
   vec3 p = o + t * d;
   ivec3 lo = clamp(ivec3(floor(o + (t + 0.5 * hMin) * d)), ivec3(0), max(gDims - 2, ivec3(0)));
   ivec3 hi = min(lo + 1, gDims - 1);
-  float e = 1e30;
-  for (int i = 0; i < 3; ++i)
-  {
-    /* The cell's faces, except the volume's outer ones: scalars clamp beyond them. */
-    if (d[i] > 1e-20 && lo[i] + 1 < gDims[i] - 1)
-      e = min(e, (float(lo[i] + 1) - p[i]) / d[i]);
-    else if (d[i] < -1e-20 && lo[i] > 0)
-      e = min(e, (float(lo[i]) - p[i]) / d[i]);
-  }
+  float e = min(cell_face_distance(p.x, d.x, lo.x, gDims.x),
+    min(cell_face_distance(p.y, d.y, lo.y, gDims.y), cell_face_distance(p.z, d.z, lo.z, gDims.z)));
   if (gInterpolation == VS_INTERPOLATION_NEAREST)
     e = min(e, vs_nearest_midplane_exit(p, d, lo)); /* segments end where the nearest voxel changes */
   float hMax = min(tNext - t, max(e, hMin));
@@ -207,17 +259,7 @@ float refine_majorant(vec3 o, vec3 d, float t, inout float tNext, float mu)
     float hLo = hMin, hHi = hMax;
     float mLo = segment_max_extinction(o, d, t, t + hLo, lo, c0, c1);
     for (int k = 0; k < 12 && hHi > 1.01 * hLo; ++k)
-    {
-      float hMid = sqrt(hLo * hHi);
-      float mMid = segment_max_extinction(o, d, t, t + hMid, lo, c0, c1);
-      if (mMid * hMid <= gRefineDepth)
-      {
-        hLo = hMid;
-        mLo = mMid;
-      }
-      else
-        hHi = hMid;
-    }
+      bisect_step(o, d, t, lo, c0, c1, hLo, hHi, mLo);
     h = hLo;
     m = mLo;
   }
@@ -227,92 +269,16 @@ float refine_majorant(vec3 o, vec3 d, float t, inout float tNext, float mu)
 }
 
 /* The majorant segment of the ray from t: returns mu and sets tNext, with mu >= the extinction
- * on [t, tNext). One walk for delta tracking and ratio tracking. */
+ * on [t, tNext). One walk for delta tracking and ratio tracking, without loops. */
 float majorant_segment(vec3 o, vec3 d, float t, float tEnd, out float tNext)
 {
   float tExit;
   ivec3 b = brick_at(o, d, t, tExit);
   tNext = min(tExit, tEnd);
   float mu = brick_majorant(b);
-  if (mu * (tNext - t) > gRefineDepth)
+  if (VS_SPEC_REFINE != 0u && mu * (tNext - t) > gRefineDepth)
     mu = refine_majorant(o, d, t, tNext, mu);
   return mu;
-}
-
-/* Null collisions one tracking call may take before it gives up: only reached where float
- * cannot resolve the medium (a majorant segment at the shortest step still has a huge optical
- * depth but the sampled points keep missing it); it then treats the medium as opaque. */
-const uint VS_MAX_TRACKING_STEPS = 65536u;
-
-/* Delta tracking on [t0, t1): true at a real collision (tHit, its albedo). Distances inside a
- * segment count from its start, so steps far below the resolution of t still add up. */
-bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, out float tHit, out vec3 albedo)
-{
-  float t = t0;
-  uint steps = 0u;
-  while (t < t1)
-  {
-    float tNext;
-    float mu = majorant_segment(o, d, t, t1, tNext);
-    if (mu > 0.0)
-    {
-      float h = tNext - t;
-      float dt = 0.0;
-      while (true)
-      {
-        dt += sample_exponential(vs_rng_float(rng), mu);
-        if (dt >= h)
-          break;
-        VS_COUNT(0);
-        vec4 c = vs_classify(vs_sample(o + (t + dt) * d, gDims, gInterpolation), gTF);
-        if (vs_rng_float(rng) * mu < c.w || ++steps >= VS_MAX_TRACKING_STEPS)
-        {
-          tHit = t + dt;
-          albedo = c.rgb;
-          return true;
-        }
-      }
-    }
-    t = tNext;
-  }
-  return false;
-}
-
-/* Ratio tracking of the transmittance on [t0, t1), with Russian roulette once it is small. */
-float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng)
-{
-  float T = 1.0;
-  float t = t0;
-  uint steps = 0u;
-  while (t < t1)
-  {
-    float tNext;
-    float mu = majorant_segment(o, d, t, t1, tNext);
-    if (mu > 0.0)
-    {
-      float h = tNext - t;
-      float dt = 0.0;
-      while (true)
-      {
-        dt += sample_exponential(vs_rng_float(rng), mu);
-        if (dt >= h)
-          break;
-        VS_COUNT(0);
-        float sigma = vs_classify(vs_sample(o + (t + dt) * d, gDims, gInterpolation), gTF).w;
-        T *= max(0.0, 1.0 - sigma / mu);
-        if (++steps >= VS_MAX_TRACKING_STEPS)
-          return 0.0;
-        if (T < 0.05)
-        {
-          if (vs_rng_float(rng) < 0.5)
-            return 0.0;
-          T *= 2.0;
-        }
-      }
-    }
-    t = tNext;
-  }
-  return T;
 }
 
 /* The ray interval inside the (cropped) box and the kept side of every clip plane. */
@@ -341,7 +307,7 @@ void direction_values(vec3 x, uint strategy, uint D, inout VsRng rng)
   uint DD = D * D;
   for (uint n = 0u; n < DD; ++n)
     gValues[n] = 0.0;
-  if (P.sampling.z == VS_CELL_STOCHASTIC)
+  if (VS_SPEC_CELL_MODE == VS_CELL_STOCHASTIC)
   {
     /* One corner with probability equal to its trilinear weight. */
     vec3 u = vec3(vs_rng_vec2(rng), vs_rng_float(rng));
@@ -381,10 +347,179 @@ vec3 sample_direction(vec3 x, uint strategy, inout VsRng rng, out float pdf)
   return vs_sample_direction(strategy, D, K, vs_rng_vec2(rng), pdf);
 }
 
+/* ------------------------------------------------------------------ tracking */
+
+
+/* A tracked ray: o + t d up to t1, the current majorant segment [tSeg, tNext) of majorant mu, and
+ * the next tentative collision at tSeg + dt (none in this segment when dt >= tNext - tSeg). The
+ * iterator over majorant segments that delta and ratio tracking share. */
+struct Tracker
+{
+  vec3 o, d;
+  float t1, tSeg, tNext, mu, dt;
+};
+
+Tracker tracker_start(vec3 o, vec3 d, float t0, float t1)
+{
+  /* An empty interval (a ray that misses the box: both ends may be infinite) ends at once. */
+  bool empty = !(t0 < t1);
+  Tracker r;
+  r.o = o;
+  r.d = d;
+  r.t1 = empty ? 0.0 : t1;
+  r.tSeg = empty ? 0.0 : t0;
+  r.tNext = r.tSeg;
+  r.mu = 0.0;
+  r.dt = 0.0;
+  return r;
+}
+
+/* One step of the iterator, for either tracker: true when it stands at a tentative collision
+ * (tracker_point); false after it moved to the next majorant segment (its first exponential
+ * distance drawn; one that overshoots a segment is redrawn in the next: memoryless) or, with
+ * `ended`, at the end of the ray. One loop iteration per step (the majorant walk has no loops), so
+ * a SIMD group's iterations are the most any of its lanes takes, which `cost` counts. */
+bool tracker_step(inout Tracker r, inout VsRng rng, inout uint cost, out bool ended)
+{
+  ended = false;
+  cost += 1u;
+  if (r.dt < r.tNext - r.tSeg)
+    return true;
+  if (r.tNext >= r.t1)
+  {
+    ended = true;
+    return false;
+  }
+  r.tSeg = r.tNext;
+  float tNext;
+  r.mu = majorant_segment(r.o, r.d, r.tSeg, r.t1, tNext);
+  r.tNext = tNext;
+  r.dt = r.mu > 0.0 ? sample_exponential(vs_rng_float(rng), r.mu) : 3.4e38;
+  return false;
+}
+
+vec3 tracker_point(Tracker r)
+{
+  return r.o + (r.tSeg + r.dt) * r.d;
+}
+
+/* After a null collision (or a ratio-tracking step): the next tentative collision. */
+void tracker_advance(inout Tracker r, inout VsRng rng)
+{
+  r.dt += sample_exponential(vs_rng_float(rng), r.mu);
+}
+
+/* Delta tracking on [t0, t1): true at a real collision (tHit, its albedo). Distances inside a
+ * segment count from its start, so steps far below the resolution of t still add up. */
+bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, inout uint cost, out float tHit,
+  out vec3 albedo)
+{
+  float t = t0;
+  uint steps = 0u;
+  while (t < t1)
+  {
+    float tNext;
+    float mu = majorant_segment(o, d, t, t1, tNext);
+    steps++;
+    if (mu > 0.0)
+    {
+      float h = tNext - t;
+      float dt = 0.0;
+      while (true)
+      {
+        dt += sample_exponential(vs_rng_float(rng), mu);
+        if (dt >= h)
+          break;
+        VS_COUNT(0);
+        vec4 c = vs_classify(vs_sample(o + (t + dt) * d, gDims, gInterpolation), gTF);
+        if (vs_rng_float(rng) * mu < c.w || ++steps >= cap)
+        {
+          tHit = t + dt;
+          albedo = c.rgb;
+          cost += steps;
+          return true;
+        }
+      }
+    }
+    t = tNext;
+  }
+  cost += steps;
+  return false;
+}
+
+/* Ratio tracking of the transmittance on [t0, t1), with Russian roulette once it is small. */
+float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, inout uint cost)
+{
+  float T = 1.0;
+  float t = t0;
+  uint steps = 0u;
+  while (t < t1)
+  {
+    float tNext;
+    float mu = majorant_segment(o, d, t, t1, tNext);
+    steps++;
+    if (mu > 0.0)
+    {
+      float h = tNext - t;
+      float dt = 0.0;
+      while (true)
+      {
+        dt += sample_exponential(vs_rng_float(rng), mu);
+        if (dt >= h)
+          break;
+        VS_COUNT(0);
+        float sigma = vs_classify(vs_sample(o + (t + dt) * d, gDims, gInterpolation), gTF).w;
+        T *= max(0.0, 1.0 - sigma / mu);
+        if (++steps >= cap)
+        {
+          cost += steps;
+          return 0.0;
+        }
+        if (T < 0.05)
+        {
+          if (vs_rng_float(rng) < 0.5)
+          {
+            cost += steps;
+            return 0.0;
+          }
+          T *= 2.0;
+        }
+      }
+    }
+    t = tNext;
+  }
+  cost += steps;
+  return T;
+}
+
+/* ------------------------------------------------------------------ the loop budget */
+
+/* Back-edges a scatter step may take, an upper bound: the environment's descent (K levels), the
+ * shadow ray's clip planes; for the grid strategies direction_values' loops over the D x D map
+ * (clear, fill: one cell or 8 corners, weight) and the warp's block sums (vs_warp: at most
+ * 4D + 4/3 D^2 for its levels). */
+uint scatter_cost(uint strategy, uint D, uint K, uint cellMode)
+{
+  uint DD = D * D;
+  uint cost = 16u + 2u * K + 6u + 4u;
+  if (strategy == VS_STRATEGY_UNIFORM || strategy == VS_STRATEGY_ENVIRONMENT || D == 0u)
+    return cost;
+  cost += 16u + 4u * D + 2u * DD + (cellMode == VS_CELL_STOCHASTIC ? DD : 8u * (DD + 1u)) + 2u * DD;
+  return cost;
+}
+
+/* The camera ray's start (its clip planes, the background's 4 texels). */
+const uint VS_START_COST = 16u;
+
+/* The steps (loop iterations) one tracker may take before it gives up (delta_track,
+ * ratio_track): what a sample may cost at most stays well inside a dispatch's budget. */
+const uint VS_TRACKING_CAP = 8192u;
+
+/* ------------------------------------------------------------------ one sample */
+
 /* The compensated per-pixel accumulators, held in registers across the samples of a dispatch
  * (loaded once, stored once). Kahan summation: the sum stays exact to float precision over 1e5+
- * samples. The same additions in the same order as one sample per dispatch, so a fixed seed gives
- * the same bits for any split of the samples into frames and dispatches. */
+ * samples. The same additions in the same order for any split of the samples into dispatches. */
 struct Accumulator
 {
   vec4 sum, comp, sq;
@@ -404,9 +539,12 @@ void accumulate(inout Accumulator acc, vec4 v)
 }
 
 /* One path of pixel `pix`: sample `sampleIndex` of the image (its random numbers depend on the
- * pixel, the sample index and the seed only). Returns (rgb, alpha). */
-vec4 render_sample(uvec2 pix, uint sampleIndex, float depth)
+ * pixel, the sample index and the seed only). Returns (rgb, alpha); adds the back-edges of its
+ * camera and shadow rays to cameraCost and shadowCost, and says whether it scattered. */
+vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, inout uint cameraCost, inout uint shadowCost,
+  out bool scattered)
 {
+  scattered = false;
   uint W = P.viewport.x, H = P.viewport.y;
   VsRng rng = vs_rng_init(pix, sampleIndex, P.viewport.w);
   vec2 jitter = vs_rng_vec2(rng);
@@ -429,11 +567,12 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth)
   vec4 result = vec4(0.0);
   float tHit;
   vec3 albedo;
-  if (t0 < t1 && delta_track(o, d, t0, t1, rng, tHit, albedo))
+  if (t0 < t1 && delta_track(o, d, t0, t1, rng, VS_TRACKING_CAP, cameraCost, tHit, albedo))
   {
     result.a = 1.0;
     if (any(greaterThan(albedo, vec3(0.0))))
     {
+      scattered = true;
       vec3 x = o + tHit * d;
       float pdf;
       vec3 w = sample_direction(x, gStrategy, rng, pdf);
@@ -444,7 +583,7 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth)
         {
           vec3 di = (P.worldToIndex * vec4(w, 0.0)).xyz;
           vec2 ts = ray_interval(x, di);
-          float T = ratio_track(x, di, 0.0, ts.y, rng);
+          float T = ratio_track(x, di, 0.0, ts.y, rng, VS_TRACKING_CAP, shadowCost);
           result.rgb = albedo * VS_INV_4PI * T * Le / pdf;
         }
       }
@@ -464,32 +603,54 @@ void main()
 {
   uvec2 pix = gl_GlobalInvocationID.xy;
   uint W = P.viewport.x, H = P.viewport.y;
-  if (pix.x >= W || pix.y >= H)
-    return;
+  bool inside = pix.x < W && pix.y < H;
   gDims = ivec3(P.dims.xyz);
   gBricks = ivec3(P.bricks.xyz);
   gBrickSize = P.sampling2.z;
   gTF = P.tf;
   gEnvSize = 1u << P.sampling.w;
   gClipCount = P.bricks.w;
-  gStrategy = P.sampling.x;
+  gStrategy = VS_SPEC_STRATEGY;
   gRefineDepth = P.tracking.x > 0.0 ? P.tracking.x : 32.0;
   gInterpolation = uint(P.tracking.y);
   vs_set_cropping(P.cropLo, P.cropHi, P.crop.x);
-  uint idx = pix.y * W + pix.x;
-  float depth = uDepth[idx];
+  uint idx = inside ? pix.y * W + pix.x : 0u;
+  float depth = inside ? uDepth[idx] : 1.0;
 
-  /* pc.sampleCount samples per dispatch, samples sampleOffset.. of the frame. */
   Accumulator acc;
-  acc.sum = uSum[idx];
-  acc.comp = uComp[idx];
-  acc.sq = uSq[idx];
-  uint first = P.viewport.z + pc.sampleOffset;
-  for (uint s = 0u; s < pc.sampleCount; ++s)
-    accumulate(acc, render_sample(pix, first + s, depth));
-  uSum[idx] = acc.sum;
-  uComp[idx] = acc.comp;
-  uSq[idx] = acc.sq;
+  acc.sum = inside ? uSum[idx] : vec4(0.0);
+  acc.comp = inside ? uComp[idx] : vec4(0.0);
+  acc.sq = inside ? uSq[idx] : vec4(0.0);
+  uint done = inside ? uCount[idx] : pc.target;
+
+  /* Samples until the pixel holds pc.target, while the group's back-edges (an upper bound, the
+   * same in every lane: each loop runs as long as its longest lane) leave room for one more
+   * sample at its most expensive. */
+  uint scatterCost = scatter_cost(gStrategy, P.grid.w, P.sampling.w, VS_SPEC_CELL_MODE);
+  uint sampleMax = 2u * (VS_TRACKING_CAP + 1u) + scatterCost + VS_START_COST + 4u;
+  uint cost = 0u;
+  while (subgroupAny(done < pc.target) && cost + sampleMax <= VS_LOOP_BUDGET)
+  {
+    uint cameraCost = 0u, shadowCost = 0u;
+    bool scattered = false;
+    if (done < pc.target)
+    {
+      accumulate(acc, render_sample(pix, done, depth, cameraCost, shadowCost, scattered));
+      done += 1u;
+    }
+    cost += 1u + VS_START_COST + subgroupMax(cameraCost) + subgroupMax(shadowCost) +
+      (subgroupAny(scattered) ? scatterCost : 0u);
+  }
+
+  if (inside)
+  {
+    uSum[idx] = acc.sum;
+    uComp[idx] = acc.comp;
+    uSq[idx] = acc.sq;
+    uCount[idx] = done;
+    if (done < pc.target)
+      atomicAdd(uCount[W * H], 1u);
+  }
 #ifdef VS_COUNT_LOOKUPS
   atomicAdd(uLookups[0], gLookups.x);
   atomicAdd(uLookups[1], gLookups.y);

@@ -116,18 +116,21 @@ float vs_max_extinction(float s0, float s1, vec4 tf)
  * there), so a segment never starts with a sliver across it. */
 const float VS_NEAREST_TOLERANCE = 1e-4; /* voxels: above the rounding of positions o + t d */
 
+float vs_nearest_midplane_distance(float p, float d, int lo)
+{
+  float m = float(lo) + 0.5;
+  if (d > 1e-20 && p < m - VS_NEAREST_TOLERANCE)
+    return (m - p) / d;
+  if (d < -1e-20 && p > m + VS_NEAREST_TOLERANCE)
+    return (m - p) / d;
+  return 1e30;
+}
+
+/* Unrolled (lavapipe's loop limiter counts every back-edge of the render kernel). */
 float vs_nearest_midplane_exit(vec3 p, vec3 d, ivec3 lo)
 {
-  float e = 1e30;
-  for (int i = 0; i < 3; ++i)
-  {
-    float m = float(lo[i]) + 0.5;
-    if (d[i] > 1e-20 && p[i] < m - VS_NEAREST_TOLERANCE)
-      e = min(e, (m - p[i]) / d[i]);
-    else if (d[i] < -1e-20 && p[i] > m + VS_NEAREST_TOLERANCE)
-      e = min(e, (m - p[i]) / d[i]);
-  }
-  return e;
+  return min(vs_nearest_midplane_distance(p.x, d.x, lo.x),
+    min(vs_nearest_midplane_distance(p.y, d.y, lo.y), vs_nearest_midplane_distance(p.z, d.z, lo.z)));
 }
 
 /* The largest extinction nearest-neighbour samples take on a segment inside the voxel cell whose
@@ -147,19 +150,16 @@ float vs_nearest_max_extinction(vec3 f0, vec3 f1, vec4 c0, vec4 c1, vec4 tf)
 {
   bvec3 low = lessThan(f0, vec3(0.5 - VS_NEAREST_TOLERANCE));
   bvec3 high = greaterThan(f1, vec3(0.5 + VS_NEAREST_TOLERANCE));
-  for (int i = 0; i < 3; ++i)
-  {
-    if (!low[i] && !high[i])
-      low[i] = high[i] = true; /* within the tolerance of the midplane: either voxel */
-  }
-  float m = 0.0;
-  for (uint k = 0u; k < 8u; ++k)
-  {
-    bool x = (k & 1u) != 0u, y = (k & 2u) != 0u, z = (k & 4u) != 0u;
-    if ((x ? high.x : low.x) && (y ? high.y : low.y) && (z ? high.z : low.z))
-      m = max(m, vs_classify(z ? c1[k & 3u] : c0[k & 3u], tf).w);
-  }
-  return m;
+  bvec3 neither = not(bvec3(uvec3(low) | uvec3(high))); /* within the tolerance of the midplane: either voxel */
+  low = bvec3(uvec3(low) | uvec3(neither));
+  high = bvec3(uvec3(high) | uvec3(neither));
+  /* The 8 corners, unrolled (lavapipe's loop limiter counts every back-edge of the render kernel). */
+  vec4 e0 = vec4(vs_classify(c0.x, tf).w, vs_classify(c0.y, tf).w, vs_classify(c0.z, tf).w, vs_classify(c0.w, tf).w);
+  vec4 e1 = vec4(vs_classify(c1.x, tf).w, vs_classify(c1.y, tf).w, vs_classify(c1.z, tf).w, vs_classify(c1.w, tf).w);
+  /* Corner (x, y) of a z layer is read when its half is reached along x and y. */
+  vec4 xy = vec4(low.x && low.y, high.x && low.y, low.x && high.y, high.x && high.y);
+  vec4 m = max(e0 * xy * float(low.z), e1 * xy * float(high.z));
+  return max(max(m.x, m.y), max(m.z, m.w));
 }
 
 /* Ray-box intersection in index space; returns (tNear, tFar), empty when tNear >= tFar. */

@@ -17,7 +17,7 @@ vk::DescriptorType ToVk(BindingType t)
 
 ComputePipeline::ComputePipeline(std::shared_ptr<Context> context, const uint32_t* spirv,
   size_t spirvBytes, std::vector<BindingType> bindings, uint32_t pushConstantBytes,
-  const std::string& name)
+  const std::string& name, const std::vector<uint32_t>& specialization)
   : Context_(context)
   , Device_(context->Device())
   , Name_(name)
@@ -65,6 +65,21 @@ ComputePipeline::ComputePipeline(std::shared_ptr<Context> context, const uint32_
   cpci.stage.stage = vk::ShaderStageFlagBits::eCompute;
   cpci.stage.module = this->Module_;
   cpci.stage.pName = "main";
+  std::vector<vk::SpecializationMapEntry> entries;
+  for (uint32_t i = 0; i < specialization.size(); ++i)
+  {
+    vk::SpecializationMapEntry e;
+    e.constantID = i;
+    e.offset = i * uint32_t(sizeof(uint32_t));
+    e.size = sizeof(uint32_t);
+    entries.push_back(e);
+  }
+  vk::SpecializationInfo spec;
+  spec.mapEntryCount = static_cast<uint32_t>(entries.size());
+  spec.pMapEntries = entries.data();
+  spec.dataSize = specialization.size() * sizeof(uint32_t);
+  spec.pData = specialization.data();
+  cpci.stage.pSpecializationInfo = specialization.empty() ? nullptr : &spec;
   cpci.layout = this->Layout_;
   auto result = device.createComputePipeline(nullptr, cpci);
   if (result.result != vk::Result::eSuccess)
@@ -84,10 +99,12 @@ ComputePipeline::~ComputePipeline()
 }
 
 std::shared_ptr<ComputePipeline> SharedPipeline(const std::shared_ptr<Context>& context, const uint32_t* spirv,
-  size_t spirvBytes, std::vector<BindingType> bindings, uint32_t pushConstantBytes, const std::string& name)
+  size_t spirvBytes, std::vector<BindingType> bindings, uint32_t pushConstantBytes, const std::string& name,
+  const std::vector<uint32_t>& specialization)
 {
   return context->Pipeline(name, [&]() {
-    return std::make_shared<ComputePipeline>(context, spirv, spirvBytes, bindings, pushConstantBytes, name);
+    return std::make_shared<ComputePipeline>(
+      context, spirv, spirvBytes, bindings, pushConstantBytes, name, specialization);
   });
 }
 

@@ -26,8 +26,11 @@ enum class BindingType
 class VISSWEEPCORE_EXPORT ComputePipeline
 {
 public:
+  /** `specialization`: the values of the shader's specialization constants 0, 1, ... (uint32
+   *  each), which the driver folds into the code before compiling it. */
   ComputePipeline(std::shared_ptr<Context> context, const uint32_t* spirv, size_t spirvBytes,
-    std::vector<BindingType> bindings, uint32_t pushConstantBytes, const std::string& name);
+    std::vector<BindingType> bindings, uint32_t pushConstantBytes, const std::string& name,
+    const std::vector<uint32_t>& specialization = {});
   ~ComputePipeline();
   ComputePipeline(const ComputePipeline&) = delete;
   ComputePipeline& operator=(const ComputePipeline&) = delete;
@@ -78,7 +81,7 @@ private:
  *  process (compiling takes seconds on lavapipe). */
 VISSWEEPCORE_EXPORT std::shared_ptr<ComputePipeline> SharedPipeline(const std::shared_ptr<Context>& context,
   const uint32_t* spirv, size_t spirvBytes, std::vector<BindingType> bindings, uint32_t pushConstantBytes,
-  const std::string& name);
+  const std::string& name, const std::vector<uint32_t>& specialization = {});
 
 /** The embedded SPIR-V of a shader, as compiled at build time (vs_spirv_<name>). */
 #define VS_SPIRV(array) array, sizeof(array)

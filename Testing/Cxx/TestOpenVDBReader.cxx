@@ -23,6 +23,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -794,4 +796,64 @@ TEST_F(OpenVDBReader, Errors)
   ExpectErrorContaining(reader, tmp.File("gone.vdb"), { "gone.vdb" }, "gone");
   EXPECT_TRUE(RunFile(reader, real)->Errors.empty());
   EXPECT_GT(reader->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+// Issue 13, item 2: damaged compressed leaf data. Blosc has no checksum, so a damaged chunk of the
+// right size decodes to other values without an error from OpenVDB. The reader refuses what it can
+// tell: NaN or infinite active values, a fog volume far outside [0, 1], and an active-voxel count
+// other than the one the writer recorded. (Damage that decodes to plausible values cannot be told.)
+TEST_F(OpenVDBReader, DamagedLeafValuesAreErrors)
+{
+  TempDir tmp;
+  // The shipped smoke step with 64 bytes of 0xff in its Blosc leaf data at byte 19900: it decodes
+  // (before: 16,100 points read without a word), with 3 NaN densities.
+  {
+    std::ifstream in(std::string(VISSWEEP_DATA) + "/smoke/smoke_0004.vdb", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(bytes.size(), 20000u);
+    std::fill(bytes.begin() + 19900, bytes.begin() + 19964, '\xff');
+    const std::string path = tmp.File("damaged_smoke.vdb");
+    std::ofstream(path, std::ios::binary) << bytes;
+    vtkNew<vtkOpenVDBVolumeReader> reader;
+    ExpectErrorContaining(reader, path, { "active voxels of grid", "are NaN or infinite", "damaged leaf data" },
+      "damaged smoke");
+  }
+  {
+    openvdb::FloatGrid::Ptr grid = SmallGrid(openvdb::math::Transform::createLinearTransform(1.0));
+    grid->getAccessor().setValue(openvdb::Coord(1, 1, 6), std::numeric_limits<float>::quiet_NaN());
+    const std::string path = tmp.File("nan.vdb");
+    Write(path, { grid });
+    vtkNew<vtkOpenVDBVolumeReader> reader;
+    ExpectErrorContaining(reader, path, { "1 active voxels", "NaN or infinite" }, "NaN value");
+  }
+  {
+    openvdb::FloatGrid::Ptr grid = SmallGrid(openvdb::math::Transform::createLinearTransform(1.0));
+    grid->setGridClass(openvdb::GRID_FOG_VOLUME);
+    grid->getAccessor().setValue(openvdb::Coord(1, 1, 6), 2.5e36f);
+    const std::string path = tmp.File("fog_huge.vdb");
+    Write(path, { grid });
+    vtkNew<vtkOpenVDBVolumeReader> reader;
+    ExpectErrorContaining(reader, path, { "is a fog volume", "2.5e+36" }, "fog volume far beyond 1");
+  }
+  {
+    // A fog volume somewhat past 1 (real exports do that; SmallGrid holds -1 to 2.5) reads.
+    openvdb::FloatGrid::Ptr grid = SmallGrid(openvdb::math::Transform::createLinearTransform(1.0));
+    grid->setGridClass(openvdb::GRID_FOG_VOLUME);
+    const std::string path = tmp.File("fog.vdb");
+    Write(path, { grid });
+    vtkNew<vtkOpenVDBVolumeReader> reader;
+    vtkSmartPointer<Messages> msgs = RunFile(reader, path);
+    EXPECT_TRUE(msgs->Errors.empty()) << msgs->AllErrors();
+    EXPECT_GT(reader->GetOutput()->GetNumberOfPoints(), 0);
+  }
+  {
+    openvdb::FloatGrid::Ptr grid = SmallGrid(openvdb::math::Transform::createLinearTransform(1.0));
+    grid->insertMeta(openvdb::GridBase::META_FILE_BBOX_MIN, openvdb::Vec3IMetadata(openvdb::Vec3i(-3, -1, 5)));
+    grid->insertMeta(openvdb::GridBase::META_FILE_BBOX_MAX, openvdb::Vec3IMetadata(openvdb::Vec3i(4, 2, 9)));
+    grid->insertMeta(openvdb::GridBase::META_FILE_VOXEL_COUNT, openvdb::Int64Metadata(5));
+    const std::string path = tmp.File("count.vdb");
+    Write(path, { grid }, /*stats=*/false);
+    vtkNew<vtkOpenVDBVolumeReader> reader;
+    ExpectErrorContaining(reader, path, { "has 4 active voxels but the file's metadata says 5" }, "voxel count");
+  }
 }

@@ -237,7 +237,8 @@ int TestMapperVtkSettings(int, char*[])
   m->Print(print);
   for (const char* line : { "RenderMode: MonteCarlo", "CellMode: StochasticCell", "UpdateScheme: RoundRobin",
          "AccumulationResetCount: ", "EnvironmentUploadCount: ", "MajorantUpdateCount: ", "LastSweepSeconds: ",
-         "TimeToDraw: ", "MonteCarlo tracking is exact" })
+         "TimeToDraw: ", "MonteCarlo tracking is exact",
+         "Environment: none connected: a constant white sky of radiance 1 (the default)" })
   {
     Check(print.str().find(line) != std::string::npos, std::string("PrintSelf prints '") + line + "'");
   }

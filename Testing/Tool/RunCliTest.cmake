@@ -23,7 +23,16 @@ set(cases
   "out of range|render ${SCENE} -o x.png --width 0|width"
   "not a number|render ${SCENE} -o x.png --spp many|spp"
   "excluded pair|render ${SCENE} -o x.png --spp 4 --time-budget 2|excludes"
-  "missing output|render ${SCENE}|output")
+  "missing output|render ${SCENE}|output"
+  # Non-finite numbers (issue 13, item 5): CLI11 parses them as doubles and PositiveNumber let
+  # NaN and +inf through (a NaN budget was ignored, an infinite one rendered 2^30 spp).
+  "NaN budget|render ${SCENE} -o x.png --time-budget nan|time-budget: Value nan is not a finite number"
+  "infinite budget|render ${SCENE} -o x.png --time-budget inf|time-budget: Value inf is not a finite number"
+  "overflowing budget|render ${SCENE} -o x.png --time-budget 1e999|Value 1e999 is not a finite number"
+  "NaN frame budget|bench animation ${SCENE} --budget-per-frame nan|budget-per-frame: Value nan is not a finite number"
+  "infinite budgets|bench convergence ${SCENE} --budgets 1,inf|budgets: Value inf is not a finite number"
+  # Issue 13, item 9: the seed's bounds as integers, not a 309-digit double.
+  "negative seed|render ${SCENE} -o x.png --seed -5|--seed: Value -5 not in range 0 to 2147483647")
 foreach (c IN LISTS cases)
   string(REPLACE "|" ";" parts "${c}")
   list(LENGTH parts n)

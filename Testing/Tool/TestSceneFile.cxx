@@ -6,7 +6,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <functional>
+#include <utility>
 
 #include <unistd.h>
 
@@ -427,6 +429,67 @@ TEST(SceneFile, BadValues)
     "volume: give either 'file' or 'files'");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["volume"]["time_step"] = 0; }),
     "volume.time_step: only for a sequence");
+}
+
+// Issue 13, item 5: finite doubles the renderer's float cannot hold are refused, naming the key and
+// the limit (they used to become infinities or zeros on the device: an all-NaN image, an empty
+// transfer function, an ignored plane). Directions are only ways: (1e300, 0, 0) is +X.
+TEST(SceneFile, NumbersOutsideFloatRangeAreRefused)
+{
+  const std::string limit = "is outside the range of float, which the renderer computes in (magnitude at most 3.40282e+38)";
+  const std::pair<std::function<void(json&)>, std::string> cases[] = {
+    { [](json& j) { j["environment"]["intensity"] = 1e39; }, "environment.intensity: 1e+39 " + limit },
+    { [](json& j) { j["environment"]["sun"]["radiance"][1] = 5e38; }, "environment.sun.radiance[1]: 5e+38 " + limit },
+    { [](json& j) { j["environment"]["background"][2] = 1e300; }, "environment.background[2]: 1e+300 " + limit },
+    { [](json& j) { j["transfer_function"]["opacity"][2][0] = 1e39; },
+      "transfer_function.opacity[2][0]: 1e+39 " + limit },
+    { [](json& j) { j["transfer_function"]["opacity"][0][0] = -1e39; },
+      "transfer_function.opacity[0][0]: -1e+39 " + limit },
+    { [](json& j) { j["transfer_function"]["color"][1][0] = 4e38; }, "transfer_function.color[1][0]: 4e+38 " + limit },
+    { [](json& j) { j["transfer_function"]["density_scale"] = 1e40; },
+      "transfer_function.density_scale: 1e+40 " + limit },
+    { [](json& j) { j["camera"]["position"][0] = -1e39; }, "camera.position[0]: -1e+39 " + limit },
+    { [](json& j) { j["camera"]["focal_point"][2] = 1e300; }, "camera.focal_point[2]: 1e+300 " + limit },
+    { [](json& j) { j["render"]["exposure"] = 1e39; }, "render.exposure: 1e+39 " + limit },
+    { [](json& j) { j["clip_planes"][1]["origin"][1] = 1e39; }, "clip_planes[1].origin[1]: 1e+39 " + limit },
+    { [](json& j) { j["transfer_function"]["unit_distance"] = 1e-40; },
+      "transfer_function.unit_distance: the unit distance 1e-40 is outside the range of float, which the renderer "
+      "computes in (between 1.17549e-38 and 3.40282e+38)" },
+    { [](json& j) { j["transfer_function"]["unit_distance"] = 1e39; },
+      "transfer_function.unit_distance: the unit distance 1e+39 is outside the range of float" },
+    { [](json& j) { j["camera"]["parallel_scale"] = 1e-39; },
+      "camera.parallel_scale: the parallel scale 1e-39 is outside the range of float" },
+    { [](json& j) { j["camera"]["parallel_scale"] = 1e39; },
+      "camera.parallel_scale: the parallel scale 1e+39 is outside the range of float" },
+  };
+  for (const auto& c : cases)
+  {
+    EXPECT_ERROR_STARTS(ErrorAfter(c.first), c.second);
+  }
+  // At the limits: accepted.
+  EXPECT_EQ(ErrorAfter([](json& j) {
+    j["environment"]["intensity"] = 3.4e38;
+    j["transfer_function"]["unit_distance"] = 1.2e-38;
+    j["transfer_function"]["opacity"][0][0] = -3.4e38;
+    j["camera"]["parallel_scale"] = 3.4e38;
+  }),
+    "");
+  // Huge and tiny directions are directions: the sun, the view up and a clip-plane normal.
+  EXPECT_EQ(ErrorAfter([](json& j) {
+    j["environment"]["sun"]["direction"] = { 1e300, 0, 1e300 };
+    j["camera"]["view_up"] = { 0, 0, 1e-300 };
+    j["clip_planes"][0]["normal"] = { 1e300, 0, 0 };
+  }),
+    "");
+  const vstool::Vec3 n = vstool::Normalized({ 1e300, 0, -1e300 });
+  EXPECT_DOUBLE_EQ(n[0], std::sqrt(0.5));
+  EXPECT_EQ(n[1], 0.0);
+  EXPECT_DOUBLE_EQ(n[2], -std::sqrt(0.5));
+  const vstool::Vec3 t = vstool::Normalized({ 0, 1e-310, 0 });
+  EXPECT_EQ(t[1], 1.0);
+  // Still a view up parallel to the view direction when tiny.
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["camera"]["view_up"] = { 90e-300, 508e-300, 90e-300 }; }),
+    "camera.view_up: parallel to the view direction");
 }
 
 TEST(SceneFile, UnsortedTransferFunctions)

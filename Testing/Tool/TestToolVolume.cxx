@@ -13,6 +13,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 
+#include <array>
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
@@ -257,6 +258,40 @@ TEST(ToolVolume, HugeHeaderIsRefusedWithItsSize)
   const std::string e = ErrorOf(path);
   EXPECT_CONTAINS(e, path);
   EXPECT_CONTAINS(e, "32767 x 32767 x 32767");
+}
+
+// Issue 13, item 7: a size check runs on the header's dimensions before the data is read: for a
+// header whose data is missing, its reason comes first, not the reader's "truncated".
+TEST(ToolVolume, SizeCheckRunsBeforeTheDataIsRead)
+{
+  std::vector<char> b = Bytes(WriteNifti("s.nii"));
+  ASSERT_GT(b.size(), 352u);
+  const int16_t n = 1200;
+  for (int axis = 1; axis <= 3; ++axis)
+  {
+    std::memcpy(&b[40 + 2 * axis], &n, sizeof(n)); // dim[axis]
+  }
+  b.resize(352); // the header only
+  const std::string path = PathOf("sized.nii");
+  WriteBytes(path, b);
+  std::array<int, 3> seen{ 0, 0, 0 };
+  std::string e;
+  try
+  {
+    vstool::ReadVolume(path, "density", vtkIdType(1) << 31, [&seen](const std::array<int, 3>& d) {
+      seen = d;
+      return std::string("too large for the test's device");
+    });
+  }
+  catch (const std::runtime_error& x)
+  {
+    e = x.what();
+  }
+  EXPECT_EQ(seen, (std::array<int, 3>{ 1200, 1200, 1200 }));
+  EXPECT_CONTAINS(e, path);
+  EXPECT_CONTAINS(e, "its header describes 1200 x 1200 x 1200 (1728000000 points): too large for the test's device");
+  // Without a check (or one that passes) the reader says what is wrong with the file.
+  EXPECT_CONTAINS(ErrorOf(path), "truncated");
 }
 
 TEST(ToolVolume, ZeroSpacingIsRefused)

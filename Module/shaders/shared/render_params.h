@@ -15,6 +15,12 @@ VS_NAMESPACE_BEGIN
 VS_CONST uint VS_CELL_TRILINEAR = 0u;  /* interpolate the 8 cells' maps (von Radziewsky et al. 2017) */
 VS_CONST uint VS_CELL_STOCHASTIC = 1u; /* pick one cell with its trilinear weight */
 
+/* Loop back-edges one invocation of the render kernel takes at most per dispatch (an upper bound
+ * the kernel keeps). Lavapipe ends every loop of an invocation once they have taken 65535 together
+ * (llvmpipe's loop limiter), silently: the kernel stops below that and resumes in the next dispatch
+ * (TestDriverLoopLimit). */
+VS_CONST uint VS_LOOP_BUDGET = 60000u;
+
 struct VsRenderParams
 {
   mat4 invViewProj;  /* OpenGL NDC (z in [-1,1]) -> world */
