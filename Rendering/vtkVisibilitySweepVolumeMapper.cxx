@@ -714,7 +714,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   }
   auto b = I.Scene->Majorants().Bricks();
   p.bricks = glm::uvec4(b[0], b[1], b[2], uint32_t(planes.size()));
-  p.tracking.y = float(I.Scene->Interpolation()); // nearest (VTK's default) or trilinear
+  p.tracking.w = float(I.Scene->Interpolation()); // nearest (VTK's default) or trilinear
   p.cropLo = glm::vec4(geometry.CropLo, 0.0f);
   p.cropHi = glm::vec4(geometry.CropHi, 0.0f);
   p.crop = glm::uvec4(geometry.CropFlags, 0u, 0u, 0u);

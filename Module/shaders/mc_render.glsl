@@ -84,7 +84,7 @@ uint gEnvSize;
 uint gClipCount;
 uint gStrategy;
 float gRefineDepth;
-uint gInterpolation; /* interpolation.h: the scalar's reconstruction (P.tracking.y) */
+uint gInterpolation; /* interpolation.h: the scalar's reconstruction (P.tracking.w) */
 /* The direction map of this sample (D x D <= 256 values), which the strategies read through
  * vs_map_value (vs_prelude.h): one module-scope array, never copied into calls. */
 float gValues[256];
@@ -612,7 +612,7 @@ void main()
   gClipCount = P.bricks.w;
   gStrategy = VS_SPEC_STRATEGY;
   gRefineDepth = P.tracking.x > 0.0 ? P.tracking.x : 32.0;
-  gInterpolation = uint(P.tracking.y);
+  gInterpolation = uint(P.tracking.w);
   vs_set_cropping(P.cropLo, P.cropHi, P.crop.x);
   uint idx = inside ? pix.y * W + pix.x : 0u;
   float depth = inside ? uDepth[idx] : 1.0;

@@ -189,7 +189,7 @@ TEST(MonteCarlo, CellMajorantWalkIsUnbiased)
   }
 }
 
-// Nearest interpolation (render_params.h tracking.y = 1): a label map of the scalars 0 and 1 under
+// Nearest interpolation (render_params.h tracking.w = 1): a label map of the scalars 0 and 1 under
 // a transfer function opaque only at 0.5 has no medium anywhere, so delta tracking never collides
 // (alpha exactly 0 at every pixel) although every brick's majorant (over the scalar range [0, 1])
 // is that of 0.5 and the cell walk refines the optically thick bricks. Trilinear (as before) sees
@@ -202,7 +202,7 @@ TEST(MonteCarlo, NearestInterpolationSeesNoBlendedLabels)
   for (uint32_t strategy : { VS_STRATEGY_ENVIRONMENT, VS_STRATEGY_TWO_STEP })
   {
     auto p = scene.Params(8, 8, -1.0f, 18.0f, strategy, 16, 5u);
-    p.tracking.y = float(VS_INTERPOLATION_NEAREST);
+    p.tracking.w = float(VS_INTERPOLATION_NEAREST);
     auto [nearest, vn] = scene.Render(p, 2);
     double maxAlpha = 0.0;
     for (size_t i = 3; i < nearest.size(); i += 4)
@@ -210,7 +210,7 @@ TEST(MonteCarlo, NearestInterpolationSeesNoBlendedLabels)
       maxAlpha = std::max(maxAlpha, double(nearest[i]));
     }
     EXPECT_EQ(maxAlpha, 0.0) << kNames[strategy] << ": nearest samples never read a blended label";
-    p.tracking.y = float(VS_INTERPOLATION_LINEAR);
+    p.tracking.w = float(VS_INTERPOLATION_LINEAR);
     auto [linear, vl] = scene.Render(p, 2);
     double meanAlpha = 0.0;
     for (size_t i = 3; i < linear.size(); i += 4)
@@ -238,7 +238,7 @@ TEST(MonteCarlo, NearestCellMajorantWalkIsUnbiased)
   for (uint32_t strategy : { VS_STRATEGY_UNIFORM, VS_STRATEGY_ENVIRONMENT })
   {
     auto p = scene.Params(8, 8, -2.0f, 18.0f, strategy, 512, 3u, true);
-    p.tracking.y = float(VS_INTERPOLATION_NEAREST);
+    p.tracking.w = float(VS_INTERPOLATION_NEAREST);
     auto [a, va] = scene.Render(p, 4);
     const double n = scene.LastSamples;
     p.tracking.x = 0.05f;
