@@ -1,4 +1,6 @@
 #include "vsVolumeInput.h"
+#include "shared/vs_prelude.h"
+#include "vsError.h"
 #include "vsFloatRange.h"
 
 #include "vtkColorTransferFunction.h"
@@ -236,6 +238,99 @@ VolumeGeometry CropGeometry(const VolumeGeometry& geometry, vtkImageData* image,
     g.BoxMax[i] = float(std::min(double(g.BoxMax[i]), hi[i]));
   }
   return g;
+}
+
+VolumeGeometry CropRegions(const VolumeGeometry& geometry, vtkImageData* image, const double planes[6], int flags)
+{
+  // The planes in index space: CropGeometry with the full box gives them (clamped to the box).
+  const VolumeGeometry inner = CropGeometry(geometry, image, planes);
+  const uint32_t visible = uint32_t(flags) & 0x7ffffffu;
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  int regions = 0;
+  for (uint32_t r = 0; r < 27; ++r)
+  {
+    if (!(visible & (1u << r)))
+    {
+      continue;
+    }
+    ++regions;
+    const uint32_t c[3] = { r % 3, (r / 3) % 3, r / 9 };
+    for (int i = 0; i < 3; ++i)
+    {
+      const float a = c[i] == 0 ? geometry.BoxMin[i] : c[i] == 1 ? inner.BoxMin[i] : inner.BoxMax[i];
+      const float b = c[i] == 0 ? inner.BoxMin[i] : c[i] == 1 ? inner.BoxMax[i] : geometry.BoxMax[i];
+      lo[i] = std::min(lo[i], a);
+      hi[i] = std::max(hi[i], b);
+    }
+  }
+  VolumeGeometry g = geometry;
+  if (regions == 0)
+  {
+    g.BoxMin = glm::vec3(1.0f);
+    g.BoxMax = glm::vec3(0.0f); // nothing visible
+    return g;
+  }
+  g.BoxMin = glm::max(geometry.BoxMin, lo);
+  g.BoxMax = glm::min(geometry.BoxMax, hi);
+  if (regions > 1)
+  {
+    // A union of boxes: the passes test each point's region (a single region is exactly the box).
+    g.CropLo = inner.BoxMin;
+    g.CropHi = inner.BoxMax;
+    g.CropFlags = visible;
+  }
+  return g;
+}
+
+std::vector<glm::dvec4> EffectiveClipPlanes(const std::vector<glm::dvec4>& planes, const VolumeGeometry& geometry)
+{
+  if (glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax)))
+  {
+    return {}; // cropped away: nothing to clip
+  }
+  glm::dvec3 corners[8];
+  for (int c = 0; c < 8; ++c)
+  {
+    const glm::dvec4 i((c & 1) ? geometry.BoxMax.x : geometry.BoxMin.x, (c & 2) ? geometry.BoxMax.y : geometry.BoxMin.y,
+      (c & 4) ? geometry.BoxMax.z : geometry.BoxMin.z, 1.0);
+    corners[c] = glm::dvec3(geometry.IndexToWorld * i);
+  }
+  std::vector<glm::dvec4> kept;
+  for (const glm::dvec4& p : planes)
+  {
+    const glm::dvec3 n(p);
+    // Distances in units of |n| (VTK's normals need not be unit), with a tolerance of 1e-9 of the
+    // box's size for a plane on a face of the box (a box widget at the volume's bounds).
+    const double length = glm::length(n);
+    if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(p.w))
+    {
+      throw InputError("a clipping plane has a zero or non-finite normal or origin");
+    }
+    const double tolerance = 1e-9 * glm::length(corners[7] - corners[0]);
+    double lo = 1e300, hi = -1e300;
+    for (const glm::dvec3& x : corners)
+    {
+      const double s = (glm::dot(n, x) + p.w) / length;
+      lo = std::min(lo, s);
+      hi = std::max(hi, s);
+    }
+    if (lo >= -tolerance)
+    {
+      continue; // keeps the whole box
+    }
+    if (hi < 0.0)
+    {
+      return { p }; // removes the whole box
+    }
+    kept.push_back(p);
+  }
+  if (kept.size() > shared::VS_MAX_CLIP_PLANES)
+  {
+    throw InputError(std::to_string(kept.size()) + " clipping planes cut the volume; at most " +
+      std::to_string(shared::VS_MAX_CLIP_PLANES) +
+      " are supported (vtkGPUVolumeRayCastMapper's limit too); planes that clip nothing of it are not counted");
+  }
+  return kept;
 }
 
 std::vector<float> ScalarsAsFloat(vtkDataArray* scalars)

@@ -55,6 +55,23 @@ VISSWEEPFILTERS_EXPORT VolumeGeometry ComputeGeometry(vtkImageData* image, vtkMa
 VISSWEEPFILTERS_EXPORT VolumeGeometry CropGeometry(const VolumeGeometry& geometry, vtkImageData* image,
   const double planes[6]);
 
+/** The geometry cropped to VTK's cropping regions: `planes` as in CropGeometry, `flags` VTK's
+ *  CroppingRegionFlags (bit rx + 3 ry + 9 rz of the 27 regions, r = 0 below a plane pair, 1
+ *  between, 2 above). The box is cut to the bounding box of the visible regions; when they are not
+ *  that one box (VTK_CROP_FENCE, _CROSS, their inversions, any other union) the geometry carries
+ *  the planes and flags (VolumeGeometry::CropFlags) and the passes treat points of hidden regions
+ *  as empty space. No visible region: an empty box. */
+VISSWEEPFILTERS_EXPORT VolumeGeometry CropRegions(const VolumeGeometry& geometry, vtkImageData* image,
+  const double planes[6], int flags);
+
+/** The clipping planes (world (n, w), kept where dot(n, x) + w >= 0) that matter for the volume's
+ *  (cropped) index box in `geometry`: a plane that keeps the whole box is dropped (it clips
+ *  nothing), a plane that removes the whole box is the only one returned, and an empty box needs
+ *  none. Throws InputError when more than VS_MAX_CLIP_PLANES (8, vtkGPUVolumeRayCastMapper's
+ *  limit) planes cut the box. */
+VISSWEEPFILTERS_EXPORT std::vector<glm::dvec4> EffectiveClipPlanes(
+  const std::vector<glm::dvec4>& planes, const VolumeGeometry& geometry);
+
 /** The scalars as floats, x fastest (component 0). */
 VISSWEEPFILTERS_EXPORT std::vector<float> ScalarsAsFloat(vtkDataArray* scalars);
 

@@ -5,6 +5,7 @@
 #include "vsMajorantGrid.h"
 #include "vsTransferFunctionTable.h"
 #include "vsVolumeInput.h"
+#include "shared/interpolation.h"
 
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -121,6 +122,16 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
     this->PropertyTime_ = property->GetMTime();
     this->DensityScale_ = densityScale;
     this->ExtinctionCap_ = cap;
+  }
+  // Nearest or trilinear reconstruction of the scalar: a different extinction between voxels
+  // (the same table and majorants: a brick's majorant bounds both), so the visibility changes.
+  const uint32_t interpolation = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
+    ? shared::VS_INTERPOLATION_NEAREST
+    : shared::VS_INTERPOLATION_LINEAR;
+  if (interpolation != this->Interpolation_)
+  {
+    changes.Interpolation = changes.Extinction = changes.TransferFunction = true;
+    this->Interpolation_ = interpolation;
   }
   return changes;
 }

@@ -19,6 +19,8 @@
 
 #include "vtkType.h"
 
+#include <cstdint>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +47,7 @@ public:
     bool Albedo = false;     // the colour transfer function changed
     bool Geometry = false;   // the index <-> world transform changed (prop matrix, spacing, origin)
     bool TransferFunction = false; // the vtkVolumeProperty or the density scale changed (any column)
+    bool Interpolation = false; // the property's InterpolationType changed (extinction between voxels)
   };
 
   explicit VolumeScene(std::shared_ptr<Context> context);
@@ -76,6 +79,10 @@ public:
 
   /** Counters of the work done (for tests of the skip rules). */
   int Uploads() const { return this->Uploads_; }
+
+  /** The property's InterpolationType as the shaders take it (shared/interpolation.h:
+   *  VS_INTERPOLATION_LINEAR or VS_INTERPOLATION_NEAREST). */
+  uint32_t Interpolation() const { return this->Interpolation_; }
   int TableBuilds() const { return this->TableBuilds_; }
 
 private:
@@ -90,6 +97,7 @@ private:
   double DensityScale_ = -1.0;
   float ExtinctionCap_ = -1.0f;
   int Uploads_ = 0, TableBuilds_ = 0;
+  uint32_t Interpolation_ = 0;
 };
 }
 #endif

@@ -145,6 +145,7 @@ int vtkVisibilityGridFilter::RequestData(
   p.Algorithm = this->Method == BruteForce ? vs::VisibilityGridParameters::Method::BruteForce
                                            : vs::VisibilityGridParameters::Method::Sweep;
   p.BruteForceSamples = uint32_t(this->BruteForceSamples);
+  p.NearestInterpolation = this->VolumeProperty->GetInterpolationType() == VTK_NEAREST_INTERPOLATION;
   p.StorageFormat = this->StorageFormat == Float32 ? vs::VisibilityGridParameters::Format::Float32
     : this->StorageFormat == Unorm16               ? vs::VisibilityGridParameters::Format::Unorm16
                                                    : vs::VisibilityGridParameters::Format::Unorm8;
@@ -178,6 +179,7 @@ int vtkVisibilityGridFilter::RequestData(
       }
     }
     const vs::VolumeScene& scene = *this->Impl->Scene;
+    planes = vs::EffectiveClipPlanes(planes, scene.Geometry()); // only those that cut the volume count
     vs::VisibilityGrid::CheckFits(*ctx, scene.Geometry(), p);
     this->UpdateProgress(0.0);
     this->Impl->Grid->Compute(scene.Volume(), scene.TF(), scene.Majorants(), scene.Geometry(), planes, p, {},

@@ -4,7 +4,8 @@
  *
  * Input: a vtkImageData volume with point scalars and, via SetVolumeProperty(), the
  * transfer function that turns them into extinction (sigma_t = -ln(1 - alpha) / unit
- * distance, as VisSweep's renderer). Output: a vtkImageData whose points are the
+ * distance, as VisSweep's renderer; the property's InterpolationType chooses nearest, VTK's
+ * default, or trilinear reconstruction of the scalar). Output: a vtkImageData whose points are the
  * visibility cells' centres, aligned with the input (origin, spacing, direction):
  * - point array "Visibility": D*D components, V(cell, direction n), direction n being
  *   the centre of texel (n % D, n / D) of the equal-area octahedral map (field data

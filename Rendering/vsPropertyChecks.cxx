@@ -65,12 +65,6 @@ std::vector<std::string> PropertyChecks::Ignored(
   std::vector<std::string> ignored;
   if (property)
   {
-    if (property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION)
-    {
-      ignored.push_back("vtkVolumeProperty InterpolationType is nearest (VTK's default), but VisSweep interpolates "
-                        "trilinearly: label maps show blended labels between their regions. Call "
-                        "SetInterpolationTypeToLinear() to silence this");
-    }
     if (HasEffectiveGradientOpacity(property))
     {
       ignored.push_back("the vtkVolumeProperty's gradient opacity is ignored: VisSweep's opacity depends on the "
@@ -85,11 +79,16 @@ std::vector<std::string> PropertyChecks::Ignored(
             "Specular and SpecularPower are ignored");
     }
   }
-  if (mapper && mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
+  // Composite is light transport (or emission-absorption); MIP, MinIP, average and additive are
+  // projections, rendered through the emission-absorption path. What is left is not supported.
+  const int blend = mapper ? mapper->GetBlendMode() : vtkVolumeMapper::COMPOSITE_BLEND;
+  if (blend != vtkVolumeMapper::COMPOSITE_BLEND && blend != vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND &&
+    blend != vtkVolumeMapper::MINIMUM_INTENSITY_BLEND && blend != vtkVolumeMapper::AVERAGE_INTENSITY_BLEND &&
+    blend != vtkVolumeMapper::ADDITIVE_BLEND)
   {
-    ignored.push_back(std::string("the blend mode ") + BlendModeName(mapper->GetBlendMode()) +
-      " is ignored: VisSweep renders COMPOSITE_BLEND (light transport; projections such as MIP are not "
-      "supported yet)");
+    ignored.push_back(std::string("the blend mode ") + BlendModeName(blend) +
+      " is not supported: VisSweep renders it as COMPOSITE_BLEND (MIP, MinIP, average and additive are "
+      "supported)");
   }
   if (renderer && renderer->GetUseDepthPeeling() && renderer->GetUseDepthPeelingForVolumes())
   {

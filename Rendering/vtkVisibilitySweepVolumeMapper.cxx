@@ -13,6 +13,7 @@
 #include "vsStrategySelector.h"
 #include "vsVisibilityGrid.h"
 #include "vsVisibilityGridUpdater.h"
+#include "shared/interpolation.h"
 #include "shared/update_order.h"
 #include "vsVisibilityImage.h"
 #include "vsError.h"
@@ -41,6 +42,7 @@
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+#include "vtkWeakPointer.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -73,6 +75,22 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::vector<double> ImageSignature; // what the accumulated image was rendered for
   vtkSmartPointer<vtkImageData> Radiance;
   vtkSmartPointer<vtkImageData> VisibilityImage;
+  // One accumulator per renderer (two views of one volume): MC, MCGrid, Interactive, ImageSignature
+  // and Selector above are the current view's; the other views' wait here (SwitchView).
+  struct View
+  {
+    vtkWeakPointer<vtkRenderer> Renderer;
+    std::unique_ptr<vs::MonteCarloPass> MC, MCGrid, Interactive;
+    std::vector<double> ImageSignature;
+    vs::StrategySelector Selector;
+    uint64_t GridGeneration = 0; // the grid its selector knows
+  };
+  vtkWeakPointer<vtkRenderer> CurrentView;
+  bool HasCurrentView = false;
+  std::vector<View> OtherViews;
+  uint64_t GridGeneration() const { return this->Grid ? uint64_t(this->Grid->Generation()) : 0u; }
+  void SwitchView(vtkRenderer* ren);
+  bool ReleaseViewsOf(vtkWindow* win);
   std::string LastError;
   vs::PropertyChecks Checks; // the settings VisSweep ignores, warned once per change
   vtkMTimeType ErrorStamp = 0;        // the inputs' newest modification time when LastError was reported
@@ -80,8 +98,91 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   uint32_t Frame = 0;
 };
 
+// Makes `ren`'s accumulator the current one: the current view's state goes to OtherViews, ren's
+// comes back from there (or starts empty). Views whose renderer was deleted are forgotten.
+void vtkVisibilitySweepVolumeMapper::Internals::SwitchView(vtkRenderer* ren)
+{
+  if (this->HasCurrentView && this->CurrentView.GetPointer() == ren)
+  {
+    return;
+  }
+  if (this->HasCurrentView && this->CurrentView)
+  {
+    View v;
+    v.Renderer = this->CurrentView;
+    v.MC = std::move(this->MC);
+    v.MCGrid = std::move(this->MCGrid);
+    v.Interactive = std::move(this->Interactive);
+    v.ImageSignature = std::move(this->ImageSignature);
+    v.Selector = this->Selector;
+    v.GridGeneration = this->GridGeneration();
+    this->OtherViews.push_back(std::move(v));
+  }
+  this->OtherViews.erase(std::remove_if(this->OtherViews.begin(), this->OtherViews.end(),
+                           [](const View& v) { return !v.Renderer; }),
+    this->OtherViews.end());
+  this->MC.reset();
+  this->MCGrid.reset();
+  this->Interactive.reset();
+  this->ImageSignature.clear();
+  this->Selector = vs::StrategySelector();
+  for (auto it = this->OtherViews.begin(); it != this->OtherViews.end(); ++it)
+  {
+    if (it->Renderer.GetPointer() == ren)
+    {
+      this->MC = std::move(it->MC);
+      this->MCGrid = std::move(it->MCGrid);
+      this->Interactive = std::move(it->Interactive);
+      this->ImageSignature = std::move(it->ImageSignature);
+      this->Selector = it->Selector;
+      if (it->GridGeneration != this->GridGeneration())
+      {
+        this->Selector.ResetGrid(); // a new grid arrived while another view rendered
+      }
+      this->OtherViews.erase(it);
+      break;
+    }
+  }
+  this->CurrentView = ren;
+  this->HasCurrentView = true;
+}
+
+// Forgets the views shown in `win` (and those whose renderer is gone); returns whether views in
+// other windows remain, which keep the shared device state (volume, grid, environment).
+bool vtkVisibilitySweepVolumeMapper::Internals::ReleaseViewsOf(vtkWindow* win)
+{
+  auto inWindow = [win](vtkRenderer* r) { return !r || static_cast<vtkWindow*>(r->GetRenderWindow()) == win; };
+  this->OtherViews.erase(std::remove_if(this->OtherViews.begin(), this->OtherViews.end(),
+                           [&](const View& v) { return inWindow(v.Renderer); }),
+    this->OtherViews.end());
+  if (this->HasCurrentView && inWindow(this->CurrentView))
+  {
+    this->MC.reset();
+    this->MCGrid.reset();
+    this->Interactive.reset();
+    this->ImageSignature.clear();
+    this->Selector = vs::StrategySelector();
+    this->CurrentView = nullptr;
+    this->HasCurrentView = false;
+  }
+  return this->HasCurrentView || !this->OtherViews.empty();
+}
+
 namespace
 {
+static_assert(vs::shared::VS_BLEND_MAXIMUM == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND &&
+    vs::shared::VS_BLEND_MINIMUM == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND &&
+    vs::shared::VS_BLEND_AVERAGE == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND &&
+    vs::shared::VS_BLEND_ADDITIVE == vtkVolumeMapper::ADDITIVE_BLEND,
+  "the shaders' blend modes are VTK's values");
+
+// The blend modes rendered as projections through the emission-absorption path.
+bool IsProjection(int blendMode)
+{
+  return blendMode == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND || blendMode == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND ||
+    blendMode == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND || blendMode == vtkVolumeMapper::ADDITIVE_BLEND;
+}
+
 // Filmic tone curve (Narkowicz's fit of ACES) and the sRGB transfer function.
 float Filmic(float x)
 {
@@ -117,7 +218,7 @@ bool NearlyEqual(const std::vector<double>& a, const std::vector<double>& b)
 // so switching Uniform -> Environment kept accumulating into the old image.
 std::vector<double> RenderSignature(const vs::shared::VsRenderParams& p)
 {
-  static_assert(sizeof(vs::shared::VsRenderParams) == 2 * 64 + 18 * 16,
+  static_assert(sizeof(vs::shared::VsRenderParams) == 2 * 64 + (15 + vs::shared::VS_MAX_CLIP_PLANES) * 16,
     "a member was added to VsRenderParams: add it to the signature");
   std::vector<double> s;
   auto addMat = [&s](const glm::mat4& m) { s.insert(s.end(), &m[0][0], &m[0][0] + 16); };
@@ -125,11 +226,12 @@ std::vector<double> RenderSignature(const vs::shared::VsRenderParams& p)
   auto addUint = [&s](const glm::uvec4& v) { s.insert(s.end(), { double(v.x), double(v.y), double(v.z), double(v.w) }); };
   addMat(p.invViewProj);
   addMat(p.worldToIndex);
-  for (const auto& v : { p.boxMin, p.boxMax, p.dims, p.tf, p.background, p.sampling2, p.cellSize, p.tracking })
+  for (const auto& v : { p.boxMin, p.boxMax, p.dims, p.tf, p.background, p.sampling2, p.cellSize, p.tracking, p.cropLo,
+         p.cropHi })
   {
     addVec(v);
   }
-  for (const auto& v : { p.viewport, p.sampling, p.grid, p.bricks })
+  for (const auto& v : { p.viewport, p.sampling, p.grid, p.bricks, p.crop })
   {
     addUint(v);
   }
@@ -194,8 +296,12 @@ double* vtkVisibilitySweepVolumeMapper::GetBounds()
   return b;
 }
 
-void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow*)
+void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
+  // The device state is no window's (Vulkan), the accumulators are per renderer: a window that
+  // lets go of the prop takes its views' accumulators; while views in other windows remain, the
+  // volume, the grid and the environment stay (one volume shown in two windows would otherwise
+  // start over whenever either window initialises or drops a renderer).
   // VTK calls this when the window or the renderer lets go of the prop: free the device memory
   // (passes first, they hold views of the volume and the grid) and forget what it held, so the
   // next Render() uploads and sweeps again as a first render does. What a user may still ask
@@ -203,6 +309,10 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow*)
   // without variance; AccumulatedSamples still counts its samples) and the visibility grid
   // (downloaded now, every direction, if there is one).
   Internals& I = *this->Impl;
+  if (I.ReleaseViewsOf(win))
+  {
+    return;
+  }
   if (I.Grid && I.Grid->Grid() && I.Scene)
   {
     this->GetVisibilityGrid(); // completes a grid still filling in, then downloads it
@@ -213,6 +323,9 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow*)
   I.Interactive.reset();
   I.MC.reset();
   I.MCGrid.reset();
+  I.OtherViews.clear();
+  I.CurrentView = nullptr;
+  I.HasCurrentView = false;
   I.EA.reset();
   I.Scene.reset();
   I.EnvironmentTime = 0;
@@ -249,8 +362,11 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     this->ReportError("the input volume's scalars are cell data; VisSweep renders point scalars");
     return;
   }
+  // MIP, MinIP, average and additive are projections, not light transport: the emission-absorption
+  // path renders them whatever the RenderMode.
+  const bool projection = IsProjection(this->BlendMode);
   for (const auto& w : I.Checks.NewWarnings(vs::PropertyChecks::Ignored(
-         this, vol ? vol->GetProperty() : nullptr, ren, this->RenderMode == MonteCarlo)))
+         this, vol ? vol->GetProperty() : nullptr, ren, this->RenderMode == MonteCarlo && !projection)))
   {
     vtkWarningMacro(<< w);
   }
@@ -293,7 +409,7 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     {
       I.GridNeedsFull = true;
     }
-    if (this->RenderMode == EmissionAbsorption)
+    if (this->RenderMode == EmissionAbsorption || projection)
     {
       this->RenderEmissionAbsorption(ren, vol);
     }
@@ -351,8 +467,9 @@ void CheckViewport(const vs::Context& context, const vs::Viewport& port)
   }
 }
 
-// World clipping planes (n, w): kept where dot(n, x) + w >= 0.
-std::vector<glm::dvec4> WorldPlanes(vtkPlaneCollection* planes)
+// World clipping planes (n, w): kept where dot(n, x) + w >= 0, those that cut the (cropped) box
+// of `geometry` (vs::EffectiveClipPlanes: planes that clip nothing are dropped, at most 8 may cut it).
+std::vector<glm::dvec4> WorldPlanes(vtkPlaneCollection* planes, const vs::VolumeGeometry& geometry)
 {
   std::vector<glm::dvec4> out;
   if (!planes)
@@ -390,33 +507,26 @@ std::vector<glm::dvec4> WorldPlanes(vtkPlaneCollection* planes)
     }
     out.emplace_back(n[0], n[1], n[2], w);
   }
-  if (out.size() > 6)
-  {
-    throw vs::InputError("at most 6 clipping planes are supported, got " + std::to_string(out.size()));
-  }
-  return out;
+  return vs::EffectiveClipPlanes(out, geometry);
 }
 }
 
 namespace
 {
-// The volume's geometry with VTK's cropping subvolume applied to its index box.
+// The volume's geometry with VTK's cropping regions applied (vs::CropRegions).
 vs::VolumeGeometry CroppedGeometry(vtkVolumeMapper* mapper, const vs::VolumeGeometry& full)
 {
   if (!mapper->GetCropping())
   {
     return full;
   }
-  if (mapper->GetCroppingRegionFlags() != VTK_CROP_SUBVOLUME)
-  {
-    throw vs::InputError("only the cropping subvolume (CroppingRegionFlags = VTK_CROP_SUBVOLUME) is supported, got " +
-      vs::PropertyChecks::CroppingFlagsName(mapper->GetCroppingRegionFlags()));
-  }
-  return vs::CropGeometry(full, vtkImageData::SafeDownCast(mapper->GetInput()), mapper->GetCroppingRegionPlanes());
+  // Any region flags: a union of the 27 boxes; one box (the subvolume, VTK's default) crops the box only.
+  return vs::CropRegions(full, vtkImageData::SafeDownCast(mapper->GetInput()), mapper->GetCroppingRegionPlanes(),
+    mapper->GetCroppingRegionFlags());
 }
 }
 
-void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume*)
+void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
   const vs::VolumeGeometry geometry = CroppedGeometry(this, I.Scene->Geometry());
@@ -440,24 +550,39 @@ void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, 
   p.viewport = glm::uvec4(vp.Width, vp.Height, I.Frame++, static_cast<uint32_t>(this->Seed));
   double step = this->SampleDistance > 0.0 ? this->SampleDistance : 0.5 * geometry.MinSpacing;
   p.march = glm::vec4(float(step), 0.995f, 0.0f, 0.0f);
-  auto planes = WorldPlanes(this->ClippingPlanes);
+  auto planes = WorldPlanes(this->ClippingPlanes, geometry);
   for (size_t i = 0; i < planes.size(); ++i)
   {
     p.clipPlanes[i] = glm::vec4(planes[i]);
   }
   p.counts.x = uint32_t(planes.size());
+  p.counts.y = I.Scene->Interpolation();
+  p.cropLo = glm::vec4(geometry.CropLo, 0.0f);
+  p.cropHi = glm::vec4(geometry.CropHi, 0.0f);
+  p.crop = glm::uvec4(geometry.CropFlags, 0u, 0u, 0u);
+  if (IsProjection(this->BlendMode))
+  {
+    p.counts.z = uint32_t(this->BlendMode); // VS_BLEND_* are VTK's values
+    const double lo = std::clamp(this->AverageIPScalarRange[0], -3.0e38, 3.0e38);
+    const double hi = std::clamp(this->AverageIPScalarRange[1], -3.0e38, 3.0e38);
+    const double unit = vol && vol->GetProperty() ? vol->GetProperty()->GetScalarOpacityUnitDistance(0) : 1.0;
+    p.projection = glm::vec4(float(lo), float(hi), float(std::max(unit, 1e-30)), 0.0f);
+  }
   if (!I.EA)
   {
     I.EA = std::make_unique<vs::EmissionAbsorptionPass>(I.Context);
   }
   std::vector<float> rgba = I.EA->Render(I.Scene->Volume(), I.Scene->TF(), p, depth);
   this->LastDeviceSeconds = I.EA->LastSeconds();
+  this->LastRenderComplete = true;
   vs::WindowCompositor::Draw(ren, vp, rgba);
 }
 
 void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
+  this->LastRenderComplete = false;
+  I.SwitchView(ren); // one accumulator per renderer
   const vs::VolumeGeometry geometry = CroppedGeometry(this, I.Scene->Geometry());
   const bool croppedAway = glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax));
   // The camera and the image size first: nothing is uploaded, swept or read back for a view
@@ -515,7 +640,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   }
 
   // The visibility grid, only for the strategies that use it.
-  const std::vector<glm::dvec4> planes = WorldPlanes(this->ClippingPlanes);
+  const std::vector<glm::dvec4> planes = WorldPlanes(this->ClippingPlanes, geometry);
   const bool emptyVolume = I.Scene->Majorants().MaxMajorant() <= 0.0f || croppedAway;
   const bool autoStrategy = this->SamplingStrategy == Auto;
   // Auto skips the grid of a volume too thin to shadow: with the largest extinction along the
@@ -591,6 +716,10 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   }
   auto b = I.Scene->Majorants().Bricks();
   p.bricks = glm::uvec4(b[0], b[1], b[2], uint32_t(planes.size()));
+  p.tracking.w = float(I.Scene->Interpolation()); // nearest (VTK's default) or trilinear
+  p.cropLo = glm::vec4(geometry.CropLo, 0.0f);
+  p.cropHi = glm::vec4(geometry.CropHi, 0.0f);
+  p.crop = glm::uvec4(geometry.CropFlags, 0u, 0u, 0u);
   const glm::dmat3 m(geometry.IndexToWorld);
   const glm::dvec3 o(geometry.IndexToWorld[3]);
   for (size_t i = 0; i < planes.size(); ++i)
@@ -784,8 +913,9 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
   vs::GridUpdateRequest& r = I.LastGridRequest;
   r.Parameters = GridParameters(
     this->DirectionResolution, this->VoxelsPerCell, this->KernelResolution, this->Filtering, this->FilterAngleFraction);
+  r.Parameters.NearestInterpolation = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
   r.Geometry = I.GridGeometry;
-  r.WorldPlanes = WorldPlanes(this->ClippingPlanes);
+  r.WorldPlanes = WorldPlanes(this->ClippingPlanes, I.GridGeometry);
   const int side = int(r.Parameters.DirectionResolution);
   if (this->LightWeightedDirections && I.EnvironmentSource && I.EnvironmentSource->Size >= side)
   {
@@ -1129,6 +1259,8 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SamplesPerFrame: " << this->SamplesPerFrame << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
   os << indent << "AccumulatedSamples: " << this->AccumulatedSamples << "\n";
+  os << indent << "Views: " << (this->Impl->OtherViews.size() + (this->Impl->CurrentView ? 1 : 0))
+     << " (renderers with their own accumulator)\n";
   os << indent << "VisibilityEpsilon: " << this->VisibilityEpsilon << "\n";
   os << indent << "DirectionResolution: " << this->DirectionResolution << "\n";
   os << indent << "VoxelsPerCell: " << this->VoxelsPerCell << "\n";

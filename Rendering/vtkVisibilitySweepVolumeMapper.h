@@ -21,6 +21,17 @@
  * - EmissionAbsorption: ray casting of VTK's transfer functions (opacity per
  *   ScalarOpacityUnitDistance, colour as emission), a jittered sample per step.
  *
+ * Blend modes: COMPOSITE_BLEND renders in the RenderMode. MAXIMUM_INTENSITY_BLEND,
+ * MINIMUM_INTENSITY_BLEND, AVERAGE_INTENSITY_BLEND and ADDITIVE_BLEND are projections, not light
+ * transport: they render through the emission-absorption path in either RenderMode, as
+ * vtkGPUVolumeRayCastMapper computes them (one render per image, SampleDistance apart; additive
+ * integrates opacity x normalised scalar per ScalarOpacityUnitDistance). ISOSURFACE_BLEND and
+ * SLICE_BLEND are not supported: warned about once, rendered as composite.
+ *
+ * The vtkVolumeProperty's InterpolationType is honoured everywhere (render, majorants, sweeps):
+ * nearest (VTK's default) reads the nearest voxel, so a label map never shows blended labels;
+ * linear interpolates trilinearly.
+ *
  * The environment is input port 1: SetEnvironmentConnection(reader->GetOutputPort())
  * with a vtkEnvironmentMapReader or vtkEnvironmentMapSource; without one, a constant
  * white sky of radiance 1.
@@ -218,12 +229,19 @@ public:
   vtkGetMacro(InteractiveSubsampling, int);
   ///@}
 
-  /** Samples per pixel accumulated so far (Monte Carlo). */
+  /** Samples per pixel accumulated so far (Monte Carlo) in the view rendered last. Each renderer
+   *  showing the volume (two views of it, in one window or two) has its own accumulator, so every
+   *  view converges; the visibility grid is shared. */
   vtkGetMacro(AccumulatedSamples, int);
-  /** True when MaximumSamples are reached: further Render() calls only redraw. */
-  bool IsConverged() { return this->AccumulatedSamples >= this->MaximumSamples; }
+  /** True when MaximumSamples are reached: further Render() calls only redraw. Also true after an
+   *  emission-absorption render or a projection (blend modes MIP, MinIP, average, additive), whose
+   *  one render is the whole image, so a loop `while not IsConverged(): Render()` ends in every mode. */
+  bool IsConverged()
+  {
+    return this->LastRenderComplete || this->AccumulatedSamples >= this->MaximumSamples;
+  }
 
-  /** The linear HDR radiance of the last render as image data (width x height, point array
+  /** The linear HDR radiance of the last render (of the view rendered last) as image data (width x height, point array
    *  "Radiance" with 3 floats and "Alpha"), rows bottom-up; nullptr before the first render.
    *  With `variance`, also "Variance" (per-sample variance of each channel, 4 components, double). */
   vtkImageData* GetRadiance(bool variance = false);
@@ -351,12 +369,14 @@ public:
   ///@}
 
   /** Renders the volume into the renderer's viewport; TimeToDraw is then its wall seconds.
-   *  Settings VisSweep does not honour (nearest interpolation, gradient opacity, shading, blend
-   *  modes other than composite, depth peeling for volumes) are warned about once per change;
+   *  Settings VisSweep does not honour (gradient opacity, shading, the iso-surface and slice blend
+   *  modes, depth peeling for volumes) are warned about once per change;
    *  an error is logged once per change too (GetLastError() holds it on every failed render). */
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
-  /** Frees the device resources; the next Render() re-creates them and accumulates anew. The last
-   *  GetRadiance() (no variance) and GetVisibilityGrid() stay on the host, e.g. after the window goes. */
+  /** Forgets the accumulators of the views (renderers) in this window; when no view in another
+   *  window remains, frees the device resources too: the next Render() re-creates them and
+   *  accumulates anew. The last GetRadiance() (no variance) and GetVisibilityGrid() stay on the
+   *  host, e.g. after the window goes. */
   void ReleaseGraphicsResources(vtkWindow*) override;
 
   /** Device seconds of the last render pass (0 if the device has no timestamps). */
@@ -416,6 +436,7 @@ protected:
   double InteractiveUpdateRate = 1.0;
   int InteractiveSubsampling = 4;
   int AccumulatedSamples = 0;
+  bool LastRenderComplete = false; // the last render was emission-absorption or a projection
   int VisibilityUpdateCount = 0;
   int UpdateScheme = RoundRobin;
   int DirectionsPerFrame = 4;

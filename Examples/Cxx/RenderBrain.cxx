@@ -41,7 +41,7 @@ int main(int argc, char* argv[])
   vtkNew<vtkVolumeProperty> property;
   property->SetScalarOpacity(opacity);
   property->SetColor(albedo);
-  property->SetInterpolationTypeToLinear(); // what VisSweep does (VTK defaults to nearest)
+  property->SetInterpolationTypeToLinear(); // smooth for an MRI (VTK defaults to nearest, for label maps)
 
   vtkNew<vtkVisibilitySweepVolumeMapper> mapper;
   mapper->SetInputConnection(reader->GetOutputPort());

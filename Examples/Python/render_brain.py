@@ -29,7 +29,7 @@ def brain_property():
     color.AddRGBPoint(255, 1.0, 1.0, 0.9)
     prop.SetScalarOpacity(opacity)
     prop.SetColor(color)
-    prop.SetInterpolationTypeToLinear()  # what VisSweep does (VTK defaults to nearest)
+    prop.SetInterpolationTypeToLinear()  # smooth for an MRI (VTK defaults to nearest, for label maps)
     prop.SetScalarOpacityUnitDistance(1.0)
     return prop
 

@@ -377,7 +377,14 @@ vtkSmartPointer<vtkVolumeProperty> MakeVolumeProperty(const Scene& scene)
   property->SetScalarOpacity(opacity);
   property->SetColor(color);
   property->SetScalarOpacityUnitDistance(tf.UnitDistance);
-  property->SetInterpolationTypeToLinear();
+  if (tf.Nearest)
+  {
+    property->SetInterpolationTypeToNearest(); // label maps: no blended labels between regions
+  }
+  else
+  {
+    property->SetInterpolationTypeToLinear();
+  }
   property->ShadeOff();
   return property;
 }

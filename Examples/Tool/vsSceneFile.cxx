@@ -328,7 +328,7 @@ Scene::TransferFunctionSection ParseTransferFunction(const json& v)
 {
   const std::string path = "transfer_function";
   RequireObject(v, path);
-  CheckKeys(v, path, { "opacity", "color", "unit_distance", "density_scale" });
+  CheckKeys(v, path, { "opacity", "color", "unit_distance", "density_scale", "interpolation" });
   Scene::TransferFunctionSection s;
   const json& op = Require(v, path, "opacity");
   if (!op.is_array() || op.empty())
@@ -381,6 +381,15 @@ Scene::TransferFunctionSection ParseTransferFunction(const json& v)
     s.DensityScale = FitsFloat(
       NonNegative(v["density_scale"], "transfer_function.density_scale", "the density scale"),
       "transfer_function.density_scale");
+  }
+  if (v.contains("interpolation"))
+  {
+    const std::string m = String(v["interpolation"], "transfer_function.interpolation");
+    if (m != "linear" && m != "nearest")
+    {
+      Fail("transfer_function.interpolation", "unknown interpolation '" + m + "' (expected linear, nearest)");
+    }
+    s.Nearest = m == "nearest";
   }
   return s;
 }
@@ -646,10 +655,6 @@ std::vector<Scene::ClipPlane> ParseClipPlanes(const json& v)
   {
     Fail("clip_planes", std::string("expected an array of {\"origin\", \"normal\"} objects, got ") + v.type_name());
   }
-  if (v.size() > 6)
-  {
-    Fail("clip_planes", "at most 6 planes, got " + std::to_string(v.size()));
-  }
   std::vector<Scene::ClipPlane> planes;
   for (size_t i = 0; i < v.size(); ++i)
   {
@@ -741,8 +746,8 @@ bool Scene::VolumeSection::operator==(const VolumeSection& o) const
 
 bool Scene::TransferFunctionSection::operator==(const TransferFunctionSection& o) const
 {
-  return std::tie(Opacity, Color, UnitDistance, DensityScale) ==
-    std::tie(o.Opacity, o.Color, o.UnitDistance, o.DensityScale);
+  return std::tie(Opacity, Color, UnitDistance, DensityScale, Nearest) ==
+    std::tie(o.Opacity, o.Color, o.UnitDistance, o.DensityScale, o.Nearest);
 }
 
 bool Scene::EnvironmentSection::operator==(const EnvironmentSection& o) const
@@ -922,6 +927,7 @@ json ToJson(const Scene& s)
   }
   tf["unit_distance"] = s.TransferFunction.UnitDistance;
   tf["density_scale"] = s.TransferFunction.DensityScale;
+  tf["interpolation"] = s.TransferFunction.Nearest ? "nearest" : "linear";
   j["transfer_function"] = tf;
 
   const auto& e = s.Environment;

@@ -51,6 +51,7 @@ struct Scene
     std::vector<std::array<double, 4>> Color;   // (scalar, r, g, b) albedo; empty = white
     double UnitDistance = 1.0;
     double DensityScale = 1.0;
+    bool Nearest = false; // "interpolation": "nearest" (label maps); default "linear"
     bool operator==(const TransferFunctionSection& o) const;
   };
   struct EnvironmentSection

@@ -1,5 +1,7 @@
 // vsMajorantGrid.h — the maximum extinction per brick of B^3 voxels (default 8),
-// conservative over the trilinear footprint of the brick. Delta tracking and
+// conservative over the trilinear footprint of the brick (voxels [bB, (b+1)B]), which is also
+// the set of voxels nearest-neighbour samples in the brick read (a point p reads voxel
+// floor(p + 0.5)): one majorant serves both interpolation types. Delta tracking and
 // ratio tracking use it as their majorant; sweeps and the brute force skip
 // samples in bricks whose majorant is 0 (empty space).
 //

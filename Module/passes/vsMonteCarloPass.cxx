@@ -62,7 +62,8 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
     throw InputError("unknown sampling strategy " + std::to_string(strategy));
   }
   const uint32_t camera = params.tracking.z > 0.5f ? shared::VS_CAMERA_RESERVOIR : shared::VS_CAMERA_COLLISION;
-  const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera };
+  const uint32_t interpolation = uint32_t(params.tracking.w + 0.5f), cropping = params.crop.x != 0u ? 1u : 0u;
+  const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping };
   auto& slot = this->Pipelines_[specialization];
   auto& pipeline = slot[format];
   if (!pipeline)
@@ -75,7 +76,8 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
       "r8 visibility, counting reads" };
     const std::string name = std::string("monte carlo (") + formats[format] + ", " + StrategyName(strategy) + ", " +
       (cellMode == shared::VS_CELL_STOCHASTIC ? "stochastic cell" : "trilinear cells") +
-      (refine ? ", cell walk" : "") + (camera == shared::VS_CAMERA_RESERVOIR ? ", reservoir camera)" : ")");
+      (refine ? ", cell walk" : "") + (camera == shared::VS_CAMERA_RESERVOIR ? ", reservoir camera" : "") +
+      (interpolation != 0u ? ", nearest" : "") + (cropping ? ", cropping regions)" : ")");
     if (format == 3)
     {
       bindings.push_back(B::StorageBuffer);

@@ -73,6 +73,11 @@ struct VISSWEEPCORE_EXPORT VisibilityGridParameters
   uint32_t ExtinctionPooling = 0;
   /** Pool by the max instead of the mean (conservative: darker, for comparison). */
   bool MaxPooling = false;
+  /** Nearest-neighbour reconstruction of the scalar (a vtkVolumeProperty's nearest
+   *  InterpolationType, VTK's default) instead of trilinear: the sweeps and the brute force read the
+   *  nearest voxel (the pooled march the pooled texel holding the point: under nearest a mean-pooled
+   *  texel is exactly its block's mean extinction). */
+  bool NearestInterpolation = false;
 
   /** The pooling factor the sweeps use (ExtinctionPooling, or the automatic choice). */
   uint32_t PoolingFactor() const;

@@ -8,6 +8,7 @@
 #include "vsMajorantGrid.h"
 #include "vsPipeline.h"
 #include "vsTransferFunctionTable.h"
+#include "shared/interpolation.h"
 
 #include "vs_spirv_sweep_filter.h"
 #include "vs_spirv_sweep_march.h"
@@ -48,7 +49,8 @@ bool SameLayout(const VisibilityGridParameters& a, const VisibilityGridParameter
     a.FilterAngleFraction == b.FilterAngleFraction && a.Algorithm == b.Algorithm &&
     a.BruteForceSamples == b.BruteForceSamples && a.StorageFormat == b.StorageFormat &&
     a.StopTransmittance == b.StopTransmittance && a.AutoKernelRaysPerCell == b.AutoKernelRaysPerCell &&
-    a.Directions == b.Directions && a.ExtinctionPooling == b.ExtinctionPooling && a.MaxPooling == b.MaxPooling;
+    a.Directions == b.Directions && a.ExtinctionPooling == b.ExtinctionPooling && a.MaxPooling == b.MaxPooling &&
+    a.NearestInterpolation == b.NearestInterpolation;
 }
 
 template <typename T>
@@ -69,6 +71,8 @@ struct PoolPush
   glm::ivec4 dims;
   glm::ivec4 pooled;
   glm::vec4 tf;
+  glm::vec4 cropLo, cropHi;
+  glm::uvec4 crop;
 };
 struct OccupancyPush
 {
@@ -79,7 +83,8 @@ struct OccupancyPush
 bool SameGeometry(const VolumeGeometry& a, const VolumeGeometry& b)
 {
   // The box too: cropping changes it, and with it the cells' placement.
-  return a.Dims == b.Dims && a.WorldToIndex == b.WorldToIndex && a.BoxMin == b.BoxMin && a.BoxMax == b.BoxMax;
+  return a.Dims == b.Dims && a.WorldToIndex == b.WorldToIndex && a.BoxMin == b.BoxMin && a.BoxMax == b.BoxMax &&
+    a.CropFlags == b.CropFlags && (a.CropFlags == 0 || (a.CropLo == b.CropLo && a.CropHi == b.CropHi));
 }
 
 struct SlicePush
@@ -169,9 +174,10 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
 {
   const auto wallStart = std::chrono::steady_clock::now();
   parameters.Validate();
-  if (worldClipPlanes.size() > 6)
+  if (worldClipPlanes.size() > shared::VS_MAX_CLIP_PLANES)
   {
-    throw InputError("at most 6 clipping planes are supported, got " + std::to_string(worldClipPlanes.size()));
+    throw InputError("at most " + std::to_string(shared::VS_MAX_CLIP_PLANES) +
+      " clipping planes that cut the volume are supported, got " + std::to_string(worldClipPlanes.size()));
   }
   const auto& info = this->Context_->Info();
   const uint64_t maxFloats = std::min<uint64_t>(info.MaxStorageBufferRange, 64ull << 20) / sizeof(float);
@@ -200,7 +206,8 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
   auto t = tf.Params();
   g.tf = glm::vec4(t[0], t[1], t[2], t[3]);
   const double step = parameters.StepSize > 0.0 ? parameters.StepSize : geometry.MinSpacing;
-  g.march = glm::vec4(float(step), float(majorants.BrickSize()), parameters.StopTransmittance, 0.0f);
+  g.march = glm::vec4(float(step), float(majorants.BrickSize()), parameters.StopTransmittance,
+    float(parameters.NearestInterpolation ? shared::VS_INTERPOLATION_NEAREST : shared::VS_INTERPOLATION_LINEAR));
   auto bricks = majorants.Bricks();
   g.bricks = glm::uvec4(bricks[0], bricks[1], bricks[2], uint32_t(worldClipPlanes.size()));
   // World planes to index space: n.(M x + o) + w = (M^T n).x + (n.o + w).
@@ -212,6 +219,9 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
     g.clipPlanes[i] = glm::vec4(glm::vec3(glm::transpose(m) * n), float(glm::dot(n, o) + worldClipPlanes[i].w));
   }
   g.bruteForce = glm::uvec4(parameters.BruteForceSamples, 1u, 0u, 0u);
+  g.cropLo = glm::vec4(geometry.CropLo, 0.0f);
+  g.cropHi = glm::vec4(geometry.CropHi, 0.0f);
+  g.crop = glm::uvec4(geometry.CropFlags, 0u, 0u, 0u);
   const uint32_t factor = parameters.Algorithm == VisibilityGridParameters::Method::Sweep ? parameters.PoolingFactor() : 1u;
   if (factor > 1)
   {
@@ -411,7 +421,8 @@ bool VisibilityGrid::PoolKey::operator==(const PoolKey& o) const
   return this->Volume == o.Volume && this->TF == o.TF && this->Majorants == o.Majorants &&
     this->RangeUpdates == o.RangeUpdates && this->MajorantUpdates == o.MajorantUpdates && this->TFHash == o.TFHash &&
     this->MajorantHash == o.MajorantHash && this->Dims == o.Dims && this->Range == o.Range &&
-    this->NonFinite == o.NonFinite && this->Factor == o.Factor && this->Max == o.Max;
+    this->NonFinite == o.NonFinite && this->Factor == o.Factor && this->Max == o.Max && this->CropFlags == o.CropFlags &&
+    this->CropLo == o.CropLo && this->CropHi == o.CropHi;
 }
 
 double VisibilityGrid::EnsurePooled(
@@ -431,6 +442,12 @@ double VisibilityGrid::EnsurePooled(
   key.NonFinite = volume.NonFiniteCount();
   key.Factor = this->Parameters_.PoolingFactor();
   key.Max = this->Parameters_.MaxPooling;
+  key.CropFlags = this->Geometry_.CropFlags;
+  if (key.CropFlags)
+  {
+    key.CropLo = this->Geometry_.CropLo;
+    key.CropHi = this->Geometry_.CropHi;
+  }
   if (this->Pooled_ && key == this->PoolKey_)
   {
     return 0.0;
@@ -464,7 +481,8 @@ double VisibilityGrid::EnsurePooled(
   occupancySet.Bind(0, *this->Pooled_).Bind(1, *this->PooledOccupancy_);
   auto t = tf.Params();
   PoolPush pp{ glm::ivec4(int(key.Dims[0]), int(key.Dims[1]), int(key.Dims[2]), key.Max ? 1 : 0),
-    glm::ivec4(pooled, int(factor)), glm::vec4(t[0], t[1], t[2], t[3]) };
+    glm::ivec4(pooled, int(factor)), glm::vec4(t[0], t[1], t[2], t[3]), glm::vec4(key.CropLo, 0.0f),
+    glm::vec4(key.CropHi, 0.0f), glm::uvec4(key.CropFlags, 0u, 0u, 0u) };
   OccupancyPush op{ glm::ivec4(pooled, 0), glm::ivec4(bricks, int(brick)) };
   Batch cmd(this->Context_);
   cmd.BeginTimer("pool");

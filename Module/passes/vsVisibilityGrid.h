@@ -116,6 +116,8 @@ private:
     uint64_t NonFinite = 0;
     uint32_t Factor = 0;
     bool Max = false;
+    uint32_t CropFlags = 0; // the cropping regions the voxels were masked with
+    glm::vec3 CropLo{ 0.0f }, CropHi{ 0.0f };
     bool operator==(const PoolKey& o) const;
   };
 

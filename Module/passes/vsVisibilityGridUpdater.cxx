@@ -82,7 +82,7 @@ std::vector<double> VisibilityGridUpdater::Signature(const GridUpdateRequest& r)
   std::vector<double> s = { double(gp.DirectionResolution), gp.VoxelsPerCell, double(gp.KernelResolution),
     double(gp.Filtering), gp.FilterAngleFraction, gp.AutoKernelRaysPerCell, gp.StepSize, double(gp.Algorithm),
     double(gp.StorageFormat), double(gp.BruteForceSamples), double(gp.StopTransmittance),
-    double(gp.ExtinctionPooling), double(gp.MaxPooling) };
+    double(gp.ExtinctionPooling), double(gp.MaxPooling), double(gp.NearestInterpolation) };
   for (const glm::vec3& w : gp.Directions)
   {
     s.insert(s.end(), { w.x, w.y, w.z });
@@ -98,6 +98,8 @@ std::vector<double> VisibilityGridUpdater::Signature(const GridUpdateRequest& r)
   {
     s.insert(s.end(), { r.Geometry.BoxMin[i], r.Geometry.BoxMax[i], double(r.Geometry.Dims[i]) });
   }
+  s.insert(s.end(), { double(r.Geometry.CropFlags), r.Geometry.CropLo.x, r.Geometry.CropLo.y, r.Geometry.CropLo.z,
+                      r.Geometry.CropHi.x, r.Geometry.CropHi.y, r.Geometry.CropHi.z });
   return s;
 }
 

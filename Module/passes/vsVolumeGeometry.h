@@ -18,6 +18,13 @@ struct VolumeGeometry
   glm::dmat4 WorldToIndex{ 1.0 };
   /** Voxel centres, widened to +-0.5 on flat axes (one voxel thick). */
   glm::vec3 BoxMin{ 0.0f }, BoxMax{ 0.0f };
+  /** VTK's cropping regions when they are not one box (vtkVolumeMapper CroppingRegionFlags other
+   *  than a single region, e.g. VTK_CROP_FENCE): the index-space planes CropLo (x, y, z min) and
+   *  CropHi (max) split space into 27 regions, region rx + 3 ry + 9 rz with r = 0 below CropLo, 1
+   *  from CropLo on, 2 from CropHi on; a point of a region whose bit of CropFlags is 0 is empty
+   *  space (volume_access.glsl vs_cropped_out). CropFlags 0: no regions, the box is all. */
+  glm::vec3 CropLo{ 0.0f }, CropHi{ 0.0f };
+  uint32_t CropFlags = 0;
   /** Smallest voxel edge in world units. */
   double MinSpacing = 1.0;
 

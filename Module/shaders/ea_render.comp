@@ -5,6 +5,8 @@
  * render path: front-to-back compositing with opacity A = 1 - exp(-sigma_t dt)
  * per segment, colour from the colour transfer function, a jittered sample in
  * every segment, early termination, rays stopped at the opaque depth.
+ * The blend modes MIP, MinIP, average and additive are projections, not light transport: with
+ * P.counts.z one of them, the ray is projected instead (project(), as vtkGPUVolumeRayCastMapper).
  * Output: premultiplied RGBA per pixel, rows bottom-up (OpenGL order).
  */
 #include "rng.h"
@@ -19,6 +21,56 @@ layout(std430, binding = 4) writeonly buffer Result { vec4 uOut[]; };
 
 #include "volume_access.glsl"
 
+/* The projections, as vtkGPUVolumeRayCastMapper computes them (single component), over the samples
+ * of the ray's interval t (one jittered sample per step): maximum / minimum intensity, the colour
+ * and opacity of the largest / smallest scalar (premultiplied); average, the mean over the samples
+ * whose scalar lies in the average range of opacity(s) x s normalised to the data's range, as an
+ * opaque grey (transparent without such samples); additive, the integral of opacity(s) x normalised
+ * s per opacity unit distance (VTK's sum over samples one unit distance apart), clamped to 1, an
+ * opaque grey. The opacity is that of the transfer function, alpha = 1 - exp(-sigma_t u). */
+vec4 project(vec3 oi, vec3 di, vec2 t, float stepSize, uint blend, float jitter)
+{
+  ivec3 dims = ivec3(P.dims.xyz);
+  float unitDistance = P.projection.z;
+  float extreme = blend == VS_BLEND_MINIMUM ? 3.4e38 : -3.4e38;
+  float sum = 0.0;
+  uint samples = 0u;
+  for (float a = t.x; a < t.y; a += stepSize)
+  {
+    float b = min(a + stepSize, t.y);
+    float s = vs_sample(oi + (a + jitter * (b - a)) * di, dims, P.counts.y);
+    if (isnan(s))
+      continue; /* non-finite voxels are empty space */
+    if (blend == VS_BLEND_MAXIMUM)
+      extreme = max(extreme, s);
+    else if (blend == VS_BLEND_MINIMUM)
+      extreme = min(extreme, s);
+    else
+    {
+      float normalised = clamp((s - P.tf.x) * P.tf.y / max(P.tf.z - 1.0, 1.0), 0.0, 1.0);
+      float opacity = 1.0 - exp(-vs_classify(s, P.tf).w * unitDistance);
+      if (blend == VS_BLEND_ADDITIVE)
+        sum += opacity * normalised * (b - a) / unitDistance;
+      else if (s >= P.projection.x && s <= P.projection.y)
+      {
+        sum += opacity * normalised;
+        ++samples;
+      }
+    }
+  }
+  if (blend == VS_BLEND_MAXIMUM || blend == VS_BLEND_MINIMUM)
+  {
+    if (abs(extreme) > 3.0e38)
+      return vec4(0.0); /* no finite sample */
+    vec4 c = vs_classify(extreme, P.tf);
+    float opacity = 1.0 - exp(-c.w * unitDistance);
+    return vec4(c.rgb * opacity, opacity);
+  }
+  if (blend == VS_BLEND_AVERAGE)
+    return samples == 0u ? vec4(0.0) : vec4(vec3(clamp(sum / float(samples), 0.0, 1.0)), 1.0);
+  return vec4(vec3(clamp(sum, 0.0, 1.0)), 1.0);
+}
+
 void main()
 {
   uvec2 pix = gl_GlobalInvocationID.xy;
@@ -26,6 +78,7 @@ void main()
   if (pix.x >= W || pix.y >= H)
     return;
   uint idx = pix.y * W + pix.x;
+  vs_set_cropping(P.cropLo, P.cropHi, P.crop.x);
   VsRng rng = vs_rng_init(pix, P.viewport.z, P.viewport.w);
 
   vec2 ndc = (vec2(pix) + 0.5) / vec2(W, H) * 2.0 - 1.0;
@@ -52,6 +105,12 @@ void main()
   float alpha = 0.0;
   ivec3 dims = ivec3(P.dims.xyz);
   float stepSize = P.march.x;
+  uint blend = P.counts.z;
+  if (blend != VS_BLEND_COMPOSITE)
+  {
+    uOut[idx] = t.x < t.y ? project(oi, di, t, stepSize, blend, vs_rng_float(rng)) : vec4(0.0);
+    return;
+  }
   if (t.x < t.y)
   {
     float jitter = vs_rng_float(rng);
@@ -59,7 +118,7 @@ void main()
     {
       float b = min(a + stepSize, t.y);
       float ts = a + jitter * (b - a);
-      vec4 c = vs_classify(vs_sample_scalar(oi + ts * di, dims), P.tf);
+      vec4 c = vs_classify(vs_sample(oi + ts * di, dims, P.counts.y), P.tf);
       float A = 1.0 - exp(-c.w * (b - a));
       color += (1.0 - alpha) * A * c.rgb;
       alpha += (1.0 - alpha) * A;

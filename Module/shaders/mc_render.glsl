@@ -44,6 +44,8 @@ layout(constant_id = 0) const uint VS_SPEC_STRATEGY = 4u;  /* VS_STRATEGY_*, = p
 layout(constant_id = 1) const uint VS_SPEC_CELL_MODE = 1u; /* VS_CELL_*, = params.sampling.z */
 layout(constant_id = 2) const uint VS_SPEC_REFINE = 1u;    /* 0: no majorant segment reaches the refinement depth */
 layout(constant_id = 3) const uint VS_SPEC_CAMERA = 0u;    /* VS_CAMERA_*, = params.tracking.z */
+layout(constant_id = 4) const uint VS_SPEC_INTERPOLATION = 0u; /* interpolation.h, = params.tracking.w */
+layout(constant_id = 5) const uint VS_SPEC_CROPPING = 0u;  /* 1: cropping regions (params.crop.x != 0) */
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
 layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
 layout(binding = 2, r32f) uniform readonly image3D uMajorant;
@@ -101,6 +103,7 @@ void set_ray(vec3 d)
 }
 uint gShadowRays;
 float gRefineDepth;
+uint gInterpolation; /* interpolation.h: the scalar's reconstruction (P.tracking.w) */
 /* The direction map of this sample (D x D <= 256 values), which the strategies read through
  * vs_map_value (vs_prelude.h): one module-scope array, never copied into calls. */
 float gValues[344]; /* up to 16 x 16 values and their sum pyramid: (4 * 256 - 1) / 3 */
@@ -200,6 +203,8 @@ float segment_max_extinction(vec3 o, vec3 d, float ta, float tb, ivec3 lo, vec4 
   vec3 fa = clamp(clamp(o + ta * d, vec3(0.0), top) - vec3(lo), 0.0, 1.0);
   vec3 fb = clamp(clamp(o + tb * d, vec3(0.0), top) - vec3(lo), 0.0, 1.0);
   vec3 f0 = min(fa, fb), f1 = max(fa, fb);
+  if (gInterpolation == VS_INTERPOLATION_NEAREST)
+    return vs_nearest_max_extinction(f0, f1, c0, c1, gTF); /* the corners whose halves it reaches */
   /* The 8 corners of the box [f0, f1], unrolled. */
   float v0 = cell_trilinear(c0, c1, vec3(f0.x, f0.y, f0.z)), v1 = cell_trilinear(c0, c1, vec3(f1.x, f0.y, f0.z));
   float v2 = cell_trilinear(c0, c1, vec3(f0.x, f1.y, f0.z)), v3 = cell_trilinear(c0, c1, vec3(f1.x, f1.y, f0.z));
@@ -242,15 +247,17 @@ float refine_majorant(vec3 o, vec3 d, float t, inout float tNext, float mu)
   ivec3 hi = min(lo + 1, gDims - 1);
   float e = min(cell_face_distance(p.x, d.x, lo.x, gDims.x),
     min(cell_face_distance(p.y, d.y, lo.y, gDims.y), cell_face_distance(p.z, d.z, lo.z, gDims.z)));
+  if (gInterpolation == VS_INTERPOLATION_NEAREST)
+    e = min(e, vs_nearest_midplane_exit(p, d, lo)); /* segments end where the nearest voxel changes */
   float hMax = min(tNext - t, max(e, hMin));
   vec4 c0 = vec4(imageLoad(uVolume, ivec3(lo.x, lo.y, lo.z)).r, imageLoad(uVolume, ivec3(hi.x, lo.y, lo.z)).r,
     imageLoad(uVolume, ivec3(lo.x, hi.y, lo.z)).r, imageLoad(uVolume, ivec3(hi.x, hi.y, lo.z)).r);
   vec4 c1 = vec4(imageLoad(uVolume, ivec3(lo.x, lo.y, hi.z)).r, imageLoad(uVolume, ivec3(hi.x, lo.y, hi.z)).r,
     imageLoad(uVolume, ivec3(lo.x, hi.y, hi.z)).r, imageLoad(uVolume, ivec3(hi.x, hi.y, hi.z)).r);
   VS_COUNT(0);
-  if (any(isnan(c0)) || any(isnan(c1)))
+  if (gInterpolation != VS_INTERPOLATION_NEAREST && (any(isnan(c0)) || any(isnan(c1))))
   {
-    /* A NaN corner makes every sample of the cell NaN: empty space (volume_access.glsl). */
+    /* A NaN corner makes every trilinear sample of the cell NaN: empty space (volume_access.glsl). */
     tNext = t + hMax;
     return 0.0;
   }
@@ -398,7 +405,7 @@ bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, 
         if (dt >= h)
           break;
         VS_COUNT(0);
-        vec4 c = vs_classify(vs_sample_scalar(o + (t + dt) * d, gDims), gTF);
+        vec4 c = vs_classify(vs_sample(o + (t + dt) * d, gDims, gInterpolation), gTF);
         if (u.y * mu < c.w || ++steps >= cap)
         {
           tHit = t + dt;
@@ -437,7 +444,7 @@ float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap,
         if (dt >= h)
           break;
         VS_COUNT(0);
-        float sigma = vs_classify(vs_sample_scalar(o + (t + dt) * d, gDims), gTF).w;
+        float sigma = vs_classify(vs_sample(o + (t + dt) * d, gDims, gInterpolation), gTF).w;
         T *= max(0.0, 1.0 - sigma / mu);
         if (++steps >= cap)
         {
@@ -497,7 +504,7 @@ void camera_reservoir(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint 
         if (dt >= h)
           break;
         VS_COUNT(0);
-        vec4 c = vs_classify(vs_sample_scalar(o + (t + dt) * d, gDims), gTF);
+        vec4 c = vs_classify(vs_sample(o + (t + dt) * d, gDims, gInterpolation), gTF);
         vec3 ws = T * c.rgb * (c.w / mu);
         float si = dot(ws, vec3(0.2126, 0.7152, 0.0722));
         if (si > 0.0)
@@ -679,6 +686,8 @@ void main()
   gStrategy = VS_SPEC_STRATEGY;
   gShadowRays = clamp(uint(P.tracking.y), 1u, 64u);
   gRefineDepth = P.tracking.x > 0.0 ? P.tracking.x : 32.0;
+  gInterpolation = VS_SPEC_INTERPOLATION;
+  vs_set_cropping(P.cropLo, P.cropHi, VS_SPEC_CROPPING != 0u ? P.crop.x : 0u);
   uint idx = inside ? pix.y * W + pix.x : 0u;
   float depth = inside ? uDepth[idx] : 1.0;
 

@@ -19,17 +19,20 @@ float gBrickSize;
 vec4 gTF;
 uint gClipCount;
 float gStep;
+uint gInterpolation; /* interpolation.h (G.march.w) */
 
 void vs_load_sweep_globals()
 {
   gTF = G.tf;
   gClipCount = G.bricks.w;
+  gInterpolation = uint(G.march.w);
 #ifdef VS_SWEEP_POOLED
   gDims = ivec3(G.poolDims.xyz);
   gBricks = ivec3(G.poolBricks.xyz);
   gBrickSize = G.pool.y;
   gStep = G.pool.w;
 #else
+  vs_set_cropping(G.cropLo, G.cropHi, G.crop.x); /* in index space: the pooled volume is masked when built */
   gDims = ivec3(G.dims.xyz);
   gBricks = ivec3(G.bricks.xyz);
   gBrickSize = G.march.y;
@@ -61,10 +64,12 @@ vec2 vs_clip_interval(vec3 o, vec3 d)
 }
 
 #ifdef VS_SWEEP_POOLED
-/* Pooled extinction at pooled-texel point q (trilinear, clamped to the volume). */
+/* Pooled extinction at pooled-texel point q (clamped to the volume): trilinear, or under nearest
+ * interpolation the texel holding q, whose P^3 voxels' nearest-neighbour cells are exactly the
+ * texel's block (so a mean-pooled texel is the block's mean extinction). */
 float vs_extinction(vec3 q)
 {
-  return vs_sample_scalar(q, gDims);
+  return vs_sample(q, gDims, gInterpolation);
 }
 #else
 /* Extinction at index-space point p: post-classified, zero where a clip plane removes it. */
@@ -75,7 +80,7 @@ float vs_extinction(vec3 p)
     if (dot(G.clipPlanes[i].xyz, p) + G.clipPlanes[i].w < 0.0)
       return 0.0;
   }
-  return vs_classify(vs_sample_scalar(p, gDims), gTF).w;
+  return vs_classify(vs_sample(p, gDims, gInterpolation), gTF).w;
 }
 #endif
 

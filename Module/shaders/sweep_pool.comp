@@ -17,6 +17,9 @@ layout(push_constant) uniform Push
   ivec4 dims;   /* voxels per axis, w: 1 = max pooling */
   ivec4 pooled; /* pooled texels per axis, w: P */
   vec4 tf;      /* LUT parameters */
+  vec4 cropLo;  /* the cropping regions (vsVolumeGeometry.h): hidden voxels pool as 0 */
+  vec4 cropHi;
+  uvec4 crop;   /* x: flags */
 } pc;
 
 #include "volume_access.glsl"
@@ -28,12 +31,13 @@ void main()
     return;
   ivec3 lo = j * pc.pooled.w;
   ivec3 hi = min(lo + pc.pooled.w, pc.dims.xyz);
+  vs_set_cropping(pc.cropLo, pc.cropHi, pc.crop.x);
   float sum = 0.0, largest = 0.0;
   for (int z = lo.z; z < hi.z; ++z)
     for (int y = lo.y; y < hi.y; ++y)
       for (int x = lo.x; x < hi.x; ++x)
       {
-        float e = vs_classify(imageLoad(uVolume, ivec3(x, y, z)).r, pc.tf).w;
+        float e = vs_cropped_out(vec3(x, y, z)) ? 0.0 : vs_classify(imageLoad(uVolume, ivec3(x, y, z)).r, pc.tf).w;
         sum += e;
         largest = max(largest, e);
       }

@@ -4,8 +4,10 @@
  *   layout(binding = VS_BINDING_VOLUME, r32f) uniform readonly image3D uVolume;
  *   layout(std430, binding = VS_BINDING_TF) readonly buffer TransferFunction { vec4 uTF[]; };
  * Non-finite voxels are stored as NaN; any interpolated NaN classifies to zero
- * extinction and zero albedo (DESIGN: NaN/Inf voxels are empty space).
+ * extinction and zero albedo (NaN/Inf voxels are empty space).
  */
+#include "interpolation.h"
+#include "vs_prelude.h"
 
 /* Trilinear interpolation of the scalar at continuous index p with 8 imageLoads
  * (measured faster than sampler3D on lavapipe). Indices clamp to the volume. */
@@ -28,6 +30,45 @@ float vs_sample_scalar(vec3 p, ivec3 dims)
   float c01 = mix(c001, c101, f.x);
   float c11 = mix(c011, c111, f.x);
   return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
+}
+
+/* VTK's cropping regions (vsVolumeGeometry.h CropFlags), set by the includer's main() with
+ * vs_set_cropping; flags 0 (the default) = no regions. Points of hidden regions are empty space:
+ * vs_sample reads NaN there, which classifies to zero extinction and albedo. */
+vec3 gCropLo = vec3(0.0), gCropHi = vec3(0.0);
+uint gCropFlags = 0u;
+
+void vs_set_cropping(vec4 lo, vec4 hi, uint flags)
+{
+  gCropLo = lo.xyz;
+  gCropHi = hi.xyz;
+  gCropFlags = flags;
+}
+
+/* Whether index-space point p lies in a cropping region whose flag is off. */
+bool vs_cropped_out(vec3 p)
+{
+  if (gCropFlags == 0u)
+    return false;
+  uvec3 r = uvec3(greaterThanEqual(p, gCropLo)) + uvec3(greaterThanEqual(p, gCropHi));
+  return (gCropFlags & (1u << (r.x + 3u * r.y + 9u * r.z))) == 0u;
+}
+
+/* The nearest voxel's scalar at continuous index p (voxel i owns [i - 0.5, i + 0.5) per axis, as
+ * VTK's nearest interpolation), clamped to the volume: one imageLoad. */
+float vs_sample_nearest(vec3 p, ivec3 dims)
+{
+  vec3 q = clamp(p, vec3(0.0), vec3(dims - 1));
+  return imageLoad(uVolume, min(ivec3(floor(q + 0.5)), dims - 1)).r;
+}
+
+/* The scalar at p under `interpolation` (interpolation.h: VS_INTERPOLATION_LINEAR or _NEAREST,
+ * the vtkVolumeProperty's InterpolationType); NaN in a hidden cropping region. */
+float vs_sample(vec3 p, ivec3 dims, uint interpolation)
+{
+  if (vs_cropped_out(p))
+    return uintBitsToFloat(0x7fc00000u); /* NaN: empty space */
+  return interpolation == VS_INTERPOLATION_NEAREST ? vs_sample_nearest(p, dims) : vs_sample_scalar(p, dims);
 }
 
 /* Post-classification: (albedo rgb, extinction per world unit) of scalar s,
@@ -69,6 +110,58 @@ float vs_max_extinction(float s0, float s1, vec4 tf)
   return max(vs_tf_level_max(k, i, tf), vs_tf_level_max(k, j - (1 << k) + 1, tf));
 }
 
+/* Under nearest interpolation the cell walk's segments end where the nearest voxel changes: the
+ * distance along d from p to the next midplane (lo + 0.5) of the voxel cell lo ahead, 1e30 if none.
+ * A midplane within VS_NEAREST_TOLERANCE of p is behind it (p is on it: the previous segment ended
+ * there), so a segment never starts with a sliver across it. */
+const float VS_NEAREST_TOLERANCE = 1e-4; /* voxels: above the rounding of positions o + t d */
+
+float vs_nearest_midplane_distance(float p, float d, int lo)
+{
+  float m = float(lo) + 0.5;
+  if (d > 1e-20 && p < m - VS_NEAREST_TOLERANCE)
+    return (m - p) / d;
+  if (d < -1e-20 && p > m + VS_NEAREST_TOLERANCE)
+    return (m - p) / d;
+  return 1e30;
+}
+
+/* Unrolled (lavapipe's loop limiter counts every back-edge of the render kernel). */
+float vs_nearest_midplane_exit(vec3 p, vec3 d, ivec3 lo)
+{
+  return min(vs_nearest_midplane_distance(p.x, d.x, lo.x),
+    min(vs_nearest_midplane_distance(p.y, d.y, lo.y), vs_nearest_midplane_distance(p.z, d.z, lo.z)));
+}
+
+/* The largest extinction nearest-neighbour samples take on a segment inside the voxel cell whose
+ * corners are c0 = (000, 100, 010, 110), c1 = (001, 101, 011, 111) and whose local coordinates
+ * (in [0,1]^3) span the box [f0, f1]: a sample reads the corner it is nearest to, so only the
+ * corners whose half of the cell the segment's interior reaches along every axis can be read, and
+ * the result is the largest of their own classified extinctions (exactly what those samples
+ * compute; a NaN corner classifies to 0 and leaves its neighbours' halves as they are). The walk
+ * ends segments on the midplanes (vs_nearest_midplane_exit), so a segment reaches a half when it
+ * extends more than VS_NEAREST_TOLERANCE into it; one that lies within the tolerance of a midplane
+ * reaches both halves. This keeps the majorant tight: a half the segment only touches by the
+ * rounding of its end would cost null collisions at its extinction along the whole segment (at an
+ * extinction of 1e9 per voxel, tens of thousands per segment; lavapipe ends loops of 65535
+ * iterations). A sample whose position rounds across a midplane (a few ulps) may read the voxel
+ * beyond it: delta tracking then accepts it, a bias at the resolution of float positions. */
+float vs_nearest_max_extinction(vec3 f0, vec3 f1, vec4 c0, vec4 c1, vec4 tf)
+{
+  bvec3 low = lessThan(f0, vec3(0.5 - VS_NEAREST_TOLERANCE));
+  bvec3 high = greaterThan(f1, vec3(0.5 + VS_NEAREST_TOLERANCE));
+  bvec3 neither = not(bvec3(uvec3(low) | uvec3(high))); /* within the tolerance of the midplane: either voxel */
+  low = bvec3(uvec3(low) | uvec3(neither));
+  high = bvec3(uvec3(high) | uvec3(neither));
+  /* The 8 corners, unrolled (lavapipe's loop limiter counts every back-edge of the render kernel). */
+  vec4 e0 = vec4(vs_classify(c0.x, tf).w, vs_classify(c0.y, tf).w, vs_classify(c0.z, tf).w, vs_classify(c0.w, tf).w);
+  vec4 e1 = vec4(vs_classify(c1.x, tf).w, vs_classify(c1.y, tf).w, vs_classify(c1.z, tf).w, vs_classify(c1.w, tf).w);
+  /* Corner (x, y) of a z layer is read when its half is reached along x and y. */
+  vec4 xy = vec4(low.x && low.y, high.x && low.y, low.x && high.y, high.x && high.y);
+  vec4 m = max(e0 * xy * float(low.z), e1 * xy * float(high.z));
+  return max(max(m.x, m.y), max(m.z, m.w));
+}
+
 /* Ray-box intersection in index space; returns (tNear, tFar), empty when tNear >= tFar. */
 vec2 vs_intersect_box(vec3 o, vec3 d, vec3 bmin, vec3 bmax)
 {
@@ -87,7 +180,7 @@ vec2 vs_intersect_box(vec3 o, vec3 d, vec3 bmin, vec3 bmax)
 }
 
 /* Clip the interval [t0,t1] of world ray o + t d against the half-spaces kept by the planes. */
-vec2 vs_clip_planes(vec3 o, vec3 d, vec2 t, vec4 planes[6], uint count)
+vec2 vs_clip_planes(vec3 o, vec3 d, vec2 t, vec4 planes[VS_MAX_CLIP_PLANES], uint count)
 {
   for (uint i = 0u; i < count; ++i)
   {

@@ -8,6 +8,8 @@
 #include "vsTransferFunctionTable.h"
 #include "vsVisibilityGrid.h"
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -40,6 +42,18 @@ struct VisibilityScene
     this->TF = std::make_unique<vs::TransferFunctionTable>(this->Context, samples);
     this->Majorants = std::make_unique<vs::MajorantGrid>(this->Context);
     this->Majorants->UpdateRanges(*this->Volume);
+    this->Majorants->UpdateMajorants(samples);
+  }
+
+  /** Replaces the transfer function by a hat of extinction sigmaPeak at scalar 0.5, 0 at and beyond
+   *  0.25 and 0.75 (so 0 at the scalars 0 and 1 a label map of two labels holds): under trilinear
+   *  interpolation the medium is between voxels of different labels, under nearest nowhere. */
+  void UseHatTransferFunction(double sigmaPeak)
+  {
+    auto samples = vs::TransferFunctionSamples::FromFunctions(0.0f, 1.0f, 1025,
+      [&](double s) { return 1.0 - std::exp(-sigmaPeak * std::max(0.0, 1.0 - 4.0 * std::abs(s - 0.5))); },
+      [](double, double c[3]) { c[0] = c[1] = c[2] = 1.0; }, 1.0, 1.0);
+    this->TF = std::make_unique<vs::TransferFunctionTable>(this->Context, samples);
     this->Majorants->UpdateMajorants(samples);
   }
 

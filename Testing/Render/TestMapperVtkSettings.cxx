@@ -1,6 +1,6 @@
 // A good VTK citizen (issue 14): settings VisSweep does not honour are warned about once per
 // change, not once per Render() (counted with a WarningEvent observer across repeated
-// renders), errors are logged once per change, cropping flags are named in words, the setters
+// renders), errors are logged once per change, cropping flags other than the subvolume render, the setters
 // clamp or refuse, PrintSelf prints enums as words and the counters, TimeToDraw is set, and
 // ReleaseGraphicsResources frees the device resources while the mapper keeps rendering.
 #include "vsRenderTestUtilities.h"
@@ -10,6 +10,8 @@
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -103,17 +105,16 @@ int TestMapperVtkSettings(int, char*[])
   win->AddRenderer(ren);
   ren->ResetCamera();
 
-  // Nearest interpolation (VTK's default) warns once, however many renders follow.
+  // Nearest interpolation (VTK's default) is honoured (TestMapperNearestLabels), so neither it nor
+  // linear warns.
   RenderTimes(win, 3);
   Check(std::string(m->GetLastError()).empty(), std::string("renders: ") + m->GetLastError());
-  Check(CountContaining(recorder->Warnings, "nearest") == 1, "nearest interpolation warns once over 3 renders");
   Check(m->GetTimeToDraw() > 0.0, "TimeToDraw is set after a render");
   property->SetInterpolationTypeToLinear();
   RenderTimes(win, 2);
-  Check(recorder->Warnings.size() == 1, "linear interpolation warns nothing");
-  property->SetInterpolationTypeToNearest(); // a change back: warned again, once
+  property->SetInterpolationTypeToNearest();
   RenderTimes(win, 2);
-  Check(CountContaining(recorder->Warnings, "nearest") == 2, "switching back to nearest warns once more");
+  Check(recorder->Warnings.empty(), "nearest and linear interpolation warn nothing");
   property->SetInterpolationTypeToLinear();
 
   // Shading, gradient opacity, blend modes and depth peeling for volumes: once per change each.
@@ -137,12 +138,24 @@ int TestMapperVtkSettings(int, char*[])
   RenderTimes(win, 2);
   Check(CountContaining(recorder->Warnings, "gradient opacity") == 1, "disabled gradient opacity warns no more");
 
+  // MIP, MinIP, average and additive are honoured (TestMapperBlendModes); iso-surface and slice are not.
+  const size_t beforeBlend = recorder->Warnings.size();
   m->SetBlendModeToMaximumIntensity();
-  RenderTimes(win, 3);
-  Check(CountContaining(recorder->Warnings, "MAXIMUM_INTENSITY_BLEND") == 1, "MIP warns once");
+  RenderTimes(win, 2);
   m->SetBlendModeToMinimumIntensity();
   RenderTimes(win, 2);
-  Check(CountContaining(recorder->Warnings, "MINIMUM_INTENSITY_BLEND") == 1, "another blend mode is a new warning");
+  m->SetBlendModeToAverageIntensity();
+  RenderTimes(win, 2);
+  m->SetBlendModeToAdditive();
+  RenderTimes(win, 2);
+  Check(recorder->Warnings.size() == beforeBlend, "the projections (MIP, MinIP, average, additive) warn nothing");
+  Check(m->IsConverged(), "a projection is complete after one render (a convergence loop ends)");
+  m->SetBlendModeToIsoSurface();
+  RenderTimes(win, 3);
+  Check(CountContaining(recorder->Warnings, "ISOSURFACE_BLEND") == 1, "iso-surface warns once");
+  m->SetBlendModeToSlice();
+  RenderTimes(win, 2);
+  Check(CountContaining(recorder->Warnings, "SLICE_BLEND") == 1, "another blend mode is a new warning");
   m->SetBlendModeToComposite();
 
   ren->UseDepthPeelingOn();
@@ -156,22 +169,41 @@ int TestMapperVtkSettings(int, char*[])
   Check(recorder->Warnings.size() == warnings, "honoured settings warn nothing");
   Check(recorder->Errors.empty(), "no errors so far");
 
-  // Errors: once per change, with the cropping flags in words.
+  // Cropping region flags other than the subvolume are honoured (TestMapperCroppingRegions).
   double bounds[6];
   m->GetInput()->GetBounds(bounds);
   m->CroppingOn();
   m->SetCroppingRegionPlanes(bounds);
   m->SetCroppingRegionFlagsToFence();
-  RenderTimes(win, 3);
-  Check(CountContaining(recorder->Errors, "VTK_CROP_FENCE") == 1, "an unsupported cropping is logged once over 3 renders");
-  Check(std::string(m->GetLastError()).find("VTK_CROP_FENCE") != std::string::npos,
-    "GetLastError() holds the error on every failed render");
+  RenderTimes(win, 2);
   m->SetCroppingRegionFlagsToInvertedCross();
   RenderTimes(win, 2);
-  Check(CountContaining(recorder->Errors, "VTK_CROP_INVERTED_CROSS") == 1, "another cropping is a new error");
+  Check(recorder->Errors.empty() && std::string(m->GetLastError()).empty(), "fence and inverted cross render");
   m->CroppingOff();
+
+  // Errors: once per change. More than 8 clipping planes that cut the volume are one.
+  vtkNew<vtkPlaneCollection> planes;
+  auto addCut = [&](double x) {
+    vtkNew<vtkPlane> p;
+    p->SetOrigin(x, 0.0, 0.0);
+    p->SetNormal(-1.0, 0.0, 0.0);
+    planes->AddItem(p);
+  };
+  for (int k = 0; k < 9; ++k)
+  {
+    addCut(7.0 + 0.5 * k);
+  }
+  m->SetClippingPlanes(planes);
+  RenderTimes(win, 3);
+  Check(CountContaining(recorder->Errors, "9 clipping planes cut the volume") == 1, "an error is logged once over 3 renders");
+  Check(std::string(m->GetLastError()).find("9 clipping planes") != std::string::npos,
+    "GetLastError() holds the error on every failed render");
+  addCut(12.0);
+  RenderTimes(win, 2);
+  Check(CountContaining(recorder->Errors, "10 clipping planes cut the volume") == 1, "another error is a new error");
+  m->RemoveAllClippingPlanes();
   win->Render();
-  Check(std::string(m->GetLastError()).empty(), "rendering again once the cropping is off");
+  Check(std::string(m->GetLastError()).empty(), "rendering again once the planes are gone");
 
   // Setters clamp or refuse.
   const size_t errors = recorder->Errors.size();

@@ -73,7 +73,7 @@ vtkSmartPointer<vtkVolumeProperty> BrainProperty()
   property->SetScalarOpacity(opacity);
   property->SetColor(color);
   property->SetScalarOpacityUnitDistance(1.0);
-  property->SetInterpolationTypeToLinear(); // what VisSweep does; VTK's default (nearest) warns
+  property->SetInterpolationTypeToLinear(); // the baselines' trilinear reconstruction (VTK's default is nearest)
   return property;
 }
 

@@ -29,7 +29,7 @@ json FullScene()
     "transfer_function": {
       "opacity": [[0, 0.0], [60, 0.0], [120, 0.8]],
       "color": [[0, 1, 1, 1], [255, 0.9, 0.7, 0.6]],
-      "unit_distance": 1.5, "density_scale": 2.0
+      "unit_distance": 1.5, "density_scale": 2.0, "interpolation": "nearest"
     },
     "environment": {"sun": {"direction": [1, 0, 1], "radius_deg": 3, "radiance": [100, 90, 80], "sky": [0.1, 0.2, 0.3]},
                     "intensity": 0.5, "visible_background": false, "background": [0.1, 0.1, 0.1],
@@ -83,6 +83,7 @@ TEST(SceneFile, ParsesEverySection)
   EXPECT_EQ(s.TransferFunction.Opacity.size(), 3u);
   EXPECT_EQ(s.TransferFunction.Color[1][3], 0.6);
   EXPECT_EQ(s.TransferFunction.UnitDistance, 1.5);
+  EXPECT_TRUE(s.TransferFunction.Nearest);
   EXPECT_EQ(s.Environment.Type, Scene::EnvironmentSection::Kind::Sun);
   EXPECT_EQ(s.Environment.SunRadiusDeg, 3.0);
   EXPECT_FALSE(s.Environment.VisibleBackground);
@@ -391,6 +392,8 @@ TEST(SceneFile, BadValues)
     "transfer_function.unit_distance: the unit distance must be positive");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["density_scale"] = -1; }),
     "transfer_function.density_scale: the density scale must not be negative");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["interpolation"] = "cubic"; }),
+    "transfer_function.interpolation: unknown interpolation 'cubic' (expected linear, nearest)");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["environment"]["intensity"] = -2; }),
     "environment.intensity: the intensity must not be negative");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["environment"]["background"][0] = -1; }),

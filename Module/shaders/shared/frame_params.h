@@ -21,9 +21,24 @@ struct VsFrameParams
   vec4 background;   /* rgb + alpha of the constant background (premultiplied) */
   uvec4 viewport;    /* width, height, frame index, seed */
   vec4 march;        /* x: step (world units), y: early-termination opacity, z,w: unused */
-  vec4 clipPlanes[6];/* xyz normal, w offset, world space: kept where dot(n,x)+w >= 0 */
-  uvec4 counts;      /* x: clip planes in use */
+  vec4 clipPlanes[VS_MAX_CLIP_PLANES];/* xyz normal, w offset, world space: kept where dot(n,x)+w >= 0 */
+  uvec4 counts;      /* x: clip planes in use, y: the scalar's interpolation (interpolation.h), z: blend mode
+                        (VS_BLEND_*), w: unused */
+  vec4 projection;   /* the projections' (VS_BLEND_MAXIMUM..ADDITIVE): x, y: the average's scalar range
+                        (vtkVolumeMapper AverageIPScalarRange), z: the opacity unit distance (opacity
+                        alpha = 1 - exp(-sigma_t z)), w: unused */
+  vec4 cropLo;       /* the cropping regions (vsVolumeGeometry.h): index-space planes, xyz */
+  vec4 cropHi;
+  uvec4 crop;        /* x: the regions' flags (0 = none: the box is all), y, z, w: unused */
 };
+
+/* Blend modes, VTK's vtkVolumeMapper::BlendModes values. Composite is emission-absorption; the
+ * projections follow vtkGPUVolumeRayCastMapper (ea_render.comp). */
+VS_CONST uint VS_BLEND_COMPOSITE = 0u;
+VS_CONST uint VS_BLEND_MAXIMUM = 1u;
+VS_CONST uint VS_BLEND_MINIMUM = 2u;
+VS_CONST uint VS_BLEND_AVERAGE = 3u;
+VS_CONST uint VS_BLEND_ADDITIVE = 4u;
 
 VS_NAMESPACE_END
 

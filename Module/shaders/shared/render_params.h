@@ -41,11 +41,14 @@ struct VsRenderParams
   uvec4 grid;        /* visibility cells (xyz), w: directions per side D (0 = no grid) */
   vec4 cellSize;     /* index units per visibility cell */
   uvec4 bricks;      /* majorant bricks (xyz), w: clip planes in use */
-  vec4 clipPlanes[6];/* index space: kept where dot(n, x) + w >= 0 */
+  vec4 clipPlanes[VS_MAX_CLIP_PLANES];/* index space: kept where dot(n, x) + w >= 0 */
   vec4 tracking;     /* x: optical depth of a majorant segment above which the trackers walk voxel
                         cells instead of the brick (0 = 32), see mc_render.glsl; y: shadow rays per
                         scatter point (0 = 1, at most 64); z: the camera estimator (VS_CAMERA_*);
-                        w: unused (0) */
+                        w: the scalar's interpolation (interpolation.h: 0 linear, 1 nearest) */
+  vec4 cropLo;       /* the cropping regions (vsVolumeGeometry.h): index-space planes, xyz */
+  vec4 cropHi;
+  uvec4 crop;        /* x: the regions' flags (0 = none: the box is all), y, z, w: unused */
 };
 
 VS_NAMESPACE_END

@@ -35,9 +35,10 @@ struct VsSweepGlobals
   uvec4 grid;       /* visibility cells per axis (xyz), w: directions per side D */
   vec4 dims;        /* voxels per axis */
   vec4 tf;          /* transfer-function LUT parameters (see frame_params.h) */
-  vec4 march;       /* x: step (world units), y: brick size (voxels), z: stop when V below this, w: unused */
+  vec4 march;       /* x: step (world units), y: brick size (voxels), z: stop when V below this,
+                       w: the scalar's interpolation (interpolation.h: 0 linear, 1 nearest) */
   uvec4 bricks;     /* majorant bricks per axis (xyz), w: clip planes in use */
-  vec4 clipPlanes[6];  /* index space: kept where dot(n, x) + w >= 0 */
+  vec4 clipPlanes[VS_MAX_CLIP_PLANES];  /* index space: kept where dot(n, x) + w >= 0 */
   uvec4 bruteForce; /* x: spatial x angular supersamples per side (1 = centre only), y: seed */
   /* The pooled extinction volume the sweeps march (sweep_march_pooled.comp): texel j holds the mean
    * (or max) of sigma_t over voxels [j P, j P + P - 1], so its centre is at index j P + (P - 1) / 2. */
@@ -45,6 +46,9 @@ struct VsSweepGlobals
                        w: march step over the pooled volume (world units) */
   uvec4 poolDims;   /* pooled texels per axis (xyz) */
   uvec4 poolBricks; /* pooled occupancy bricks per axis (xyz) */
+  vec4 cropLo;       /* the cropping regions (vsVolumeGeometry.h): index-space planes, xyz */
+  vec4 cropHi;
+  uvec4 crop;        /* x: the regions' flags (0 = none: the box is all), y, z, w: unused */
 };
 
 /* Distance along the light (world units) from the start plane to the centre plane of

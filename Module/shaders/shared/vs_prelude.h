@@ -58,6 +58,10 @@ VS_CONST float VS_INV_PI = 0.31830988618379067154f;
 VS_CONST float VS_INV_4PI = 0.07957747154594766788f;
 /* The largest float below 1: samples in [0,1) stay below 1 after rounding. */
 VS_CONST float VS_ONE_MINUS_EPSILON = 0.99999994f;
+/* Clip planes the passes take (render, emission-absorption, sweeps): vtkGPUVolumeRayCastMapper's
+ * limit. The host first drops the planes that clip nothing of the box (vsVolumeInput.h
+ * EffectiveClipPlanes), so only planes that cut the volume count. */
+VS_CONST uint VS_MAX_CLIP_PLANES = 8u;
 
 /* |a| with the sign of b (GLSL has no copysign). */
 VS_FUNC float vs_copysign(float a, float b)
