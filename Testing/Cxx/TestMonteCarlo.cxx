@@ -65,6 +65,41 @@ glm::dvec3 Quadrature(double x, double y, double n, double sigma, glm::dvec3 alb
 
 // A homogeneous box lit by a constant sky, and by a two-tone sky (bright above, dim below):
 // every strategy agrees with the quadrature within 3 standard errors at every pixel.
+namespace
+{
+// Two independent renders of the same expectation, pixel by pixel: the sum of z^2 over the pixels
+// and channels with variance (each ~ chi-square(1)), their count, and the summed rgb variance of
+// one sample of each render (what splitting and the reservoir should lower).
+struct Agreement
+{
+  double chi2 = 0.0, varA = 0.0, varB = 0.0;
+  int dof = 0;
+  // Rejects beyond dof + 4 sd + 20, past the chi-square's 1e-4 quantile.
+  double Bound() const { return dof + 4.0 * std::sqrt(2.0 * dof) + 20.0; }
+};
+
+Agreement Compare(const std::vector<float>& a, const std::vector<double>& va, const std::vector<float>& b,
+  const std::vector<double>& vb, double n)
+{
+  Agreement r;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    const double se2 = (va[i] + vb[i]) / n;
+    if (se2 > 0.0)
+    {
+      r.chi2 += (a[i] - b[i]) * (a[i] - b[i]) / se2;
+      ++r.dof;
+    }
+    if (i % 4 < 3)
+    {
+      r.varA += va[i];
+      r.varB += vb[i];
+    }
+  }
+  return r;
+}
+}
+
 TEST(MonteCarlo, HomogeneousBoxMatchesQuadrature)
 {
   const uint32_t n = 16;
@@ -173,19 +208,9 @@ TEST(MonteCarlo, CellMajorantWalkIsUnbiased)
     p.tracking.x = 0.05f;
     p.viewport.w = 4u; // independent samples
     auto [b, vb] = scene.Render(p, 2);
-    double chi2 = 0.0;
-    int dof = 0;
-    for (size_t i = 0; i < a.size(); ++i)
-    {
-      const double se2 = (va[i] + vb[i]) / n;
-      if (se2 > 0.0)
-      {
-        chi2 += (a[i] - b[i]) * (a[i] - b[i]) / se2;
-        ++dof;
-      }
-    }
-    EXPECT_GT(dof, 150) << kNames[strategy];
-    EXPECT_LT(chi2, dof + 4.0 * std::sqrt(2.0 * dof) + 20.0) << kNames[strategy];
+    const Agreement g = Compare(a, va, b, vb, n);
+    EXPECT_GT(g.dof, 150) << kNames[strategy];
+    EXPECT_LT(g.chi2, g.Bound()) << kNames[strategy];
   }
 }
 
@@ -206,25 +231,10 @@ TEST(MonteCarlo, ShadowRaySplittingIsUnbiased)
     p.tracking.y = 4.0f;
     p.viewport.w = 4u; // independent samples
     auto [b, vb] = scene.Render(p, 2);
-    double chi2 = 0.0, varA = 0.0, varB = 0.0;
-    int dof = 0;
-    for (size_t i = 0; i < a.size(); ++i)
-    {
-      const double se2 = (va[i] + vb[i]) / n;
-      if (se2 > 0.0)
-      {
-        chi2 += (a[i] - b[i]) * (a[i] - b[i]) / se2;
-        ++dof;
-      }
-      if (i % 4 < 3)
-      {
-        varA += va[i];
-        varB += vb[i];
-      }
-    }
-    EXPECT_GT(dof, 150) << kNames[strategy];
-    EXPECT_LT(chi2, dof + 4.0 * std::sqrt(2.0 * dof) + 20.0) << kNames[strategy];
-    EXPECT_LT(varB, 0.9 * varA) << kNames[strategy] << ": 4 shadow rays should lower the variance of a sample";
+    const Agreement g = Compare(a, va, b, vb, n);
+    EXPECT_GT(g.dof, 150) << kNames[strategy];
+    EXPECT_LT(g.chi2, g.Bound()) << kNames[strategy];
+    EXPECT_LT(g.varB, 0.9 * g.varA) << kNames[strategy] << ": 4 shadow rays should lower the variance of a sample";
   }
 }
 
@@ -248,28 +258,13 @@ TEST(MonteCarlo, ReservoirCameraIsUnbiased)
       p.tracking.z = float(VS_CAMERA_RESERVOIR);
       p.viewport.w = 4u; // independent samples
       auto [b, vb] = scene.Render(p, 2);
-      double chi2 = 0.0, varA = 0.0, varB = 0.0;
-      int dof = 0;
-      for (size_t i = 0; i < a.size(); ++i)
-      {
-        const double se2 = (va[i] + vb[i]) / n;
-        if (se2 > 0.0)
-        {
-          chi2 += (a[i] - b[i]) * (a[i] - b[i]) / se2;
-          ++dof;
-        }
-        if (i % 4 < 3)
-        {
-          varA += va[i];
-          varB += vb[i];
-        }
-      }
+      const Agreement g = Compare(a, va, b, vb, n);
       const std::string what = std::string(kNames[strategy]) + (background ? ", environment seen" : ", transparent");
-      EXPECT_GT(dof, 150) << what;
-      EXPECT_LT(chi2, dof + 4.0 * std::sqrt(2.0 * dof) + 20.0) << what;
+      EXPECT_GT(g.dof, 150) << what;
+      EXPECT_LT(g.chi2, g.Bound()) << what;
       std::printf("[ reservoir ] %s: variance per sample %.4g (collision) -> %.4g (reservoir), chi2 %.1f dof %d\n",
-        what.c_str(), varA, varB, chi2, dof);
-      EXPECT_LT(varB, varA) << what << ": the reservoir should lower the variance of a sample";
+        what.c_str(), g.varA, g.varB, g.chi2, g.dof);
+      EXPECT_LT(g.varB, g.varA) << what << ": the reservoir should lower the variance of a sample";
     }
   }
 }
@@ -329,19 +324,9 @@ TEST(MonteCarlo, NearestCellMajorantWalkIsUnbiased)
     p.tracking.x = 0.05f;
     p.viewport.w = 4u; // independent samples
     auto [b, vb] = scene.Render(p, 4);
-    double chi2 = 0.0;
-    int dof = 0;
-    for (size_t i = 0; i < a.size(); ++i)
-    {
-      const double se2 = (va[i] + vb[i]) / n;
-      if (se2 > 0.0)
-      {
-        chi2 += (a[i] - b[i]) * (a[i] - b[i]) / se2;
-        ++dof;
-      }
-    }
-    std::printf("%s nearest: cell walk against brick walk chi2 %.1f over %d dof\n", kNames[strategy], chi2, dof);
-    EXPECT_GT(dof, 150) << kNames[strategy];
-    EXPECT_LT(chi2, dof + 4.0 * std::sqrt(2.0 * dof) + 20.0) << kNames[strategy];
+    const Agreement g = Compare(a, va, b, vb, n);
+    std::printf("%s nearest: cell walk against brick walk chi2 %.1f over %d dof\n", kNames[strategy], g.chi2, g.dof);
+    EXPECT_GT(g.dof, 150) << kNames[strategy];
+    EXPECT_LT(g.chi2, g.Bound()) << kNames[strategy];
   }
 }
