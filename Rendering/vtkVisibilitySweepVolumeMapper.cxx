@@ -7,6 +7,7 @@
 #include "vsEnvironmentMap.h"
 #include "vsLightDirections.h"
 #include "vsMajorantGrid.h"
+#include "vsDirectionTable.h"
 #include "vsMonteCarloPass.h"
 #include "vsPropertyChecks.h"
 #include "vsRenderTargetLimits.h"
@@ -60,6 +61,7 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::unique_ptr<vs::EmissionAbsorptionPass> EA;
   std::unique_ptr<vs::MonteCarloPass> MC, Interactive;
   std::unique_ptr<vs::MonteCarloPass> MCGrid; // Auto: the TwoStep samples (MC holds Environment's)
+  std::shared_ptr<vs::DirectionTable> Table;   // the grid strategies' direction table, shared by the passes
   std::unique_ptr<vs::VisibilityGridUpdater> Grid;
   std::unique_ptr<vs::DeviceEnvironment> Environment;
   std::shared_ptr<const vs::EnvironmentMap> EnvironmentSource;
@@ -322,6 +324,7 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
   I.Grid.reset();
   I.Interactive.reset();
   I.MC.reset();
+  I.Table.reset();
   I.MCGrid.reset();
   I.OtherViews.clear();
   I.CurrentView = nullptr;
@@ -789,10 +792,21 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     p.sampling.x = uint32_t(effective);
     p.sampling.y = spp;
     pass->SetCountLookups(this->CountLookups);
+    pass->SetDirectionTable(this->DirectionTable);
+    if (!I.Table)
+    {
+      I.Table = std::make_shared<vs::DirectionTable>(I.Context);
+    }
+    pass->ShareDirectionTable(I.Table);
     pass->Render(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), gridFrame ? grid : nullptr,
       *I.Environment, p, depth);
     this->LastDeviceSeconds = pass->LastSeconds();
-    I.LastRenderSeconds = pass->LastSeconds();
+    I.LastRenderSeconds = pass->LastSeconds() - pass->LastDirectionTableSeconds();
+    if (pass->LastDirectionTableSeconds() > 0.0)
+    {
+      this->LastDirectionTableSeconds = pass->LastDirectionTableSeconds();
+    }
+    this->DirectionTableBuildCount = int(I.Table->Builds());
     if (this->CountLookups)
     {
       auto n = pass->LastLookups();
@@ -813,7 +827,9 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       meanSquare += (double(mean[i]) * mean[i] + double(mean[i + 1]) * mean[i + 1] + double(mean[i + 2]) * mean[i + 2]) / 3.0;
     }
     meanSquare /= std::max<double>(1.0, double(mean.size() / 4));
-    I.Selector.Record(estimator, spp, pass->LastSeconds(), uint64_t(w) * h, double(pass->Samples()), pass->SquareSum(),
+    // The cost per sample without the direction table's build, which (like the sweeps) is the
+    // grid's update, made once per grid state, not per sample.
+    I.Selector.Record(estimator, spp, I.LastRenderSeconds, uint64_t(w) * h, double(pass->Samples()), pass->SquareSum(),
       meanSquare);
   }
   if (!interactive)
@@ -1255,6 +1271,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PendingDirections: " << this->GetPendingDirections() << "\n";
   os << indent << "CellMode: " << this->GetCellModeAsString() << "\n";
   os << indent << "ShadowRays: " << this->ShadowRays << " per scatter point\n";
+  os << indent << "DirectionTable: " << (this->DirectionTable ? "on" : "off") << "\n";
   os << indent << "CameraEstimator: " << this->GetCameraEstimatorAsString() << "\n";
   os << indent << "SamplesPerFrame: " << this->SamplesPerFrame << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";

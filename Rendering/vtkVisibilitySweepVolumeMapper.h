@@ -135,6 +135,17 @@ public:
   vtkGetMacro(ShadowRays, int);
   ///@}
 
+  ///@{
+  /** With stochastic cells, the grid strategies read each visibility cell's direction map from a
+   *  table made once per grid state (a few uint reads per scatter event) instead of building the
+   *  D x D map at every scatter event. Both are unbiased and give the same distribution to 1e-4;
+   *  the table is faster (docs/benchmarks.md) and costs 8 (D² - 1) / 3 bytes per cell. Off only
+   *  for comparisons; trilinear cells always build the map. Default on. */
+  vtkSetMacro(DirectionTable, bool);
+  vtkGetMacro(DirectionTable, bool);
+  vtkBooleanMacro(DirectionTable, bool);
+  ///@}
+
   enum CameraEstimators
   {
     CollisionCamera = 0, // delta tracking to one real collision (the paper's)
@@ -348,6 +359,14 @@ public:
   vtkGetMacro(LastSweepSeconds, double);
 
   ///@{
+  /** The direction table (SetDirectionTable): times it was built (once per grid state the grid
+   *  strategies render with), and the device seconds of the last build (part of
+   *  GetLastDeviceSeconds() in the frame that built it). */
+  vtkGetMacro(DirectionTableBuildCount, int);
+  vtkGetMacro(LastDirectionTableSeconds, double);
+  ///@}
+
+  ///@{
   /** Ray-marching step of the EmissionAbsorption mode in world units; 0 (default) = half the
    *  smallest voxel edge. The MonteCarlo mode does not use it: delta and ratio tracking sample
    *  the exact free-flight distances and transmittance, so no step size enters the estimate. */
@@ -420,6 +439,9 @@ protected:
   double AutoProbeFraction = 0.05;
   int CellMode = StochasticCell;
   int ShadowRays = 1;
+  bool DirectionTable = true;
+  int DirectionTableBuildCount = 0;
+  double LastDirectionTableSeconds = 0.0;
   int CameraEstimator = CollisionCamera;
   int SamplesPerFrame = 1;
   int MaximumSamples = 4096;

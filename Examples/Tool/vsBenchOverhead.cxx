@@ -66,9 +66,11 @@ void RenderChecked(SceneObjects& objects)
   }
 }
 
-Measurement Measure(SceneObjects& objects, const Options& o, const std::string& strategy, int cellMode)
+Measurement Measure(
+  SceneObjects& objects, const Options& o, const std::string& strategy, int cellMode, bool table = true)
 {
   vtkVisibilitySweepVolumeMapper* mapper = objects.Mapper;
+  mapper->SetDirectionTable(table);
   mapper->SetSamplingStrategy(StrategyIndex(strategy, "--strategies"));
   mapper->SetCellMode(cellMode);
   mapper->SetShadowRays(o.ShadowRays);
@@ -78,7 +80,11 @@ Measurement Measure(SceneObjects& objects, const Options& o, const std::string& 
   mapper->SetSamplesPerFrame(o.Spp);
   Measurement m;
   m.Strategy = strategy;
-  m.CellMode = cellMode == vtkVisibilitySweepVolumeMapper::TrilinearCells ? "trilinear" : "stochastic";
+  const bool usesGrid = strategy == "visibility" || strategy == "combined" || strategy == "two-step";
+  m.CellMode = cellMode == vtkVisibilitySweepVolumeMapper::TrilinearCells ? "trilinear"
+    : !usesGrid                                                          ? "-"
+    : table                                                              ? "table"
+                                                                         : "stoch-map";
   const int sweepsBefore = mapper->GetVisibilityUpdateCount();
   RenderChecked(objects); // warm-up: sweeps (if this strategy needs them first), pipeline creation
   if (mapper->GetVisibilityUpdateCount() > sweepsBefore)
@@ -149,6 +155,8 @@ int Run(const Options& given)
     results.push_back(Measure(objects, o, s, vtkVisibilitySweepVolumeMapper::StochasticCell));
     if (usesGrid && o.CellModes)
     {
+      // The same stochastic cell with the map built at each scatter event instead of the table.
+      results.push_back(Measure(objects, o, s, vtkVisibilitySweepVolumeMapper::StochasticCell, false));
       results.push_back(Measure(objects, o, s, vtkVisibilitySweepVolumeMapper::TrilinearCells));
     }
   }
@@ -236,7 +244,8 @@ void AddBenchOverhead(CLI::App& bench)
   cmd->add_option("--spp", o->Spp, "samples per pixel per timed frame")->check(CLI::Range(1, 1024));
   cmd->add_option("--repeats", o->Repeats, "timed frames per strategy (median)")->check(CLI::Range(1, 1000));
   cmd->add_option("--strategies", o->Strategies, "strategies to measure (default: all five)")->delimiter(',');
-  cmd->add_flag("!--no-cell-modes", o->CellModes, "skip the trilinear-cells variants of the grid strategies");
+  cmd->add_flag("!--no-cell-modes", o->CellModes,
+    "skip the variants of the grid strategies (stochastic cell without the direction table, trilinear cells)");
   cmd->add_flag("--quick", o->Quick, "64 x 64, 1 spp, 1 frame (seconds; for tests)");
   cmd->add_option("--shadow-rays", o->ShadowRays, "shadow rays per scatter point (splitting)")->check(CLI::Range(1, 64));
   cmd->add_option("--camera", o->Camera, "camera estimator: collision (delta tracking) or reservoir")

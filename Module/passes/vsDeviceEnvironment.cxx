@@ -2,6 +2,7 @@
 #include "vsBuffer.h"
 #include "vsEnvironmentMap.h"
 #include "vsError.h"
+#include "vsSerial.h"
 
 #include <algorithm>
 #include <string>
@@ -15,6 +16,7 @@ const int kHostLevels = 6; // up to 64 x 64, the largest visibility direction re
 }
 
 DeviceEnvironment::DeviceEnvironment(std::shared_ptr<Context> context, const EnvironmentMap& source, int minSize)
+  : Serial_(NewSerial())
 {
   if (source.Empty() || !EnvironmentMap::IsPowerOfTwo(source.Size))
   {

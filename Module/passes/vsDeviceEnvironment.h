@@ -6,6 +6,7 @@
 
 #include "vissweepCoreModule.h"
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -31,6 +32,9 @@ public:
   /** The largest radiance of any texel (luminance), for sanity bounds. */
   double MaxLuminance() const { return this->MaxLuminance_; }
   bool IsBlack() const { return this->MaxLuminance_ <= 0.0; }
+  /** A process-wide serial of this upload (vsSerial.h): a DeviceEnvironment never changes, so a new
+   *  map is a new serial even where a new object reuses an old one's address. */
+  uint64_t Serial() const { return this->Serial_; }
   /** The luminance importance at quadtree level `level` (2^level x 2^level nodes, row-major,
    *  the same octahedral texels as a D x D visibility map with D = 2^level), kept on the host
    *  for levels up to 6. Throws InputError beyond FinestLevel() or 6. */
@@ -40,6 +44,7 @@ private:
   std::unique_ptr<Buffer> Radiance_, Mips_;
   int Size_ = 0, Level_ = 0;
   double MaxLuminance_ = 0.0;
+  uint64_t Serial_ = 0;
   std::vector<float> CoarseMips_; // levels 0..min(Level_, 6) of the importance quadtree
 };
 }

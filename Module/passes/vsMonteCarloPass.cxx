@@ -5,6 +5,7 @@
 #include "vsContext.h"
 #include "vsDeviceEnvironment.h"
 #include "vsDeviceVolume.h"
+#include "vsDirectionTable.h"
 #include "vsError.h"
 #include "vsImage.h"
 #include "vsMajorantGrid.h"
@@ -41,7 +42,7 @@ const char* StrategyName(uint32_t s)
 }
 
 const ComputePipeline& MonteCarloPass::PipelineFor(
-  const VisibilityGrid* grid, const shared::VsRenderParams& params, bool refine)
+  const VisibilityGrid* grid, const shared::VsRenderParams& params, bool refine, bool table)
 {
   vk::Format f = grid && grid->Valid() ? grid->Image().Format() : vk::Format::eR8Unorm;
   int format = f == vk::Format::eR8Unorm ? 0 : f == vk::Format::eR16Unorm ? 1 : 2;
@@ -63,7 +64,8 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   }
   const uint32_t camera = params.tracking.z > 0.5f ? shared::VS_CAMERA_RESERVOIR : shared::VS_CAMERA_COLLISION;
   const uint32_t interpolation = uint32_t(params.tracking.w + 0.5f), cropping = params.crop.x != 0u ? 1u : 0u;
-  const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping };
+  const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping,
+    table ? 1u : 0u };
   auto& slot = this->Pipelines_[specialization];
   auto& pipeline = slot[format];
   if (!pipeline)
@@ -71,13 +73,14 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
     using B = BindingType;
     std::vector<B> bindings{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageImage, B::StorageBuffer,
       B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer,
-      B::StorageBuffer };
+      B::StorageBuffer, B::StorageBuffer };
     static const char* formats[] = { "r8 visibility", "r16 visibility", "r32f visibility",
       "r8 visibility, counting reads" };
     const std::string name = std::string("monte carlo (") + formats[format] + ", " + StrategyName(strategy) + ", " +
       (cellMode == shared::VS_CELL_STOCHASTIC ? "stochastic cell" : "trilinear cells") +
       (refine ? ", cell walk" : "") + (camera == shared::VS_CAMERA_RESERVOIR ? ", reservoir camera" : "") +
-      (interpolation != 0u ? ", nearest" : "") + (cropping ? ", cropping regions)" : ")");
+      (interpolation != 0u ? ", nearest" : "") + (cropping ? ", cropping regions" : "") +
+      (table ? ", direction table)" : ")");
     if (format == 3)
     {
       bindings.push_back(B::StorageBuffer);
@@ -190,8 +193,29 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   {
     params.sampling.x = shared::VS_STRATEGY_UNIFORM; // what the kernel does without a grid (D = 0)
   }
+  // The grid strategies under stochastic cells read the cells' direction table, made (or kept)
+  // for this grid, environment and strategy here.
+  const uint32_t strategy = params.sampling.x;
+  bool table = false;
+  this->LastTableSeconds_ = 0.0;
+  if (useGrid && this->UseTable_ && strategy > shared::VS_STRATEGY_ENVIRONMENT &&
+    params.sampling.z == shared::VS_CELL_STOCHASTIC)
+  {
+    if (!this->Table_)
+    {
+      this->Table_ = std::make_shared<DirectionTable>(this->Context_);
+    }
+    const uint64_t builds = this->Table_->Builds();
+    table = this->Table_->Update(*grid, environment, strategy, params.sampling2.x);
+    this->LastTableSeconds_ = this->Table_->Builds() != builds ? this->Table_->LastSeconds() : 0.0;
+  }
+  this->LastUsedTable_ = table;
+  if (!this->NoTable_)
+  {
+    this->NoTable_ = std::make_unique<Buffer>(this->Context_, 16, "no direction table");
+  }
   const ComputePipeline& pipeline =
-    this->PipelineFor(useGrid ? grid : nullptr, params, NeedsCellWalk(majorants, params));
+    this->PipelineFor(useGrid ? grid : nullptr, params, NeedsCellWalk(majorants, params), table);
   DescriptorSet set(pipeline);
   set.Bind(0, volume.Image())
     .Bind(1, tf.Lut())
@@ -204,7 +228,8 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     .Bind(8, *this->Sum_)
     .Bind(9, *this->Comp_)
     .Bind(10, *this->Squares_)
-    .Bind(11, *this->Progress_);
+    .Bind(11, *this->Progress_)
+    .Bind(12, table ? this->Table_->Nodes() : *this->NoTable_);
   if (this->CountLookups_)
   {
     if (!this->Lookups_)
@@ -212,7 +237,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
       this->Lookups_ = std::make_unique<Buffer>(this->Context_, 4 * sizeof(uint32_t), "read counters");
     }
     this->Lookups_->Fill(0u);
-    set.Bind(12, *this->Lookups_);
+    set.Bind(13, *this->Lookups_);
   }
   // Each dispatch brings every pixel towards a target count, SamplesPerDispatch more than the
   // last; a pixel the kernel's loop budget left short (mc_render.glsl) catches up in the next one.
@@ -222,7 +247,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   const uint64_t counterOffset = pixels * 4;
   const uint32_t zero = 0;
   const uint32_t groupsX = (this->Width_ + 7) / 8, groupsY = (this->Height_ + 7) / 8;
-  this->LastSeconds_ = 0.0;
+  this->LastSeconds_ = this->LastTableSeconds_;
   this->LastCatchUps_ = 0;
   for (uint32_t round = 0;; ++round)
   {
@@ -271,6 +296,11 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     this->Lookups_->Download(counts, sizeof(counts));
     this->LastLookups_ = { counts[0], counts[1], counts[2] };
   }
+}
+
+uint64_t MonteCarloPass::DirectionTableBuilds() const
+{
+  return this->Table_ ? this->Table_->Builds() : 0;
 }
 
 std::vector<float> MonteCarloPass::Mean() const

@@ -21,6 +21,7 @@ class ComputePipeline;
 class Context;
 class DeviceEnvironment;
 class DeviceVolume;
+class DirectionTable;
 class Image3D;
 class MajorantGrid;
 class TransferFunctionTable;
@@ -76,24 +77,43 @@ public:
   uint32_t LastCatchUps() const { return this->LastCatchUps_; }
   uint32_t SamplesPerDispatch() const { return this->SamplesPerDispatch_; }
 
+  /** The grid strategies read each cell's precomputed direction table (vsDirectionTable.h) under
+   *  stochastic cells (on by default), or build the map at every scatter event (off; trilinear
+   *  cells always do). Both are unbiased; the table is faster. */
+  void SetDirectionTable(bool on) { this->UseTable_ = on; }
+  bool GetDirectionTable() const { return this->UseTable_; }
+  /** Lets passes share one table (a mapper's progressive, Auto and interactive passes render the
+   *  same grid): it is made on first use otherwise. */
+  void ShareDirectionTable(std::shared_ptr<DirectionTable> table) { this->Table_ = std::move(table); }
+  /** Whether the last Render read a direction table; its builds so far, and the device seconds of
+   *  the last Render's build (0 when it reused the table; included in LastSeconds). */
+  bool LastUsedDirectionTable() const { return this->LastUsedTable_; }
+  uint64_t DirectionTableBuilds() const;
+  double LastDirectionTableSeconds() const { return this->LastTableSeconds_; }
+
   /** Device seconds of the last Render and of all Renders since the last Reset. */
   double LastSeconds() const { return this->LastSeconds_; }
   double TotalSeconds() const { return this->TotalSeconds_; }
 
 private:
-  const ComputePipeline& PipelineFor(const VisibilityGrid* grid, const shared::VsRenderParams& params, bool refine);
+  const ComputePipeline& PipelineFor(
+    const VisibilityGrid* grid, const shared::VsRenderParams& params, bool refine, bool table);
   /** Whether some majorant segment may reach the tracking's refinement depth (mc_render.glsl's
    *  cell walk): the brick majorant times the longest world path through a brick, with a margin. */
   static bool NeedsCellWalk(const MajorantGrid& majorants, const shared::VsRenderParams& params);
 
   std::shared_ptr<Context> Context_;
-  // Per specialization (strategy, cell mode, cell walk): r8, r16, r32f visibility; r8 counting reads.
+  // Per specialization (mc_render.glsl's constant_ids): r8, r16, r32f visibility; r8 counting reads.
   std::map<std::vector<uint32_t>, std::array<std::shared_ptr<ComputePipeline>, 4>> Pipelines_;
   std::unique_ptr<Buffer> Lookups_;
   bool CountLookups_ = false;
   uint32_t SamplesPerDispatch_ = 16;
   std::array<uint64_t, 3> LastLookups_{};
   std::unique_ptr<Image3D> NoGrid_;
+  std::shared_ptr<DirectionTable> Table_;
+  std::unique_ptr<Buffer> NoTable_;
+  bool UseTable_ = true, LastUsedTable_ = false;
+  double LastTableSeconds_ = 0.0;
   std::unique_ptr<Buffer> Params_, Depth_, Sum_, Comp_, Squares_, Progress_;
   uint32_t LastCatchUps_ = 0;
   std::vector<float> LastDepth_;

@@ -1,4 +1,5 @@
 #include "vsVisibilityGrid.h"
+#include "vsSerial.h"
 #include "vsBatch.h"
 #include "vsBuffer.h"
 #include "vsContext.h"
@@ -156,6 +157,7 @@ bool VisibilityGrid::Allocate(
   {
     this->Image_->Clear(clearValue);
   }
+  this->ContentSerial_ = NewSerial();
   return true;
 }
 
@@ -166,6 +168,7 @@ void VisibilityGrid::Clear(float value)
     throw InputError("the visibility grid has no image to clear");
   }
   this->Image_->Clear(std::clamp(value, 0.0f, 1.0f));
+  this->ContentSerial_ = NewSerial();
 }
 
 void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionTable& tf,
@@ -251,6 +254,7 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
     this->RunBruteForce(volume, tf, majorants, globals, directions, progress);
   }
   this->DirectionsComputed_ += directions.size();
+  this->ContentSerial_ = NewSerial();
   this->LastWallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
 }
 

@@ -83,6 +83,9 @@ public:
   double LastWallSeconds() const { return this->LastWallSeconds_; }
   /** Times the pooled extinction volume was built (it is cached across Compute calls). */
   uint64_t PoolBuilds() const { return this->PoolBuilds_; }
+  /** Changes whenever the grid's values may have changed (a new image, Clear, Compute): a
+   *  process-wide serial (vsSerial.h), so caches of derived data can tell old values from new. */
+  uint64_t ContentSerial() const { return this->ContentSerial_; }
   /** Directions swept (or brute-forced) since this object was made. */
   uint64_t DirectionsComputed() const { return this->DirectionsComputed_; }
 
@@ -132,6 +135,7 @@ private:
   std::map<std::string, double> LastStageSeconds_;
   uint32_t LastDispatches_ = 0;
   uint64_t DirectionsComputed_ = 0;
+  uint64_t ContentSerial_ = 0;
 };
 }
 

@@ -46,6 +46,8 @@ layout(constant_id = 2) const uint VS_SPEC_REFINE = 1u;    /* 0: no majorant seg
 layout(constant_id = 3) const uint VS_SPEC_CAMERA = 0u;    /* VS_CAMERA_*, = params.tracking.z */
 layout(constant_id = 4) const uint VS_SPEC_INTERPOLATION = 0u; /* interpolation.h, = params.tracking.w */
 layout(constant_id = 5) const uint VS_SPEC_CROPPING = 0u;  /* 1: cropping regions (params.crop.x != 0) */
+layout(constant_id = 6) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
+                                                             table (binding 12), stochastic cell only */
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
 layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
 layout(binding = 2, r32f) uniform readonly image3D uMajorant;
@@ -59,12 +61,14 @@ layout(std430, binding = 9) buffer Compensation { vec4 uComp[]; };
 layout(std430, binding = 10) buffer Squares { vec4 uSq[]; };
 /* Samples each pixel holds (W x H), then one counter of the pixels a dispatch left short of target. */
 layout(std430, binding = 11) buffer Progress { uint uCount[]; };
+/* The direction table (shared/direction_table.h): per cell, the shares of its map's quadtree nodes. */
+layout(std430, binding = 12) readonly buffer DirectionTable { uint uTable[]; };
 layout(push_constant) uniform Push { uint target; } pc;
 
 /* The instrumented variant (mc_render_count.comp) counts what a sample reads:
- * uLookups[0] trilinear volume samples, [1] majorant-brick loads, [2] visibility texels. */
+ * uLookups[0] trilinear volume samples, [1] majorant-brick loads, [2] visibility texels (or table nodes). */
 #ifdef VS_COUNT_LOOKUPS
-layout(std430, binding = 12) buffer Lookups { uint uLookups[]; };
+layout(std430, binding = 13) buffer Lookups { uint uLookups[]; };
 uvec3 gLookups = uvec3(0u);
 #define VS_COUNT(i) (gLookups[i]++)
 #else
@@ -77,6 +81,7 @@ float vs_env_mip(uint index)
 }
 
 #include "volume_access.glsl"
+#include "direction_map.glsl"
 
 /* Registers, loaded once per invocation (lavapipe does not hoist buffer loads). */
 ivec3 gDims;
@@ -102,17 +107,15 @@ void set_ray(vec3 d)
   gRay.invLength = 1.0 / max(length(d), 1e-20);
 }
 uint gShadowRays;
+uint gTableBase; /* where the scatter cell's direction table starts (VS_SPEC_TABLE) */
+
+uint vs_table_value(uint i)
+{
+  VS_COUNT(2);
+  return uTable[i];
+}
 float gRefineDepth;
 uint gInterpolation; /* interpolation.h: the scalar's reconstruction (P.tracking.w) */
-/* The direction map of this sample (D x D <= 256 values), which the strategies read through
- * vs_map_value (vs_prelude.h): one module-scope array, never copied into calls. */
-float gValues[344]; /* up to 16 x 16 values and their sum pyramid: (4 * 256 - 1) / 3 */
-
-float vs_map_value(uint n)
-{
-  return gValues[n];
-}
-
 vec3 env_radiance(vec3 w)
 {
   uvec2 t = vs_dir_to_texel(w, gEnvSize);
@@ -297,15 +300,20 @@ vec2 ray_interval(vec3 o, vec3 d)
   return vs_clip_planes(o, d, vs_intersect_box(o, d, P.boxMin.xyz, P.boxMax.xyz), P.clipPlanes, gClipCount);
 }
 
-float visibility_texel(uvec3 cell, uint n, uint D)
+/* The cell one corner of the 8 around index-space point x, picked with its trilinear weight. */
+uvec3 stochastic_cell(vec3 x, inout VsRng rng)
 {
-  ivec3 t = ivec3(int(cell.x * D + n % D), int(cell.y * D + n / D), int(cell.z));
-  VS_COUNT(2);
-  return imageLoad(uVisibility, t).r;
+  uvec3 cells = P.grid.xyz;
+  vec3 c = clamp((x - P.boxMin.xyz) / P.cellSize.xyz - 0.5, vec3(0.0), vec3(cells - 1u));
+  uvec3 c0 = uvec3(floor(c));
+  uvec3 c1 = min(c0 + 1u, cells - 1u);
+  vec3 f = c - vec3(c0);
+  vec3 u = vec3(vs_rng_vec2(rng), vs_rng_float(rng));
+  return uvec3(u.x < f.x ? c1.x : c0.x, u.y < f.y ? c1.y : c0.y, u.z < f.z ? c1.z : c0.z);
 }
 
-/* The D x D values the strategy warps at index-space point x: visibility (+ epsilon),
- * times the environment's importance at level log2(D) for Combined and TwoStep. */
+/* The D x D values the strategy warps at index-space point x (direction_map.glsl), with their sum
+ * pyramid: one cell's map (stochastic cell), or the maps of the 8 cells around x interpolated. */
 void direction_values(vec3 x, uint strategy, uint D, inout VsRng rng)
 {
   uvec3 cells = P.grid.xyz;
@@ -315,18 +323,10 @@ void direction_values(vec3 x, uint strategy, uint D, inout VsRng rng)
   uvec3 c1 = min(c0 + 1u, cells - 1u);
   vec3 f = c - vec3(c0);
   uint DD = D * D;
-  uint level = vs_log2(D);
   float epsilon = P.sampling2.x;
   if (VS_SPEC_CELL_MODE == VS_CELL_STOCHASTIC)
   {
-    /* One corner with probability equal to its trilinear weight; one pass over the map. */
-    vec3 u = vec3(vs_rng_vec2(rng), vs_rng_float(rng));
-    uvec3 cell = uvec3(u.x < f.x ? c1.x : c0.x, u.y < f.y ? c1.y : c0.y, u.z < f.z ? c1.z : c0.z);
-    for (uint n = 0u; n < DD; ++n)
-    {
-      float v = visibility_texel(cell, n, D) + epsilon;
-      gValues[n] = strategy == VS_STRATEGY_VISIBILITY ? v : v * vs_env_node(level, uvec2(n % D, n / D));
-    }
+    cell_map(stochastic_cell(x, rng), strategy, D, epsilon);
   }
   else
   {
@@ -342,25 +342,24 @@ void direction_values(vec3 x, uint strategy, uint D, inout VsRng rng)
           gValues[n] += w * visibility_texel(cell, n, D);
     }
     for (uint n = 0u; n < DD; ++n)
-    {
-      float v = gValues[n] + epsilon;
-      gValues[n] = strategy == VS_STRATEGY_VISIBILITY ? v : v * vs_env_node(level, uvec2(n % D, n / D));
-    }
+      gValues[n] = map_entry(gValues[n], n, strategy, D, epsilon);
   }
-  /* The sum pyramid behind the map (warp.h), level by level up to the total. */
-  for (uint size = D / 2u; size > 0u; size /= 2u)
-  {
-    uint base = vs_pyramid_offset(D, size);
-    for (uint n = 0u; n < size * size; ++n)
-      gValues[base + n] = vs_pyramid_parent(D, 2u * size, uvec2(n % size, n / size));
-  }
+  map_pyramid(D);
 }
 
-/* The direction map at x for the grid strategies (once per scatter point, for all its shadow rays). */
+/* The direction map at x for the grid strategies (once per scatter point, for all its shadow rays):
+ * the stochastic cell's table, or the map built here. */
 void prepare_directions(vec3 x, uint strategy, inout VsRng rng)
 {
   uint D = P.grid.w;
-  if (strategy != VS_STRATEGY_ENVIRONMENT && strategy != VS_STRATEGY_UNIFORM && D != 0u)
+  if (strategy == VS_STRATEGY_ENVIRONMENT || strategy == VS_STRATEGY_UNIFORM || D == 0u)
+    return;
+  if (VS_SPEC_TABLE != 0u)
+  {
+    uvec3 cell = stochastic_cell(x, rng);
+    gTableBase = 2u * vs_table_nodes(D) * ((cell.z * P.grid.y + cell.y) * P.grid.x + cell.x);
+  }
+  else
     direction_values(x, strategy, D, rng);
 }
 
@@ -373,6 +372,8 @@ vec3 sample_direction(uint strategy, inout VsRng rng, out float pdf)
     return vs_sample_environment(K, vs_rng_vec2(rng), pdf);
   if (strategy == VS_STRATEGY_UNIFORM || D == 0u)
     return vs_sample_uniform(vs_rng_vec2(rng), pdf);
+  if (VS_SPEC_TABLE != 0u)
+    return vs_sample_direction_table(strategy, gTableBase, D, K, vs_rng_vec2(rng), pdf);
   return vs_sample_direction_pyramid(strategy, D, K, vs_rng_vec2(rng), pdf);
 }
 
@@ -544,15 +545,17 @@ void camera_reservoir(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint 
 /* ------------------------------------------------------------------ the loop budget */
 
 /* Back-edges a scatter step may take, an upper bound: the environment's descent (K levels), the
- * shadow ray's clip planes; for the grid strategies direction_values' loops over the D x D map
- * (one pass for one cell; clear, 8 corners and weight for trilinear cells), its sum pyramid
- * (D^2 / 3 values in log2 D loops) and the warp's descent (log2 D levels). */
+ * shadow ray's clip planes; for the grid strategies the table's descent (log2 D levels), or
+ * direction_values' loops over the D x D map (one pass for one cell; clear, 8 corners and weight
+ * for trilinear cells), its sum pyramid (D^2 / 3 values in log2 D loops) and the warp's descent. */
 uint scatter_cost(uint strategy, uint D, uint K, uint cellMode)
 {
   uint DD = D * D;
   uint cost = 16u + 2u * K + 6u + 4u;
   if (strategy == VS_STRATEGY_UNIFORM || strategy == VS_STRATEGY_ENVIRONMENT || D == 0u)
     return cost;
+  if (VS_SPEC_TABLE != 0u)
+    return cost + 16u + 2u * D;
   cost += 16u + 2u * D + (cellMode == VS_CELL_STOCHASTIC ? DD : 2u * DD + 8u * (DD + 1u)) + DD / 2u + 8u;
   return cost;
 }

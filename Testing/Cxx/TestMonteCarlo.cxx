@@ -150,43 +150,52 @@ TEST(MonteCarlo, HomogeneousBoxMatchesQuadrature)
 
 // The same samples whatever the split into frames and dispatches: a fixed seed gives the same
 // image bit for bit (counter-based random numbers, the same compensated additions in the same
-// order), with 256 samples asked of one dispatch (TwoStep's samples then pass lavapipe's loop
+// order), with 512 samples asked of one dispatch (TwoStep's samples then pass lavapipe's loop
 // limit, 65535 back-edges: the kernel stops at its budget and the pass dispatches again; before the
-// budget, 160 or more samples per dispatch gave wrong pixels), 8 frames of 32 one-sample
-// dispatches, or dispatches of 7.
+// budget, 160 or more samples per dispatch gave wrong pixels), 16 frames of 32 one-sample
+// dispatches, or dispatches of 7. TwoStep both with the cells' direction table (the default) and
+// with the map built at each scatter event.
 TEST(MonteCarlo, ReproducibleWhateverTheFrameSplit)
 {
   RenderScene scene({ { 12, 10, 9 } }, [](int x, int y, int z) { return float((x + 2 * y + 3 * z) % 5) / 4.0f; }, 0.5,
     glm::vec3(0.8f), vs::EnvironmentMap::SunDisk(64, glm::normalize(glm::vec3(1, 1, 2)), 5.0, glm::vec3(50.0f),
       glm::vec3(0.2f)));
+  const uint32_t total = 512;
   uint32_t catchUps = 0;
-  auto render = [&](vs::shared::VsRenderParams p, int frames, uint32_t perDispatch) {
+  bool usedTable = false;
+  auto render = [&](vs::shared::VsRenderParams p, int frames, uint32_t perDispatch, bool table) {
     vs::MonteCarloPass pass(scene.Context);
     pass.SetSamplesPerDispatch(perDispatch);
+    pass.SetDirectionTable(table);
     pass.Reset(p.viewport.x, p.viewport.y);
     for (int f = 0; f < frames; ++f)
       pass.Render(*scene.Volume, *scene.TF, *scene.Majorants, scene.Grid.get(), *scene.Environment, p, {});
-    EXPECT_EQ(pass.Samples(), 256u);
+    EXPECT_EQ(pass.Samples(), total);
     catchUps = pass.LastCatchUps();
+    usedTable = pass.LastUsedDirectionTable();
     return std::make_pair(pass.Mean(), pass.Variance());
   };
-  for (uint32_t strategy : { VS_STRATEGY_UNIFORM, VS_STRATEGY_TWO_STEP })
+  for (uint32_t strategy : { VS_STRATEGY_UNIFORM, VS_STRATEGY_TWO_STEP, VS_STRATEGY_TWO_STEP + 100 })
   {
-    auto p = scene.Params(8, 8, -2.0f, 12.0f, strategy, 256, 5u, true);
-    auto [a, va] = render(p, 1, vs::MonteCarloPass::kMaxSamplesPerDispatch);
+    const bool table = strategy == VS_STRATEGY_TWO_STEP;
+    strategy %= 100;
+    const std::string name = std::string(kNames[strategy]) + (table ? " (direction table)" : "");
+    auto p = scene.Params(8, 8, -2.0f, 12.0f, strategy, total, 5u, true);
+    auto [a, va] = render(p, 1, vs::MonteCarloPass::kMaxSamplesPerDispatch, table);
+    EXPECT_EQ(usedTable, table) << name;
     if (strategy == VS_STRATEGY_TWO_STEP)
-      EXPECT_GT(catchUps, 0u) << "256 TwoStep samples fit one dispatch's loop budget: the split is not exercised";
+      EXPECT_GT(catchUps, 0u) << total << " " << name << " samples fit one dispatch's loop budget: the split is not exercised";
     p.sampling.y = 32;
-    auto [b, vb] = render(p, 8, 1);
-    auto [c, vc] = render(p, 8, 7);
+    auto [b, vb] = render(p, total / 32, 1, table);
+    auto [c, vc] = render(p, total / 32, 7, table);
     ASSERT_EQ(a.size(), b.size());
-    EXPECT_EQ(a, b) << kNames[strategy] << ": 256 samples asked of one dispatch against 256 dispatches of 1";
-    EXPECT_EQ(va, vb) << kNames[strategy];
-    EXPECT_EQ(b, c) << kNames[strategy] << ": dispatches of 7 samples";
+    EXPECT_EQ(a, b) << name << ": " << total << " samples asked of one dispatch against " << total << " dispatches of 1";
+    EXPECT_EQ(va, vb) << name;
+    EXPECT_EQ(b, c) << name << ": dispatches of 7 samples";
     double sum = 0.0;
     for (float v : a)
       sum += v;
-    EXPECT_GT(sum, 0.0) << kNames[strategy] << ": an image, not zeros";
+    EXPECT_GT(sum, 0.0) << name << ": an image, not zeros";
   }
 }
 

@@ -220,20 +220,26 @@ testing::AssertionResult StrategyMatchesPdf(uint strategy, const Scene& s)
          << " (" << StrategyName(strategy) << ", " << s.name << ")";
 }
 
+// The map with its sum pyramid behind it (warp.h), as the render kernel builds it.
+std::vector<float> WithPyramid(const Map& values, uint D)
+{
+  std::vector<float> v((4 * D * D - 1) / 3, 0.0f);
+  std::copy(values.begin(), values.begin() + D * D, v.begin());
+  for (uint size = D / 2; size > 0; size /= 2)
+  {
+    for (uint i = 0; i < size * size; ++i)
+    {
+      v[vs_pyramid_offset(D, size) + i] = vs_pyramid_parent(v.data(), D, 2 * size, uvec2(i % size, i / size));
+    }
+  }
+  return v;
+}
+
 // The same strategy through the pyramid form of the map (the render kernel's, warp.h).
 testing::AssertionResult PyramidStrategyMatchesPdf(uint strategy, const Scene& s)
 {
   vstest::ScopedEnvMips scope(s.mips);
-  const Map values = ValuesFor(strategy, s);
-  std::vector<float> v((4 * s.D * s.D - 1) / 3, 0.0f);
-  std::copy(values.begin(), values.begin() + s.D * s.D, v.begin());
-  for (uint size = s.D / 2; size > 0; size /= 2)
-  {
-    for (uint i = 0; i < size * size; ++i)
-    {
-      v[vs_pyramid_offset(s.D, size) + i] = vs_pyramid_parent(v.data(), s.D, 2 * size, uvec2(i % size, i / size));
-    }
-  }
+  const std::vector<float> v = WithPyramid(ValuesFor(strategy, s), s.D);
   vstest::SamplerTestOptions o;
   o.bins = 64;
   o.sub = 2;
@@ -244,6 +250,48 @@ testing::AssertionResult PyramidStrategyMatchesPdf(uint strategy, const Scene& s
            [&](vec2 u, float& pdf) { return vs_sample_direction_pyramid(strategy, v.data(), s.D, s.K, u, pdf); },
            [&](vec3 d) { return vs_pdf_direction_pyramid(strategy, v.data(), s.D, s.K, d); }, o)
          << " (pyramid, " << StrategyName(strategy) << ", " << s.name << ")";
+}
+
+// The cell's direction table (direction_table.h), packed node by node from the pyramid, behind
+// `pad` entries of another cell (so that `base` is exercised).
+std::vector<uint32_t> TableOf(const Map& values, uint D, uint pad)
+{
+  const std::vector<float> v = WithPyramid(values, D);
+  std::vector<uint32_t> table(pad, 0xdeadbeefu);
+  for (uint level = 0; (1u << level) < D; ++level)
+  {
+    const uint n = 1u << level;
+    for (uint i = 0; i < n * n; ++i)
+    {
+      const uvec2 node = vs_table_node_from_pyramid(v.data(), D, level, uvec2(i % n, i / n));
+      table.push_back(node.x);
+      table.push_back(node.y);
+    }
+  }
+  return table;
+}
+
+// The same strategy through the cell's precomputed table (the render kernel's default form).
+testing::AssertionResult TableStrategyMatchesPdf(uint strategy, const Scene& s)
+{
+  vstest::ScopedEnvMips scope(s.mips);
+  const uint pad = 5;
+  const std::vector<uint32_t> table = TableOf(ValuesFor(strategy, s), s.D, pad);
+  if (table.size() != pad + 2 * vs_table_nodes(s.D))
+  {
+    return testing::AssertionFailure() << "table of " << table.size() - pad << " uints, expected "
+                                       << 2 * vs_table_nodes(s.D);
+  }
+  vstest::SamplerTestOptions o;
+  o.bins = 64;
+  o.sub = 2;
+  o.samples = 60000;
+  o.seed = strategy * 100u + s.D + s.K + 11u;
+  o.edgeResolution = int(std::max(s.D, 1u << s.K));
+  return vstest::SamplerMatchesPdf(
+           [&](vec2 u, float& pdf) { return vs_sample_direction_table(strategy, table.data(), pad, s.D, s.K, u, pdf); },
+           [&](vec3 d) { return vs_pdf_direction_table(strategy, table.data(), pad, s.D, s.K, d); }, o)
+         << " (table, " << StrategyName(strategy) << ", " << s.name << ")";
 }
 
 } // namespace
@@ -261,6 +309,67 @@ TEST(SamplingStrategies, PyramidFormsMatchPdf)
     }
     EXPECT_TRUE(PyramidStrategyMatchesPdf(strategy, MakeScene(kVisibilityMaps[2], kEnvironments[3], 16, 6)));
     EXPECT_TRUE(PyramidStrategyMatchesPdf(strategy, MakeScene(kVisibilityMaps[0], kEnvironments[2], 2, 4)));
+  }
+}
+
+TEST(SamplingStrategies, TableFormsMatchPdf)
+{
+  for (uint strategy : { VS_STRATEGY_VISIBILITY, VS_STRATEGY_COMBINED, VS_STRATEGY_TWO_STEP })
+  {
+    for (const NamedMap& vis : kVisibilityMaps)
+    {
+      EXPECT_TRUE(TableStrategyMatchesPdf(strategy, MakeScene(vis, kEnvironments[1], 8, 5)));
+    }
+    EXPECT_TRUE(TableStrategyMatchesPdf(strategy, MakeScene(kVisibilityMaps[2], kEnvironments[3], 16, 6)));
+    EXPECT_TRUE(TableStrategyMatchesPdf(strategy, MakeScene(kVisibilityMaps[0], kEnvironments[2], 2, 4)));
+    EXPECT_TRUE(TableStrategyMatchesPdf(strategy, MakeScene(kVisibilityMaps[3], kEnvironments[3], 4, 4)));
+  }
+}
+
+// The 16-bit table is the map up to rounding: every texel of positive weight keeps a positive
+// probability (else its light would never be sampled: bias), no texel of weight 0 gets one, the
+// probabilities add to 1, and each is the exact one to within the rounding of log2 D shares.
+TEST(SamplingStrategies, TableKeepsEveryTexelOfTheMap)
+{
+  for (const NamedMap& vis : kVisibilityMaps)
+  {
+    for (const NamedEnv& env : kEnvironments)
+    {
+      for (uint D : { 2u, 4u, 8u, 16u })
+      {
+        Scene s = MakeScene(vis, env, D, 6);
+        vstest::ScopedEnvMips scope(s.mips);
+        for (uint strategy : { VS_STRATEGY_VISIBILITY, VS_STRATEGY_TWO_STEP })
+        {
+          const Map values = ValuesFor(strategy, s);
+          const std::vector<float> pyramid = WithPyramid(values, D);
+          const std::vector<uint32_t> table = TableOf(values, D, 0);
+          double total = 0.0;
+          bool any = false;
+          for (uint y = 0; y < D; ++y)
+          {
+            for (uint x = 0; x < D; ++x)
+            {
+              const float exact = vs_warp_pyramid_prob(pyramid.data(), D, uvec2(x, y));
+              const float p = vs_warp_table_prob(table.data(), 0u, D, uvec2(x, y));
+              total += p;
+              any = any || values[y * D + x] > 0.0f;
+              ASSERT_EQ(values[y * D + x] > 0.0f, p > 0.0f)
+                << StrategyName(strategy) << ", " << s.name << ", texel " << x << ", " << y;
+              // A texel's probability is the product of its log2 D <= 4 shares, so each share of a
+              // texel of probability > 1e-3 is > 1e-3, and rounding it to 1/65535 moves it by at
+              // most 0.5 / (65535 x 1e-3) = 0.76% (the stored sum's rounding adds < 0.01%):
+              // at most 4 x 0.77% in all.
+              if (exact > 1e-3f)
+              {
+                EXPECT_NEAR(p / exact, 1.0, 0.031) << StrategyName(strategy) << ", " << s.name;
+              }
+            }
+          }
+          EXPECT_NEAR(total, any ? 1.0 : 0.0, 1e-5) << StrategyName(strategy) << ", " << s.name;
+        }
+      }
+    }
   }
 }
 

@@ -72,15 +72,20 @@ struct RenderScene : VisibilityScene
   std::pair<std::vector<float>, std::vector<double>> Render(vs::shared::VsRenderParams p, int frames)
   {
     vs::MonteCarloPass pass(this->Context);
+    pass.SetDirectionTable(this->DirectionTable);
     pass.Reset(p.viewport.x, p.viewport.y);
     for (int f = 0; f < frames; ++f)
     {
       pass.Render(*this->Volume, *this->TF, *this->Majorants, this->Grid.get(), *this->Environment, p, {});
     }
     this->LastSamples = pass.Samples();
+    this->LastUsedDirectionTable = pass.LastUsedDirectionTable();
     return { pass.Mean(), pass.Variance() };
   }
   uint32_t LastSamples = 0;
+  /** Whether Render lets the grid strategies read the cells' direction table (the pass's default). */
+  bool DirectionTable = true;
+  bool LastUsedDirectionTable = false;
 };
 }
 

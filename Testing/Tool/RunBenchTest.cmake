@@ -30,8 +30,8 @@ endfunction()
 
 if (BENCH STREQUAL "overhead")
   string(JSON n LENGTH "${j}" strategies)
-  if (NOT n EQUAL 8) # 5 strategies, the 3 grid strategies also with trilinear cells
-    message(FATAL_ERROR "${n} measurements, expected 8")
+  if (NOT n EQUAL 11) # 5 strategies, the 3 grid strategies also without the direction table and with trilinear cells
+    message(FATAL_ERROR "${n} measurements, expected 11")
   endif ()
   math(EXPR last "${n} - 1")
   foreach (i RANGE ${last})
@@ -47,6 +47,16 @@ if (BENCH STREQUAL "overhead")
       endif ()
     else ()
       require_positive(${vis} "${name}: visibility texels per path")
+      string(JSON cells GET "${j}" strategies ${i} cell_mode)
+      set(grid_reads_${name}_${cells} ${vis})
+    endif ()
+  endforeach ()
+  # The direction table is read in log2 D steps of two uints per scatter event (at most 6 at the
+  # default D = 8); the map it replaces costs D^2 = 64 texels.
+  foreach (name visibility combined two-step)
+    if (NOT grid_reads_${name}_table LESS_EQUAL 6 OR NOT grid_reads_${name}_table LESS grid_reads_${name}_stoch-map)
+      message(FATAL_ERROR "${name}: ${grid_reads_${name}_table} table reads per path against "
+        "${grid_reads_${name}_stoch-map} map texels: expected at most 6, and fewer than the map's")
     endif ()
   endforeach ()
   string(JSON march GET "${j}" plain_march samples_per_second)

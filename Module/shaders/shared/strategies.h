@@ -21,6 +21,10 @@
  *                from level log2(D) to K:  pdf = P(texel) P(leaf|texel) N²/(4π).
  *                A texel whose env node is 0 has product 0 and is never picked.
  *
+ * The render kernel reads the grid strategies' maps from a per-cell table of their quadtrees
+ * (direction_table.h: vs_sample_direction_table), or, where it has none, builds the map with its
+ * sum pyramid at the scatter point (vs_sample_direction_pyramid).
+ *
  * The tabulated map (VS_MAP, see vs_prelude.h) is the visibility map for Visibility
  * and the product map for Combined and TwoStep; Uniform and Environment ignore it.
  * D x D values, row-major, D in {2,4,8,16} (8 by default). K >= log2(D) for TwoStep. A returned pdf of 0 means "no
@@ -31,6 +35,7 @@
 #include "octahedral.h"
 #include "sphere.h"
 #include "warp.h"
+#include "direction_table.h"
 
 VS_NAMESPACE_BEGIN
 
@@ -226,6 +231,50 @@ VS_FUNC float vs_pdf_direction_pyramid(uint strategy, VS_MAP_PARAM uint D, uint 
     return vs_pdf_two_step_pyramid(VS_MAP_ARG D, finestLevel, dir);
   }
   return vs_pdf_uniform(dir);
+}
+
+/* ------------------- the same from the cell's precomputed table (direction_table.h) */
+
+VS_FUNC vec3 vs_sample_direction_table(
+  uint strategy, VS_TABLE_PARAM uint base, uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
+{
+  if (strategy == VS_STRATEGY_ENVIRONMENT)
+  {
+    return vs_sample_environment(finestLevel, u, pdf);
+  }
+  if (strategy == VS_STRATEGY_UNIFORM)
+  {
+    return vs_sample_uniform(u, pdf);
+  }
+  uvec2 t;
+  float prob;
+  vec2 uTexel;
+  vs_warp_table(VS_TABLE_ARG base, D, u, t, prob, uTexel);
+  if (strategy == VS_STRATEGY_TWO_STEP)
+  {
+    return vs_two_step_descend(t, prob, uTexel, D, finestLevel, pdf);
+  }
+  pdf = vs_texel_pdf(prob, D);
+  return vs_dir_in_texel(t, uTexel, D);
+}
+
+VS_FUNC float vs_pdf_direction_table(uint strategy, VS_TABLE_PARAM uint base, uint D, uint finestLevel, vec3 dir)
+{
+  if (strategy == VS_STRATEGY_ENVIRONMENT)
+  {
+    return vs_pdf_environment(finestLevel, dir);
+  }
+  if (strategy == VS_STRATEGY_UNIFORM)
+  {
+    return vs_pdf_uniform(dir);
+  }
+  if (strategy == VS_STRATEGY_TWO_STEP)
+  {
+    uvec2 leaf = vs_dir_to_texel(dir, 1u << finestLevel);
+    float probTexel = vs_warp_table_prob(VS_TABLE_ARG base, D, leaf >> (finestLevel - vs_log2(D)));
+    return vs_two_step_pdf_given_texel_prob(probTexel, leaf, D, finestLevel);
+  }
+  return vs_texel_pdf(vs_warp_table_prob(VS_TABLE_ARG base, D, vs_dir_to_texel(dir, D)), D);
 }
 
 /* ------------------------------------------------------------ dispatch */

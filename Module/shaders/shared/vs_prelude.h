@@ -32,6 +32,9 @@
 #define VS_MAP_PARAM const float *values,
 #define VS_MAP_ARG values,
 #define VS_MAP(i) values[i]
+#define VS_TABLE_PARAM const uint32_t *table,
+#define VS_TABLE_ARG table,
+#define VS_TABLE(i) table[i]
 #else
 #define VS_NAMESPACE_BEGIN
 #define VS_NAMESPACE_END
@@ -42,6 +45,9 @@
 #define VS_MAP_PARAM
 #define VS_MAP_ARG
 #define VS_MAP(i) vs_map_value(i)
+#define VS_TABLE_PARAM
+#define VS_TABLE_ARG
+#define VS_TABLE(i) vs_table_value(i)
 #endif
 
 /* The small tabulated direction maps (visibility or product, D x D <= 256 values)
@@ -49,7 +55,10 @@
  * VS_MAP_ARG); in GLSL the one map of the invocation, which the shader keeps in a
  * module-scope array and exposes as `float vs_map_value(uint n)`. GLSL passes arrays
  * by value, and copying a 256-float map into every call made lavapipe spend minutes
- * compiling the render shader. VS_MAP(i) reads entry i either way. */
+ * compiling the render shader. VS_MAP(i) reads entry i either way.
+ * The precomputed direction tables (direction_table.h) are read the same way: VS_TABLE(i)
+ * is `table[i]` of a `const uint32_t* table` argument in C++, the shader's
+ * `uint vs_table_value(uint i)` (its storage buffer) in GLSL. */
 
 VS_NAMESPACE_BEGIN
 

@@ -1,0 +1,94 @@
+#include "vsDirectionTable.h"
+#include "shared/direction_table.h"
+#include "shared/strategies.h"
+#include "vsBatch.h"
+#include "vsBuffer.h"
+#include "vsContext.h"
+#include "vsDeviceEnvironment.h"
+#include "vsError.h"
+#include "vsImage.h"
+#include "vsPipeline.h"
+#include "vsVisibilityGrid.h"
+
+#include "vs_spirv_direction_table_r16.h"
+#include "vs_spirv_direction_table_r32f.h"
+#include "vs_spirv_direction_table_r8.h"
+
+#include <cstring>
+
+namespace vs
+{
+DirectionTable::DirectionTable(std::shared_ptr<Context> context)
+  : Context_(std::move(context))
+{
+}
+
+DirectionTable::~DirectionTable() = default;
+
+uint64_t DirectionTable::BytesFor(uint64_t cells, uint32_t D)
+{
+  return cells * 2u * shared::vs_table_nodes(D) * sizeof(uint32_t);
+}
+
+bool DirectionTable::Update(
+  const VisibilityGrid& grid, const DeviceEnvironment& environment, uint32_t strategy, float epsilon)
+{
+  if (!grid.Valid())
+  {
+    throw InputError("a direction table needs a visibility grid");
+  }
+  if (strategy != shared::VS_STRATEGY_VISIBILITY && strategy != shared::VS_STRATEGY_COMBINED &&
+    strategy != shared::VS_STRATEGY_TWO_STEP)
+  {
+    throw InputError("a direction table is for the grid strategies (visibility, combined, two-step)");
+  }
+  // Combined and TwoStep warp the same map (the product with the light).
+  const uint32_t map = strategy == shared::VS_STRATEGY_VISIBILITY ? strategy : uint32_t(shared::VS_STRATEGY_COMBINED);
+  const uint32_t D = grid.Side();
+  const Key key{ grid.ContentSerial(), environment.Serial(), map, D, epsilon };
+  if (this->Nodes_ && key == this->Key_)
+  {
+    return true;
+  }
+  const auto cells = grid.Cells();
+  const uint64_t count = uint64_t(cells[0]) * cells[1] * cells[2];
+  const uint64_t bytes = BytesFor(count, D);
+  if (D < 2 || bytes == 0 || bytes > this->Context_->Info().MaxStorageBufferRange ||
+    count > this->Context_->Info().MaxComputeWorkGroupCount[0] * 64ull)
+  {
+    this->Nodes_.reset();
+    return false;
+  }
+  if (!this->Nodes_ || this->Nodes_->Size() != bytes)
+  {
+    this->Nodes_.reset();
+    this->Nodes_ = std::make_unique<Buffer>(this->Context_, bytes, "direction table");
+  }
+  const vk::Format f = grid.Image().Format();
+  using B = BindingType;
+  const std::vector<B> bindings{ B::StorageImage, B::StorageBuffer, B::StorageBuffer };
+  std::shared_ptr<ComputePipeline> pipeline;
+  if (f == vk::Format::eR8Unorm)
+    pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_direction_table_r8), bindings, 32, "direction table (r8)");
+  else if (f == vk::Format::eR16Unorm)
+    pipeline =
+      SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_direction_table_r16), bindings, 32, "direction table (r16)");
+  else
+    pipeline =
+      SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_direction_table_r32f), bindings, 32, "direction table (r32f)");
+  DescriptorSet set(*pipeline);
+  set.Bind(0, grid.Image()).Bind(1, environment.Mips()).Bind(2, *this->Nodes_);
+  uint32_t epsilonBits;
+  std::memcpy(&epsilonBits, &epsilon, sizeof(epsilonBits));
+  const uint32_t push[8] = { cells[0], cells[1], cells[2], D, map, epsilonBits, 0u, 0u };
+  Batch batch(this->Context_);
+  batch.BeginTimer("direction table");
+  batch.Dispatch(*pipeline, set, push, sizeof(push), uint32_t((count + 63) / 64), 1, 1);
+  batch.EndTimer();
+  batch.Submit();
+  this->LastSeconds_ = batch.Seconds("direction table");
+  ++this->Builds_;
+  this->Key_ = key;
+  return true;
+}
+}
