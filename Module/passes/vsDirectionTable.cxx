@@ -30,7 +30,7 @@ uint64_t DirectionTable::BytesFor(uint64_t cells, uint32_t D)
   return cells * 2u * shared::vs_table_nodes(D) * sizeof(uint32_t);
 }
 
-bool DirectionTable::Update(
+DirectionTable::Key DirectionTable::KeyOf(
   const VisibilityGrid& grid, const DeviceEnvironment& environment, uint32_t strategy, float epsilon)
 {
   if (!grid.Valid())
@@ -40,20 +40,49 @@ bool DirectionTable::Update(
   if (strategy != shared::VS_STRATEGY_VISIBILITY && strategy != shared::VS_STRATEGY_COMBINED &&
     strategy != shared::VS_STRATEGY_TWO_STEP)
   {
-    throw InputError("a direction table is for the grid strategies (visibility, combined, two-step)");
+    throw InputError("a direction table is for the grid strategies "
+                     "(visibility, combined, two-step)");
   }
+  Key key;
+  key.Grid = grid.ContentSerial();
+  key.Environment = environment.Serial();
   // Combined and TwoStep warp the same map (the product with the light).
-  const uint32_t map = strategy == shared::VS_STRATEGY_VISIBILITY ? strategy : uint32_t(shared::VS_STRATEGY_COMBINED);
-  const uint32_t D = grid.Side();
-  const Key key{ grid.ContentSerial(), environment.Serial(), map, D, epsilon };
-  if (this->Nodes_ && key == this->Key_)
+  key.Strategy = strategy == shared::VS_STRATEGY_VISIBILITY ? strategy : uint32_t(shared::VS_STRATEGY_COMBINED);
+  key.D = grid.Side();
+  const auto cells = grid.Cells();
+  for (int i = 0; i < 3; ++i)
+  {
+    key.Cells[i] = cells[i];
+  }
+  key.Epsilon = epsilon;
+  return key;
+}
+
+bool DirectionTable::Usable(
+  const VisibilityGrid& grid, const DeviceEnvironment& environment, uint32_t strategy, float epsilon) const
+{
+  return this->Nodes_ && KeyOf(grid, environment, strategy, epsilon).Compatible(this->Key_);
+}
+
+bool DirectionTable::Current(
+  const VisibilityGrid& grid, const DeviceEnvironment& environment, uint32_t strategy, float epsilon) const
+{
+  return this->Usable(grid, environment, strategy, epsilon) && grid.ContentSerial() == this->Key_.Grid;
+}
+
+bool DirectionTable::Update(
+  const VisibilityGrid& grid, const DeviceEnvironment& environment, uint32_t strategy, float epsilon)
+{
+  const Key key = KeyOf(grid, environment, strategy, epsilon);
+  if (this->Current(grid, environment, strategy, epsilon))
   {
     return true;
   }
+  const uint32_t map = key.Strategy, D = key.D;
   const auto cells = grid.Cells();
   const uint64_t count = uint64_t(cells[0]) * cells[1] * cells[2];
   const uint64_t bytes = BytesFor(count, D);
-  if (D < 2 || bytes == 0 || bytes > this->Context_->Info().MaxStorageBufferRange ||
+  if (D < 2 || D > 16 || bytes == 0 || bytes > this->Context_->Info().MaxStorageBufferRange ||
     count > this->Context_->Info().MaxComputeWorkGroupCount[0] * 64ull)
   {
     this->Nodes_.reset();
@@ -68,19 +97,23 @@ bool DirectionTable::Update(
   using B = BindingType;
   const std::vector<B> bindings{ B::StorageImage, B::StorageBuffer, B::StorageBuffer };
   std::shared_ptr<ComputePipeline> pipeline;
+  const std::vector<uint32_t> specialization{ D, map };
+  const std::string name = std::string("direction table (") +
+    (map == shared::VS_STRATEGY_VISIBILITY ? "visibility" : "product") + ", D " + std::to_string(D);
   if (f == vk::Format::eR8Unorm)
-    pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_direction_table_r8), bindings, 32, "direction table (r8)");
+    pipeline = SharedPipeline(
+      this->Context_, VS_SPIRV(vs_spirv_direction_table_r8), bindings, 32, name + ", r8)", specialization);
   else if (f == vk::Format::eR16Unorm)
-    pipeline =
-      SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_direction_table_r16), bindings, 32, "direction table (r16)");
+    pipeline = SharedPipeline(
+      this->Context_, VS_SPIRV(vs_spirv_direction_table_r16), bindings, 32, name + ", r16)", specialization);
   else
-    pipeline =
-      SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_direction_table_r32f), bindings, 32, "direction table (r32f)");
+    pipeline = SharedPipeline(
+      this->Context_, VS_SPIRV(vs_spirv_direction_table_r32f), bindings, 32, name + ", r32f)", specialization);
   DescriptorSet set(*pipeline);
   set.Bind(0, grid.Image()).Bind(1, environment.Mips()).Bind(2, *this->Nodes_);
   uint32_t epsilonBits;
   std::memcpy(&epsilonBits, &epsilon, sizeof(epsilonBits));
-  const uint32_t push[8] = { cells[0], cells[1], cells[2], D, map, epsilonBits, 0u, 0u };
+  const uint32_t push[8] = { cells[0], cells[1], cells[2], 0u, 0u, epsilonBits, 0u, 0u };
   Batch batch(this->Context_);
   batch.BeginTimer("direction table");
   batch.Dispatch(*pipeline, set, push, sizeof(push), uint32_t((count + 63) / 64), 1, 1);
@@ -88,7 +121,8 @@ bool DirectionTable::Update(
   batch.Submit();
   this->LastSeconds_ = batch.Seconds("direction table");
   ++this->Builds_;
+  this->SecondsUsed_ = 0.0;
   this->Key_ = key;
   return true;
 }
-}
+} // namespace vs

@@ -205,9 +205,24 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     {
       this->Table_ = std::make_shared<DirectionTable>(this->Context_);
     }
-    const uint64_t builds = this->Table_->Builds();
-    table = this->Table_->Update(*grid, environment, strategy, params.sampling2.x);
-    this->LastTableSeconds_ = this->Table_->Builds() != builds ? this->Table_->LastSeconds() : 0.0;
+    const float epsilon = params.sampling2.x;
+    DirectionTable& t = *this->Table_;
+    const bool rebuild = !t.Usable(*grid, environment, strategy, epsilon) ||
+      (!t.Current(*grid, environment, strategy, epsilon) &&
+        t.SecondsUsed() >= this->TableRebuildRatio_ * t.LastSeconds());
+    if (rebuild)
+    {
+      const uint64_t builds = t.Builds();
+      table = t.Update(*grid, environment, strategy, epsilon);
+      if (t.Builds() != builds)
+      {
+        this->LastTableSeconds_ = t.LastSeconds();
+      }
+    }
+    else
+    {
+      table = true;
+    }
   }
   this->LastUsedTable_ = table;
   if (!this->NoTable_)
@@ -288,6 +303,10 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     this->LastCatchUps_ = round + 1;
   }
   this->TotalSeconds_ += this->LastSeconds_;
+  if (table)
+  {
+    this->Table_->AddSecondsUsed(this->LastSeconds_ - this->LastTableSeconds_);
+  }
   this->Samples_ += params.sampling.y;
   this->SquareScale_ = params.sampling2.w > 0.0f ? params.sampling2.w : 1.0f;
   if (this->CountLookups_)

@@ -2,7 +2,7 @@
  * direction_map.glsl — the D x D direction map of one visibility cell, as the grid strategies warp
  * it (strategies.h), and its sum pyramid (warp.h). GLSL only; shared by the render kernel
  * (mc_render.glsl, which builds maps at scatter points where it has no table) and the table
- * builder (direction_table.glsl, which builds every cell's map once).
+ * builder (direction_table.glsl, which reads the same entries for every cell once).
  *
  * The includer declares `uVisibility` (the grid image, VS_VIS_FORMAT) and defines VS_COUNT(i)
  * (empty unless it counts reads), and includes strategies.h or warp.h (vs_env_node) before.

@@ -1,7 +1,8 @@
-// The grid strategies' direction table on the device (vsDirectionTable.h): the table the device
-// builds is the one the shared header packs on the CPU from the same grid and light, it is rebuilt
-// exactly when what it depends on changes, and rendering from it is unbiased (its image agrees with
-// the map built at every scatter event, within the standard errors).
+// The grid strategies' direction table on the device (vsDirectionTable.h): the
+// table the device builds is the one the shared header packs on the CPU from
+// the same grid and light, it is rebuilt exactly when what it depends on
+// changes, and rendering from it is unbiased (its image agrees with the map
+// built at every scatter event, within the standard errors).
 #include "vsRenderTestScene.h"
 
 #include "shared/direction_table.h"
@@ -22,14 +23,14 @@ namespace
 {
 RenderScene MakeScene()
 {
-  return RenderScene({ { 17, 15, 13 } },
-    [](int x, int y, int z) { return float((x * 7 + y * 3 + z * 5) % 11) / 10.0f * float(x > 4); }, 2.0,
-    glm::vec3(0.8f, 0.7f, 0.6f),
+  return RenderScene(
+    { { 17, 15, 13 } }, [](int x, int y, int z) { return float((x * 7 + y * 3 + z * 5) % 11) / 10.0f * float(x > 4); },
+    2.0, glm::vec3(0.8f, 0.7f, 0.6f),
     vs::EnvironmentMap::SunDisk(64, glm::normalize(glm::vec3(1, 1, 2)), 5.0, glm::vec3(50.0f), glm::vec3(0.2f)));
 }
 
-// Two shares agree to one step of 1/65535 (the device's division may round differently), and a
-// share is 0 on both sides or on neither.
+// Two shares agree to one step of 1/65535 (the device's division may round
+// differently), and a share is 0 on both sides or on neither.
 bool SharesAgree(uint32_t a, uint32_t b)
 {
   for (int k = 0; k < 2; ++k)
@@ -40,57 +41,69 @@ bool SharesAgree(uint32_t a, uint32_t b)
   }
   return true;
 }
-}
+} // namespace
 
 TEST(DirectionTable, DeviceTableIsTheSharedHeadersPacking)
 {
   RenderScene scene = MakeScene();
-  const uint32_t D = scene.Grid->Side();
-  const auto cells = scene.Grid->Cells();
-  const uint64_t count = uint64_t(cells[0]) * cells[1] * cells[2];
-  const std::vector<float> grid = scene.Grid->Download();
-  const std::vector<float> light = scene.Environment->ImportanceLevel(int(vs_log2(D)));
-  const float epsilon = 0.01f;
-  for (uint32_t strategy : { VS_STRATEGY_VISIBILITY, VS_STRATEGY_TWO_STEP })
+  for (uint32_t resolution : { 8u, 4u, 16u, 2u })
   {
-    vs::DirectionTable table(scene.Context);
-    ASSERT_TRUE(table.Update(*scene.Grid, *scene.Environment, strategy, epsilon));
-    const uint32_t nodes = vs_table_nodes(D);
-    std::vector<uint32_t> device(count * 2 * nodes);
-    table.Nodes().Download(device.data(), device.size() * 4);
-    size_t mismatches = 0, zeros = 0;
-    for (uint64_t c = 0; c < count; ++c)
+    if (resolution != scene.Grid->Side())
     {
-      std::vector<float> v((4 * D * D - 1) / 3, 0.0f);
-      for (uint32_t n = 0; n < D * D; ++n)
+      vs::VisibilityGridParameters params;
+      params.DirectionResolution = resolution;
+      scene.Grid->Compute(*scene.Volume, *scene.TF, *scene.Majorants, scene.Geometry, {}, params);
+    }
+    const uint32_t D = scene.Grid->Side();
+    ASSERT_EQ(D, resolution);
+    const auto cells = scene.Grid->Cells();
+    const uint64_t count = uint64_t(cells[0]) * cells[1] * cells[2];
+    const std::vector<float> grid = scene.Grid->Download();
+    const std::vector<float> light = scene.Environment->ImportanceLevel(int(vs_log2(D)));
+    const float epsilon = 0.01f;
+    for (uint32_t strategy : { VS_STRATEGY_VISIBILITY, VS_STRATEGY_TWO_STEP })
+    {
+      vs::DirectionTable table(scene.Context);
+      ASSERT_TRUE(table.Update(*scene.Grid, *scene.Environment, strategy, epsilon));
+      const uint32_t nodes = vs_table_nodes(D);
+      std::vector<uint32_t> device(count * 2 * nodes);
+      table.Nodes().Download(device.data(), device.size() * 4);
+      size_t mismatches = 0, zeros = 0;
+      for (uint64_t c = 0; c < count; ++c)
       {
-        const float e = grid[c * D * D + n] + epsilon;
-        v[n] = strategy == VS_STRATEGY_VISIBILITY ? e : e * light[n];
-      }
-      for (uint32_t size = D / 2; size > 0; size /= 2)
-        for (uint32_t i = 0; i < size * size; ++i)
-          v[vs_pyramid_offset(D, size) + i] = vs_pyramid_parent(v.data(), D, 2 * size, uvec2(i % size, i / size));
-      for (uint32_t level = 0; (1u << level) < D; ++level)
-      {
-        const uint32_t n = 1u << level;
-        for (uint32_t i = 0; i < n * n; ++i)
+        std::vector<float> v((4 * D * D - 1) / 3, 0.0f);
+        for (uint32_t n = 0; n < D * D; ++n)
         {
-          const uvec2 cpu = vs_table_node_from_pyramid(v.data(), D, level, uvec2(i % n, i / n));
-          const size_t at = size_t(c) * 2 * nodes + 2 * (vs_env_level_offset(level) + i);
-          mismatches += !SharesAgree(cpu.x, device[at]) + !SharesAgree(cpu.y, device[at + 1]);
-          zeros += (cpu.x & 65535u) == 0;
+          const float e = grid[c * D * D + n] + epsilon;
+          v[n] = strategy == VS_STRATEGY_VISIBILITY ? e : e * light[n];
+        }
+        for (uint32_t size = D / 2; size > 0; size /= 2)
+          for (uint32_t i = 0; i < size * size; ++i)
+            v[vs_pyramid_offset(D, size) + i] = vs_pyramid_parent(v.data(), D, 2 * size, uvec2(i % size, i / size));
+        for (uint32_t level = 0; (1u << level) < D; ++level)
+        {
+          const uint32_t n = 1u << level;
+          for (uint32_t i = 0; i < n * n; ++i)
+          {
+            const uvec2 cpu = vs_table_node_from_pyramid(v.data(), D, level, uvec2(i % n, i / n));
+            const size_t at = size_t(c) * 2 * nodes + 2 * (vs_env_level_offset(level) + i);
+            mismatches += !SharesAgree(cpu.x, device[at]) + !SharesAgree(cpu.y, device[at + 1]);
+            zeros += (cpu.x & 65535u) == 0;
+          }
         }
       }
+      EXPECT_EQ(mismatches, 0u) << (strategy == VS_STRATEGY_VISIBILITY ? "visibility" : "two-step") << ", " << count
+                                << " cells, D " << D;
+      // Visibility + epsilon is positive everywhere; the sun-disk sky is
+      // positive everywhere too.
+      EXPECT_EQ(zeros, 0u);
     }
-    EXPECT_EQ(mismatches, 0u) << (strategy == VS_STRATEGY_VISIBILITY ? "visibility" : "two-step") << ", " << count
-                              << " cells";
-    // Visibility + epsilon is positive everywhere; the sun-disk sky is positive everywhere too.
-    EXPECT_EQ(zeros, 0u);
   }
 }
 
-// Built once per (grid contents, environment, map, epsilon): the same inputs reuse it, a new sweep,
-// a new environment or another epsilon rebuild it; Combined and TwoStep share one map.
+// Built once per (grid contents, environment, map, epsilon): the same inputs
+// reuse it, a new sweep, a new environment or another epsilon rebuild it;
+// Combined and TwoStep share one map.
 TEST(DirectionTable, RebuiltExactlyWhenItsInputsChange)
 {
   RenderScene scene = MakeScene();
@@ -105,22 +118,26 @@ TEST(DirectionTable, RebuiltExactlyWhenItsInputsChange)
   table.Update(*scene.Grid, *scene.Environment, VS_STRATEGY_VISIBILITY, 0.02f);
   EXPECT_EQ(table.Builds(), 3u) << "another epsilon";
   const uint64_t before = scene.Grid->ContentSerial();
-  scene.Grid->Compute(*scene.Volume, *scene.TF, *scene.Majorants, scene.Geometry, {}, vs::VisibilityGridParameters(), { 3u });
+  scene.Grid->Compute(
+    *scene.Volume, *scene.TF, *scene.Majorants, scene.Geometry, {}, vs::VisibilityGridParameters(), { 3u });
   EXPECT_NE(scene.Grid->ContentSerial(), before);
   table.Update(*scene.Grid, *scene.Environment, VS_STRATEGY_VISIBILITY, 0.02f);
   EXPECT_EQ(table.Builds(), 4u) << "a sweep changed the grid";
-  scene.Environment = std::make_unique<vs::DeviceEnvironment>(scene.Context, vs::EnvironmentMap::Constant(16, glm::vec3(1.0f)));
+  scene.Environment =
+    std::make_unique<vs::DeviceEnvironment>(scene.Context, vs::EnvironmentMap::Constant(16, glm::vec3(1.0f)));
   table.Update(*scene.Grid, *scene.Environment, VS_STRATEGY_VISIBILITY, 0.02f);
   EXPECT_EQ(table.Builds(), 5u) << "a new environment";
   EXPECT_THROW(table.Update(*scene.Grid, *scene.Environment, VS_STRATEGY_ENVIRONMENT, 0.02f), vs::InputError);
 }
 
-// Rendering from the table is unbiased: Visibility, Combined and TwoStep with the table agree with
-// the map built at each scatter event (independent seeds) at every pixel, within the standard
-// errors (sum of z^2 over pixels and channels, a chi-square with that many degrees of freedom).
-// With the same seed they take (almost) the same samples: the 16-bit shares are the map's to 1e-4,
-// so the variance per sample is the map's to a few percent (independent seeds could not show that:
-// the sun makes the variance estimate itself noisy by 10-20%).
+// Rendering from the table is unbiased: Visibility, Combined and TwoStep with
+// the table agree with the map built at each scatter event (independent seeds)
+// at every pixel, within the standard errors (sum of z^2 over pixels and
+// channels, a chi-square with that many degrees of freedom). With the same seed
+// they take (almost) the same samples: the 16-bit shares are the map's to 1e-4,
+// so the variance per sample is the map's to a few percent (independent seeds
+// could not show that: the sun makes the variance estimate itself noisy by
+// 10-20%).
 TEST(DirectionTable, RenderingFromTheTableIsUnbiased)
 {
   RenderScene scene = MakeScene();
@@ -156,8 +173,50 @@ TEST(DirectionTable, RenderingFromTheTableIsUnbiased)
     EXPECT_GT(dof, 150);
     EXPECT_LT(chi2, dof + 4.0 * std::sqrt(2.0 * dof) + 20.0) << "strategy " << strategy;
     EXPECT_NEAR(varSame / varA, 1.0, 0.03) << "strategy " << strategy << ": the same seed, map against table";
-    std::printf("[ table ] strategy %u: variance per sample %.4g (map) -> %.4g (table, same seed), %.4g (table, "
+    std::printf("[ table ] strategy %u: variance per sample %.4g (map) -> %.4g "
+                "(table, same seed), %.4g (table, "
                 "another seed); chi2 %.1f dof %d\n",
       strategy, varA, varSame, varB, chi2, dof);
   }
+}
+
+// The render pass keeps reading a table made from an earlier state of the grid
+// (a valid pdf) until it has rendered kTableRebuildRatio times the build's time
+// with it, but rebuilds at once for a new environment (whose light the old
+// table may lack).
+TEST(DirectionTable, PassRebuildsForNewGridValuesOnlyOnceTheLastBuildIsPaidFor)
+{
+  RenderScene scene = MakeScene();
+  vs::MonteCarloPass pass(scene.Context);
+  auto p = scene.Params(8, 8, -2.0f, 18.0f, VS_STRATEGY_TWO_STEP, 4, 3u, true);
+  pass.Reset(8, 8);
+  auto render = [&]()
+  { pass.Render(*scene.Volume, *scene.TF, *scene.Majorants, scene.Grid.get(), *scene.Environment, p, {}); };
+  render();
+  EXPECT_TRUE(pass.LastUsedDirectionTable());
+  EXPECT_EQ(pass.DirectionTableBuilds(), 1u);
+  EXPECT_GT(pass.LastDirectionTableSeconds(), 0.0);
+  auto sweep = [&]()
+  {
+    scene.Grid->Compute(
+      *scene.Volume, *scene.TF, *scene.Majorants, scene.Geometry, {}, vs::VisibilityGridParameters(), { 5u });
+  };
+  sweep();
+  pass.SetTableRebuildRatio(1e9); // never paid for
+  render();
+  EXPECT_TRUE(pass.LastUsedDirectionTable()) << "the earlier table is still a pdf";
+  EXPECT_EQ(pass.DirectionTableBuilds(), 1u);
+  EXPECT_EQ(pass.LastDirectionTableSeconds(), 0.0);
+  pass.SetTableRebuildRatio(0.0);
+  render();
+  EXPECT_EQ(pass.DirectionTableBuilds(), 2u) << "paid for at once";
+  render();
+  EXPECT_EQ(pass.DirectionTableBuilds(), 2u) << "nothing new";
+  pass.SetTableRebuildRatio(1e9);
+  sweep();
+  scene.Environment =
+    std::make_unique<vs::DeviceEnvironment>(scene.Context, vs::EnvironmentMap::Constant(16, glm::vec3(1.0f)));
+  p.sampling.w = uint32_t(scene.Environment->FinestLevel());
+  render();
+  EXPECT_EQ(pass.DirectionTableBuilds(), 3u) << "a new environment is rebuilt whatever the ratio";
 }
