@@ -930,6 +930,7 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
   r.Parameters = GridParameters(
     this->DirectionResolution, this->VoxelsPerCell, this->KernelResolution, this->Filtering, this->FilterAngleFraction);
   r.Parameters.NearestInterpolation = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
+  r.Parameters.ExtinctionPooling = uint32_t(this->ExtinctionPooling);
   r.Geometry = I.GridGeometry;
   r.WorldPlanes = WorldPlanes(this->ClippingPlanes, I.GridGeometry);
   const int side = int(r.Parameters.DirectionResolution);
@@ -1282,6 +1283,8 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DirectionResolution: " << this->DirectionResolution << "\n";
   os << indent << "VoxelsPerCell: " << this->VoxelsPerCell << "\n";
   os << indent << "KernelResolution: " << this->KernelResolution << "\n";
+  os << indent << "ExtinctionPooling: " << this->ExtinctionPooling << (this->ExtinctionPooling == 0 ? " (half a cell)" : "")
+     << "\n";
   os << indent << "Filtering: " << (this->Filtering ? "On" : "Off") << "\n";
   os << indent << "FilterAngleFraction: " << this->FilterAngleFraction << "\n";
   // Issue 13, item 9: without an environment the mapper lights with white; say so.

@@ -191,6 +191,11 @@ public:
   vtkGetMacro(VoxelsPerCell, double);
   vtkSetClampMacro(KernelResolution, int, 0, 1 << 14);
   vtkGetMacro(KernelResolution, int);
+  /** Voxels per texel (per axis) of the pooled extinction volume the sweeps march: 0 (default) =
+   *  half a cell, 1 = the full-resolution volume. Larger is cheaper and blurs the grid (which only
+   *  shapes the pdf: never bias). */
+  vtkSetClampMacro(ExtinctionPooling, int, 0, 16);
+  vtkGetMacro(ExtinctionPooling, int);
   vtkSetMacro(Filtering, bool);
   vtkGetMacro(Filtering, bool);
   vtkBooleanMacro(Filtering, bool);
@@ -449,6 +454,7 @@ protected:
   int DirectionResolution = 8;
   double VoxelsPerCell = 4.0;
   int KernelResolution = 0;
+  int ExtinctionPooling = 0;
   bool Filtering = true;
   double FilterAngleFraction;
   double EnvironmentIntensity = 1.0;

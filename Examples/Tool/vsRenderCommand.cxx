@@ -475,6 +475,10 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   {
     mapper->SetKernelResolution(*v.KernelResolution);
   }
+  if (v.ExtinctionPooling)
+  {
+    mapper->SetExtinctionPooling(*v.ExtinctionPooling);
+  }
   if (v.Filtering)
   {
     mapper->SetFiltering(*v.Filtering);

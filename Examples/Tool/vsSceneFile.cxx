@@ -585,7 +585,7 @@ Scene::VisibilitySection ParseVisibility(const json& v)
   CheckKeys(v, path,
     { "direction_resolution", "voxels_per_cell", "kernel_resolution", "filtering", "filter_angle_fraction", "epsilon",
       "cell_mode", "skip_unlit_directions", "progressive", "sweep_frame_fraction",
-      "light_weighted_directions" });
+      "light_weighted_directions", "extinction_pooling" });
   Scene::VisibilitySection s;
   if (v.contains("direction_resolution"))
   {
@@ -607,6 +607,10 @@ Scene::VisibilitySection ParseVisibility(const json& v)
   if (v.contains("filtering"))
   {
     s.Filtering = Boolean(v["filtering"], "visibility.filtering");
+  }
+  if (v.contains("extinction_pooling"))
+  {
+    s.ExtinctionPooling = Integer(v["extinction_pooling"], "visibility.extinction_pooling", 0, 16, "voxels per texel");
   }
   if (v.contains("skip_unlit_directions"))
   {
@@ -788,9 +792,10 @@ bool Scene::RenderSection::operator==(const RenderSection& o) const
 bool Scene::VisibilitySection::operator==(const VisibilitySection& o) const
 {
   return std::tie(DirectionResolution, VoxelsPerCell, KernelResolution, Filtering, FilterAngleFraction, Epsilon,
-           CellMode, SkipUnlitDirections, Progressive, SweepFrameFraction, LightWeightedDirections) ==
+           CellMode, SkipUnlitDirections, Progressive, SweepFrameFraction, LightWeightedDirections, ExtinctionPooling) ==
     std::tie(o.DirectionResolution, o.VoxelsPerCell, o.KernelResolution, o.Filtering, o.FilterAngleFraction, o.Epsilon,
-      o.CellMode, o.SkipUnlitDirections, o.Progressive, o.SweepFrameFraction, o.LightWeightedDirections);
+      o.CellMode, o.SkipUnlitDirections, o.Progressive, o.SweepFrameFraction, o.LightWeightedDirections,
+      o.ExtinctionPooling);
 }
 
 bool Scene::ClipPlane::operator==(const ClipPlane& o) const
@@ -988,6 +993,8 @@ json ToJson(const Scene& s)
     vis["kernel_resolution"] = *v.KernelResolution;
   if (v.Filtering)
     vis["filtering"] = *v.Filtering;
+  if (v.ExtinctionPooling)
+    vis["extinction_pooling"] = *v.ExtinctionPooling;
   if (v.FilterAngleFraction)
     vis["filter_angle_fraction"] = *v.FilterAngleFraction;
   if (v.Epsilon)

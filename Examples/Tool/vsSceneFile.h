@@ -108,6 +108,7 @@ struct Scene
     std::optional<int> DirectionResolution; // 4, 8 or 16
     std::optional<double> VoxelsPerCell;
     std::optional<int> KernelResolution;
+    std::optional<int> ExtinctionPooling; // voxels per pooled texel of the sweeps' extinction (0 = half a cell)
     std::optional<bool> Filtering;
     std::optional<double> FilterAngleFraction;
     std::optional<double> Epsilon;
