@@ -220,7 +220,7 @@ bool NearlyEqual(const std::vector<double>& a, const std::vector<double>& b)
 // so switching Uniform -> Environment kept accumulating into the old image.
 std::vector<double> RenderSignature(const vs::shared::VsRenderParams& p)
 {
-  static_assert(sizeof(vs::shared::VsRenderParams) == 2 * 64 + (15 + vs::shared::VS_MAX_CLIP_PLANES) * 16,
+  static_assert(sizeof(vs::shared::VsRenderParams) == 2 * 64 + (16 + vs::shared::VS_MAX_CLIP_PLANES) * 16,
     "a member was added to VsRenderParams: add it to the signature");
   std::vector<double> s;
   auto addMat = [&s](const glm::mat4& m) { s.insert(s.end(), &m[0][0], &m[0][0] + 16); };
@@ -229,7 +229,7 @@ std::vector<double> RenderSignature(const vs::shared::VsRenderParams& p)
   addMat(p.invViewProj);
   addMat(p.worldToIndex);
   for (const auto& v : { p.boxMin, p.boxMax, p.dims, p.tf, p.background, p.sampling2, p.cellSize, p.tracking, p.cropLo,
-         p.cropHi })
+         p.cropHi, p.mixture })
   {
     addVec(v);
   }
@@ -710,6 +710,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   p.sampling2 = glm::vec4(float(this->VisibilityEpsilon), float(this->EnvironmentIntensity),
     float(I.Scene->Majorants().BrickSize()), squareScale);
   p.tracking.y = float(this->ShadowRays);
+  p.mixture = glm::vec4(float(this->DefensiveWeight), 0.0f, 0.0f, 0.0f);
   p.tracking.z = float(this->CameraEstimator);
   if (grid)
   {
@@ -1273,6 +1274,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CellMode: " << this->GetCellModeAsString() << "\n";
   os << indent << "ShadowRays: " << this->ShadowRays << " per scatter point\n";
   os << indent << "DirectionTable: " << (this->DirectionTable ? "on" : "off") << "\n";
+  os << indent << "DefensiveWeight: " << this->DefensiveWeight << "\n";
   os << indent << "CameraEstimator: " << this->GetCameraEstimatorAsString() << "\n";
   os << indent << "SamplesPerFrame: " << this->SamplesPerFrame << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";

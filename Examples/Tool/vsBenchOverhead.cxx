@@ -37,11 +37,13 @@ struct Options
   bool Quick = false;
   int ShadowRays = 1;
   std::string Camera = "collision";
+  std::vector<double> Defensive{ 0.0 }; // TwoStep's defensive weights to measure
 };
 
 struct Measurement
 {
   std::string Strategy, CellMode;
+  double Defensive = 0.0;
   double SecondsPerFrame = 0.0; // device seconds of one frame of `spp` samples per pixel (median)
   double PathsPerSecond = 0.0;
   double Variance = 0.0;        // mean over pixels and rgb of the variance of one sample
@@ -67,10 +69,12 @@ void RenderChecked(SceneObjects& objects)
 }
 
 Measurement Measure(
-  SceneObjects& objects, const Options& o, const std::string& strategy, int cellMode, bool table = true)
+  SceneObjects& objects, const Options& o, const std::string& strategy, int cellMode, bool table = true,
+  double defensive = 0.0)
 {
   vtkVisibilitySweepVolumeMapper* mapper = objects.Mapper;
   mapper->SetDirectionTable(table);
+  mapper->SetDefensiveWeight(defensive);
   mapper->SetSamplingStrategy(StrategyIndex(strategy, "--strategies"));
   mapper->SetCellMode(cellMode);
   mapper->SetShadowRays(o.ShadowRays);
@@ -80,6 +84,7 @@ Measurement Measure(
   mapper->SetSamplesPerFrame(o.Spp);
   Measurement m;
   m.Strategy = strategy;
+  m.Defensive = defensive;
   const bool usesGrid = strategy == "visibility" || strategy == "combined" || strategy == "two-step";
   m.CellMode = cellMode == vtkVisibilitySweepVolumeMapper::TrilinearCells ? "trilinear"
     : !usesGrid                                                          ? "-"
@@ -152,7 +157,11 @@ int Run(const Options& given)
   for (const auto& s : o.Strategies)
   {
     const bool usesGrid = s == "visibility" || s == "combined" || s == "two-step";
-    results.push_back(Measure(objects, o, s, vtkVisibilitySweepVolumeMapper::StochasticCell));
+    // TwoStep at each defensive weight asked for; the others once.
+    for (double alpha : s == "two-step" ? o.Defensive : std::vector<double>{ 0.0 })
+    {
+      results.push_back(Measure(objects, o, s, vtkVisibilitySweepVolumeMapper::StochasticCell, true, alpha));
+    }
     if (usesGrid && o.CellModes)
     {
       // The same stochastic cell with the map built at each scatter event instead of the table.
@@ -175,7 +184,7 @@ int Run(const Options& given)
   report["height"] = o.Height;
   report["spp_per_frame"] = o.Spp;
   report["repeats"] = o.Repeats;
-  std::printf("\n%-12s %-10s %12s %9s %10s %10s %9s %11s %10s\n", "strategy", "cells", "paths/s", "cost/Uni",
+  std::printf("\n%-12s %-10s %5s %12s %9s %10s %10s %9s %11s %10s\n", "strategy", "cells", "alpha", "paths/s", "cost/Uni",
     "vol/path", "vis/path", "Mvol/s", "var/sample", "eff/Uni");
   for (const auto& m : results)
   {
@@ -186,9 +195,10 @@ int Run(const Options& given)
     const double relEff = effU > 0.0 ? eff * effU : 0.0;
     const double cost = uniform && m.PathsPerSecond > 0.0 ? uniform->PathsPerSecond / m.PathsPerSecond : 0.0;
     const double volRate = m.PathsPerSecond * m.Lookups[0];
-    std::printf("%-12s %-10s %12.0f %9.2f %10.1f %10.1f %9.1f %11.3g %10.2f\n", m.Strategy.c_str(),
-      m.CellMode.c_str(), m.PathsPerSecond, cost, m.Lookups[0], m.Lookups[2], volRate / 1e6, m.Variance, relEff);
+    std::printf("%-12s %-10s %5.2f %12.0f %9.2f %10.1f %10.1f %9.1f %11.3g %10.2f\n", m.Strategy.c_str(),
+      m.CellMode.c_str(), m.Defensive, m.PathsPerSecond, cost, m.Lookups[0], m.Lookups[2], volRate / 1e6, m.Variance, relEff);
     report["strategies"].push_back({ { "strategy", m.Strategy }, { "cell_mode", m.CellMode },
+      { "defensive_weight", m.Defensive },
       { "seconds_per_frame", m.SecondsPerFrame }, { "paths_per_second", m.PathsPerSecond },
       { "time_per_sample_relative_to_uniform", cost }, { "volume_samples_per_path", m.Lookups[0] },
       { "majorant_loads_per_path", m.Lookups[1] }, { "visibility_texels_per_path", m.Lookups[2] },
@@ -250,6 +260,9 @@ void AddBenchOverhead(CLI::App& bench)
   cmd->add_option("--shadow-rays", o->ShadowRays, "shadow rays per scatter point (splitting)")->check(CLI::Range(1, 64));
   cmd->add_option("--camera", o->Camera, "camera estimator: collision (delta tracking) or reservoir")
     ->check(CLI::IsMember({ "collision", "reservoir" }));
+  cmd->add_option("--defensive", o->Defensive, "TwoStep's defensive weights to measure (default 0 = plain TwoStep)")
+    ->delimiter(',')
+    ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--json", o->Json, "write the figures as JSON");
   SetCommandRun(cmd, [o]() { return Run(*o); });
 }

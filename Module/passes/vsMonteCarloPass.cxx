@@ -64,8 +64,9 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   }
   const uint32_t camera = params.tracking.z > 0.5f ? shared::VS_CAMERA_RESERVOIR : shared::VS_CAMERA_COLLISION;
   const uint32_t interpolation = uint32_t(params.tracking.w + 0.5f), cropping = params.crop.x != 0u ? 1u : 0u;
+  const bool defensive = Defensive(params);
   const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping,
-    table ? 1u : 0u };
+    table ? 1u : 0u, defensive ? 1u : 0u };
   auto& slot = this->Pipelines_[specialization];
   auto& pipeline = slot[format];
   if (!pipeline)
@@ -80,7 +81,7 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
       (cellMode == shared::VS_CELL_STOCHASTIC ? "stochastic cell" : "trilinear cells") +
       (refine ? ", cell walk" : "") + (camera == shared::VS_CAMERA_RESERVOIR ? ", reservoir camera" : "") +
       (interpolation != 0u ? ", nearest" : "") + (cropping ? ", cropping regions" : "") +
-      (table ? ", direction table)" : ")");
+      (table ? ", direction table" : "") + (defensive ? ", defensive)" : ")");
     if (format == 3)
     {
       bindings.push_back(B::StorageBuffer);
@@ -98,6 +99,11 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
         this->Context_, VS_SPIRV(vs_spirv_mc_render_r32f), bindings, sizeof(uint32_t), name, specialization);
   }
   return *pipeline;
+}
+
+bool MonteCarloPass::Defensive(const shared::VsRenderParams& params)
+{
+  return params.sampling.x == shared::VS_STRATEGY_TWO_STEP && params.mixture.x > 0.0f;
 }
 
 bool MonteCarloPass::NeedsCellWalk(const MajorantGrid& majorants, const shared::VsRenderParams& params)
@@ -172,6 +178,10 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   {
     this->LastDepth_ = depth.empty() ? std::vector<float>(pixels, 1.0f) : depth;
     this->Depth_->Upload(this->LastDepth_.data(), pixels * 4);
+  }
+  if (!(params.mixture.x >= 0.0f && params.mixture.x <= 1.0f))
+  {
+    throw InputError("TwoStep's defensive weight must be in [0, 1], got " + std::to_string(params.mixture.x));
   }
   const bool useGrid = grid && grid->Valid() && params.grid.w > 0;
   if (!useGrid)

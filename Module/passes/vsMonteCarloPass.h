@@ -105,6 +105,8 @@ public:
 private:
   const ComputePipeline& PipelineFor(
     const VisibilityGrid* grid, const shared::VsRenderParams& params, bool refine, bool table);
+  /** Whether params ask for TwoStep's defensive mixture (render_params.h mixture.x > 0). */
+  static bool Defensive(const shared::VsRenderParams& params);
   /** Whether some majorant segment may reach the tracking's refinement depth (mc_render.glsl's
    *  cell walk): the brick majorant times the longest world path through a brick, with a margin. */
   static bool NeedsCellWalk(const MajorantGrid& majorants, const shared::VsRenderParams& params);

@@ -46,6 +46,7 @@ layout(constant_id = 2) const uint VS_SPEC_REFINE = 1u;    /* 0: no majorant seg
 layout(constant_id = 3) const uint VS_SPEC_CAMERA = 0u;    /* VS_CAMERA_*, = params.tracking.z */
 layout(constant_id = 4) const uint VS_SPEC_INTERPOLATION = 0u; /* interpolation.h, = params.tracking.w */
 layout(constant_id = 5) const uint VS_SPEC_CROPPING = 0u;  /* 1: cropping regions (params.crop.x != 0) */
+layout(constant_id = 7) const uint VS_SPEC_DEFENSIVE = 0u; /* 1: TwoStep mixed with Environment sampling (P.mixture.x) */
 layout(constant_id = 6) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
                                                              table (binding 12), stochastic cell only */
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
@@ -372,6 +373,13 @@ vec3 sample_direction(uint strategy, inout VsRng rng, out float pdf)
     return vs_sample_environment(K, vs_rng_vec2(rng), pdf);
   if (strategy == VS_STRATEGY_UNIFORM || D == 0u)
     return vs_sample_uniform(vs_rng_vec2(rng), pdf);
+  if (VS_SPEC_DEFENSIVE != 0u && strategy == VS_STRATEGY_TWO_STEP)
+  {
+    float alpha = P.mixture.x;
+    if (VS_SPEC_TABLE != 0u)
+      return vs_sample_defensive_table(gTableBase, D, K, alpha, vs_rng_vec2(rng), pdf);
+    return vs_sample_defensive_pyramid(D, K, alpha, vs_rng_vec2(rng), pdf);
+  }
   if (VS_SPEC_TABLE != 0u)
     return vs_sample_direction_table(strategy, gTableBase, D, K, vs_rng_vec2(rng), pdf);
   return vs_sample_direction_pyramid(strategy, D, K, vs_rng_vec2(rng), pdf);
@@ -554,6 +562,8 @@ uint scatter_cost(uint strategy, uint D, uint K, uint cellMode)
   uint cost = 16u + 2u * K + 6u + 4u;
   if (strategy == VS_STRATEGY_UNIFORM || strategy == VS_STRATEGY_ENVIRONMENT || D == 0u)
     return cost;
+  if (VS_SPEC_DEFENSIVE != 0u)
+    cost += 16u + 4u * D; /* both branches' descents and probabilities (lavapipe runs both) */
   if (VS_SPEC_TABLE != 0u)
     return cost + 16u + 2u * D;
   cost += 16u + 2u * D + (cellMode == VS_CELL_STOCHASTIC ? DD : 2u * DD + 8u * (DD + 1u)) + DD / 2u + 8u;

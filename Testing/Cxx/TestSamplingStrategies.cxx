@@ -294,6 +294,32 @@ testing::AssertionResult TableStrategyMatchesPdf(uint strategy, const Scene& s)
          << " (table, " << StrategyName(strategy) << ", " << s.name << ")";
 }
 
+// The defensive mixture of TwoStep with Environment sampling, from the table or the pyramid.
+testing::AssertionResult DefensiveMatchesPdf(const Scene& s, float alpha, bool table)
+{
+  vstest::ScopedEnvMips scope(s.mips);
+  const Map values = ValuesFor(VS_STRATEGY_TWO_STEP, s);
+  const std::vector<uint32_t> t = TableOf(values, s.D, 3);
+  const std::vector<float> v = WithPyramid(values, s.D);
+  vstest::SamplerTestOptions o;
+  o.bins = 64;
+  o.sub = 2;
+  o.samples = 60000;
+  o.seed = s.D + s.K + uint(alpha * 100.0f) + (table ? 1u : 0u);
+  o.edgeResolution = int(std::max(s.D, 1u << s.K));
+  return vstest::SamplerMatchesPdf(
+           [&](vec2 u, float& pdf) {
+             return table ? vs_sample_defensive_table(t.data(), 3u, s.D, s.K, alpha, u, pdf)
+                          : vs_sample_defensive_pyramid(v.data(), s.D, s.K, alpha, u, pdf);
+           },
+           [&](vec3 d) {
+             return table ? vs_pdf_defensive_table(t.data(), 3u, s.D, s.K, alpha, d)
+                          : vs_pdf_defensive_pyramid(v.data(), s.D, s.K, alpha, d);
+           },
+           o)
+    << " (defensive, alpha " << alpha << (table ? ", table, " : ", pyramid, ") << s.name << ")";
+}
+
 } // namespace
 
 // ------------------------------------------------------------ chi-square tests
@@ -369,6 +395,51 @@ TEST(SamplingStrategies, TableKeepsEveryTexelOfTheMap)
           EXPECT_NEAR(total, any ? 1.0 : 0.0, 1e-5) << StrategyName(strategy) << ", " << s.name;
         }
       }
+    }
+  }
+}
+
+TEST(SamplingStrategies, DefensiveTwoStepMatchesPdf)
+{
+  for (float alpha : { 0.25f, 0.5f })
+  {
+    for (bool table : { true, false })
+    {
+      for (const NamedMap& vis : kVisibilityMaps)
+      {
+        EXPECT_TRUE(DefensiveMatchesPdf(MakeScene(vis, kEnvironments[1], 8, 5), alpha, table));
+      }
+      EXPECT_TRUE(DefensiveMatchesPdf(MakeScene(kVisibilityMaps[2], kEnvironments[3], 16, 6), alpha, table));
+      EXPECT_TRUE(DefensiveMatchesPdf(MakeScene(kVisibilityMaps[0], kEnvironments[2], 4, 4), alpha, table));
+    }
+  }
+}
+
+// The mixture's point: its pdf never falls below alpha times Environment sampling's, whatever the
+// grid says (here a one-hot map: the grid thinks all but one direction dark); alpha 0 is TwoStep,
+// alpha 1 Environment sampling.
+TEST(SamplingStrategies, DefensiveTwoStepIsBoundedByEnvironmentSampling)
+{
+  for (const NamedEnv& light : kEnvironments)
+  {
+    Scene s = MakeScene(kVisibilityMaps[1], light, 8, 6);
+    vstest::ScopedEnvMips scope(s.mips);
+    const Map values = ValuesFor(VS_STRATEGY_TWO_STEP, s);
+    const std::vector<float> v = WithPyramid(values, 8);
+    const std::vector<uint32_t> t = TableOf(values, 8, 0);
+    VsRng rng = vs_rng_init(uvec2(4u, 4u), 4u, 4u);
+    for (int i = 0; i < 2000; ++i)
+    {
+      const vec3 d = vs_sample_uniform_sphere(vs_rng_vec2(rng));
+      const float env = vs_pdf_environment(6u, d);
+      for (float alpha : { 0.1f, 0.3f })
+      {
+        ASSERT_GE(vs_pdf_defensive_table(t.data(), 0u, 8u, 6u, alpha, d), alpha * env * (1.0f - 1e-5f)) << light.name;
+        ASSERT_GE(vs_pdf_defensive_pyramid(v.data(), 8u, 6u, alpha, d), alpha * env * (1.0f - 1e-5f)) << light.name;
+      }
+      EXPECT_NEAR(vs_pdf_defensive_pyramid(v.data(), 8u, 6u, 0.0f, d), vs_pdf_two_step_pyramid(v.data(), 8u, 6u, d),
+        1e-6f * (1.0f + vs_pdf_two_step_pyramid(v.data(), 8u, 6u, d)));
+      EXPECT_NEAR(vs_pdf_defensive_pyramid(v.data(), 8u, 6u, 1.0f, d), env, 1e-5f * (1.0f + env));
     }
   }
 }

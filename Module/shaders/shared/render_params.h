@@ -49,6 +49,8 @@ struct VsRenderParams
   vec4 cropLo;       /* the cropping regions (vsVolumeGeometry.h): index-space planes, xyz */
   vec4 cropHi;
   uvec4 crop;        /* x: the regions' flags (0 = none: the box is all), y, z, w: unused */
+  vec4 mixture;      /* x: TwoStep's defensive weight alpha, the probability of an Environment sample
+                        (strategies.h vs_sample_defensive_*; 0 = plain TwoStep); y, z, w: unused */
 };
 
 VS_NAMESPACE_END

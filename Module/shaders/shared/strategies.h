@@ -277,6 +277,105 @@ VS_FUNC float vs_pdf_direction_table(uint strategy, VS_TABLE_PARAM uint base, ui
   return vs_texel_pdf(vs_warp_table_prob(VS_TABLE_ARG base, D, vs_dir_to_texel(dir, D)), D);
 }
 
+/* -------------------------- defensive TwoStep: one-sample MIS with Environment sampling */
+
+/* With probability alpha an Environment sample, else a TwoStep sample from the grid's map (Hesterberg's
+ * defensive mixture). Both descend the environment's quadtree inside the chosen D x D texel alike, so
+ * for a direction in leaf l of texel t
+ *     pdf = (alpha P_env(t) + (1 - alpha) P_grid(t)) P(l | t) N² / (4π),
+ * with P_env(t) the environment's probability of t (its descent from the root to level log2 D) and
+ * P_grid(t) the map's. Where the grid is wrong (a lit surface point in a cell the grid thinks dark,
+ * a direction not swept yet), the sample's weight stays below 1 / alpha times Environment
+ * sampling's. alpha = 0 is TwoStep, 1 is Environment sampling. */
+
+/* The second half of either branch: the descent inside texel t (u remapped into it) and the mixture's pdf. */
+VS_FUNC vec3 vs_defensive_finish(uvec2 t, vec2 uTexel, float probGrid, float probEnv, float alpha, uint D,
+  uint finestLevel, VS_OUT(float) pdf)
+{
+  uvec2 leaf;
+  float probLeaf;
+  vec2 uLeaf;
+  vs_env_descend(vs_log2(D), t, finestLevel, uTexel, leaf, probLeaf, uLeaf);
+  uint n = 1u << finestLevel;
+  pdf = vs_texel_pdf((alpha * probEnv + (1.0f - alpha) * probGrid) * probLeaf, n);
+  return vs_dir_in_texel(leaf, uLeaf, n);
+}
+
+/* Which branch u.x picks (u.x rescaled to [0,1) within it): true for the Environment sample. */
+VS_FUNC bool vs_defensive_pick(float alpha, VS_INOUT(vec2) u)
+{
+  if (u.x < alpha)
+  {
+    u.x = min(u.x / alpha, VS_ONE_MINUS_EPSILON);
+    return true;
+  }
+  u.x = clamp((u.x - alpha) / (1.0f - alpha), 0.0f, VS_ONE_MINUS_EPSILON);
+  return false;
+}
+
+/* pdf of dir given its texel's probability under the grid's map. */
+VS_FUNC float vs_defensive_pdf_given_grid_prob(float probGrid, vec3 dir, float alpha, uint D, uint finestLevel)
+{
+  uint level = vs_log2(D);
+  uvec2 leaf = vs_dir_to_texel(dir, 1u << finestLevel);
+  uvec2 t = leaf >> (finestLevel - level);
+  float probEnv = vs_env_leaf_prob(0u, uvec2(0u), level, t);
+  float probLeaf = vs_env_leaf_prob(level, t, finestLevel, leaf);
+  return vs_texel_pdf((alpha * probEnv + (1.0f - alpha) * probGrid) * probLeaf, 1u << finestLevel);
+}
+
+/* From the cell's direction table (the render kernel's default form). */
+VS_FUNC vec3 vs_sample_defensive_table(
+  VS_TABLE_PARAM uint base, uint D, uint finestLevel, float alpha, vec2 u, VS_OUT(float) pdf)
+{
+  uvec2 t;
+  float probGrid, probEnv;
+  vec2 uTexel;
+  if (vs_defensive_pick(alpha, u))
+  {
+    vs_env_descend(0u, uvec2(0u), vs_log2(D), u, t, probEnv, uTexel);
+    probGrid = vs_warp_table_prob(VS_TABLE_ARG base, D, t);
+  }
+  else
+  {
+    vs_warp_table(VS_TABLE_ARG base, D, u, t, probGrid, uTexel);
+    probEnv = vs_env_leaf_prob(0u, uvec2(0u), vs_log2(D), t);
+  }
+  return vs_defensive_finish(t, uTexel, probGrid, probEnv, alpha, D, finestLevel, pdf);
+}
+
+VS_FUNC float vs_pdf_defensive_table(VS_TABLE_PARAM uint base, uint D, uint finestLevel, float alpha, vec3 dir)
+{
+  uvec2 t = vs_dir_to_texel(dir, 1u << finestLevel) >> (finestLevel - vs_log2(D));
+  return vs_defensive_pdf_given_grid_prob(vs_warp_table_prob(VS_TABLE_ARG base, D, t), dir, alpha, D, finestLevel);
+}
+
+/* From a map that carries its sum pyramid (the kernel's form without a table). */
+VS_FUNC vec3 vs_sample_defensive_pyramid(
+  VS_MAP_PARAM uint D, uint finestLevel, float alpha, vec2 u, VS_OUT(float) pdf)
+{
+  uvec2 t;
+  float probGrid, probEnv;
+  vec2 uTexel;
+  if (vs_defensive_pick(alpha, u))
+  {
+    vs_env_descend(0u, uvec2(0u), vs_log2(D), u, t, probEnv, uTexel);
+    probGrid = vs_warp_pyramid_prob(VS_MAP_ARG D, t);
+  }
+  else
+  {
+    vs_warp_pyramid(VS_MAP_ARG D, u, t, probGrid, uTexel);
+    probEnv = vs_env_leaf_prob(0u, uvec2(0u), vs_log2(D), t);
+  }
+  return vs_defensive_finish(t, uTexel, probGrid, probEnv, alpha, D, finestLevel, pdf);
+}
+
+VS_FUNC float vs_pdf_defensive_pyramid(VS_MAP_PARAM uint D, uint finestLevel, float alpha, vec3 dir)
+{
+  uvec2 t = vs_dir_to_texel(dir, 1u << finestLevel) >> (finestLevel - vs_log2(D));
+  return vs_defensive_pdf_given_grid_prob(vs_warp_pyramid_prob(VS_MAP_ARG D, t), dir, alpha, D, finestLevel);
+}
+
 /* ------------------------------------------------------------ dispatch */
 
 /* Any strategy by its VS_STRATEGY_* id; the map = visibility or product map
