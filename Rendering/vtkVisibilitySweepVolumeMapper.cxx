@@ -50,6 +50,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <sstream>
 
 vtkStandardNewMacro(vtkVisibilitySweepVolumeMapper);
@@ -62,6 +63,23 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::unique_ptr<vs::MonteCarloPass> MC, Interactive;
   std::unique_ptr<vs::MonteCarloPass> MCGrid; // Auto: the TwoStep samples (MC holds Environment's)
   std::shared_ptr<vs::DirectionTable> Table;   // the grid strategies' direction table, shared by the passes
+  std::future<void> Prewarm;                   // the first frame's render pipeline, made while the scene uploads
+  bool PrewarmStarted = false;
+  /** Waits for the prewarm (its errors are the render's to report: it makes the pipeline again). */
+  void JoinPrewarm()
+  {
+    if (this->Prewarm.valid())
+    {
+      try
+      {
+        this->Prewarm.get();
+      }
+      catch (...)
+      {
+      }
+    }
+  }
+  ~Internals() { this->JoinPrewarm(); }
   std::unique_ptr<vs::VisibilityGridUpdater> Grid;
   std::unique_ptr<vs::DeviceEnvironment> Environment;
   std::shared_ptr<const vs::EnvironmentMap> EnvironmentSource;
@@ -319,6 +337,7 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
   {
     this->GetVisibilityGrid(); // completes a grid still filling in, then downloads it
   }
+  I.JoinPrewarm();
   I.Environment.reset();
   I.EnvironmentSource.reset();
   I.Grid.reset();
@@ -388,6 +407,10 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     if (!I.Scene)
     {
       I.Scene = std::make_unique<vs::VolumeScene>(I.Context);
+    }
+    if (!I.PrewarmStarted && this->RenderMode == MonteCarlo && !projection && vol && vol->GetProperty())
+    {
+      this->StartPrewarm(vol->GetProperty());
     }
     this->DirectionsUpdatedLastFrame = 0;
     this->LastFrameSweepSeconds = 0.0;
@@ -581,6 +604,32 @@ void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, 
   vs::WindowCompositor::Draw(ren, vp, rgba);
 }
 
+void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkVolumeProperty* property)
+{
+  Internals& I = *this->Impl;
+  I.PrewarmStarted = true;
+  if (this->Cropping)
+  {
+    return; // the pipeline depends on the regions the geometry keeps: made when known
+  }
+  vs::shared::VsRenderParams p{};
+  // Auto's first frames sample the environment (its grid fills in first).
+  p.sampling.x = uint32_t(this->SamplingStrategy == Auto ? int(Environment) : this->SamplingStrategy);
+  p.sampling.z = uint32_t(this->CellMode);
+  p.tracking.z = float(this->CameraEstimator);
+  p.tracking.w = float(property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
+      ? vs::shared::VS_INTERPOLATION_NEAREST
+      : vs::shared::VS_INTERPOLATION_LINEAR);
+  p.mixture.x = float(this->DefensiveWeight);
+  // A pass of its own: the pipeline lands in the context's cache, where the view's pass finds it
+  // (waiting for it if the render gets there first); the view's passes come and go (SwitchView).
+  const bool table = this->DirectionTable;
+  I.Prewarm = std::async(std::launch::async, [context = I.Context, p, table]() {
+    vs::MonteCarloPass pass(context);
+    pass.Prewarm(p, table);
+  });
+}
+
 void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
@@ -737,6 +786,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     }
   }
 
+  I.JoinPrewarm();
   vs::MonteCarloPass* pass = nullptr;
   if (interactive)
   {

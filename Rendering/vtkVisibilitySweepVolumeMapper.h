@@ -57,6 +57,7 @@
 
 class vtkAlgorithmOutput;
 class vtkImageData;
+class vtkVolumeProperty;
 
 class VISSWEEPRENDERING_EXPORT vtkVisibilitySweepVolumeMapper : public vtkVolumeMapper
 {
@@ -510,6 +511,9 @@ private:
   void RenderAndCheck(vtkRenderer* ren, vtkVolume* vol);
   void RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol);
   void RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol);
+  /** Starts making the first frame's render pipeline on another thread (the scene's conversion
+   *  and upload keep this one busy meanwhile): the strategy's, or Environment sampling's for Auto. */
+  void StartPrewarm(vtkVolumeProperty* property);
   void UpdateVisibilityGrid(bool needGrid, bool usesGridOnly);
   std::vector<uint8_t> RequiredDirections(int side);
   void NoteSweeps(unsigned int directions, double deviceSeconds, double wallSeconds);

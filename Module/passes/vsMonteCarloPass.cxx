@@ -101,6 +101,11 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   return *pipeline;
 }
 
+void MonteCarloPass::Prewarm(const shared::VsRenderParams& params, bool table)
+{
+  this->PipelineFor(nullptr, params, false, table && params.sampling.x > shared::VS_STRATEGY_ENVIRONMENT);
+}
+
 bool MonteCarloPass::Defensive(const shared::VsRenderParams& params)
 {
   return params.sampling.x == shared::VS_STRATEGY_TWO_STEP && params.mixture.x > 0.0f;

@@ -43,6 +43,13 @@ public:
     const VisibilityGrid* grid, const DeviceEnvironment& environment, shared::VsRenderParams params,
     const std::vector<float>& depth);
 
+  /** Creates the pipeline a Render with these parameters would use (an r8 grid or none, no cell
+   *  walk), so that its creation (SPIR-V to the device's code: a large part of the first frame on
+   *  lavapipe) can run on another thread while the caller prepares the scene. The caller must not
+   *  use this pass on another thread meanwhile. Exceptions are the caller's to take or drop: the
+   *  Render that needs the pipeline reports the same error. */
+  void Prewarm(const shared::VsRenderParams& params, bool table);
+
   /** Per pixel (rgb, alpha) means, rows bottom-up. */
   std::vector<float> Mean() const;
   /** Per pixel variance of one sample of (rgb, alpha) (for standard errors: variance / samples). */

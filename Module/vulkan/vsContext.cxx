@@ -452,19 +452,34 @@ Context::~Context()
 std::shared_ptr<ComputePipeline> Context::Pipeline(
   const std::string& key, const std::function<std::shared_ptr<ComputePipeline>()>& make)
 {
-  std::lock_guard<std::mutex> lock(this->PipelineMutex_);
-  auto& slot = this->Pipelines_[key];
-  if (!slot)
+  std::shared_ptr<PipelineSlot> slot;
   {
-    slot = make();
+    std::lock_guard<std::mutex> lock(this->PipelineMutex_);
+    auto& entry = this->Pipelines_[key];
+    if (!entry)
+    {
+      entry = std::make_shared<PipelineSlot>();
+    }
+    slot = entry;
   }
-  return slot;
+  std::call_once(slot->Made,
+    [&]()
+    {
+      slot->Pipeline = make();
+      slot->Ready = true;
+    });
+  return slot->Pipeline;
 }
 
 size_t Context::PipelineCount() const
 {
   std::lock_guard<std::mutex> lock(this->PipelineMutex_);
-  return this->Pipelines_.size();
+  size_t n = 0;
+  for (const auto& entry : this->Pipelines_)
+  {
+    n += entry.second->Ready ? 1 : 0;
+  }
+  return n;
 }
 
 uint64_t Context::ValidationMessageCount() const

@@ -11,6 +11,7 @@
 #include "vsVulkan.h"
 #include "vissweepCoreModule.h"
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -89,7 +90,10 @@ public:
   std::mutex& QueueMutex() { return this->QueueMutex_; }
 
   /** The pipeline compiled under `key`, made by `make` on first use. Compiling a pipeline takes
-   *  seconds on lavapipe, so every pass of every mapper in the process shares them. */
+   *  seconds on lavapipe, so every pass of every mapper in the process shares them. Thread-safe:
+   *  a caller of one key waits while another thread makes that key's pipeline, not another's (a
+   *  mapper makes its first render pipeline on a second thread while it uploads the scene). If
+   *  `make` throws, the next call of the key tries again. */
   std::shared_ptr<ComputePipeline> Pipeline(
     const std::string& key, const std::function<std::shared_ptr<ComputePipeline>()>& make);
 
@@ -116,8 +120,14 @@ private:
   uint64_t ValidationMessages_ = 0;
   mutable std::mutex Mutex_;
   std::mutex QueueMutex_;
-  mutable std::mutex PipelineMutex_;
-  std::map<std::string, std::shared_ptr<ComputePipeline>> Pipelines_;
+  struct PipelineSlot
+  {
+    std::once_flag Made;
+    std::shared_ptr<ComputePipeline> Pipeline; // set once, inside Made
+    std::atomic<bool> Ready{ false };
+  };
+  mutable std::mutex PipelineMutex_; // guards the map, not the compiles
+  std::map<std::string, std::shared_ptr<PipelineSlot>> Pipelines_;
 };
 }
 
