@@ -10,6 +10,7 @@
 #include "vsDirectionTable.h"
 #include "vsMonteCarloPass.h"
 #include "vsPropertyChecks.h"
+#include "vsRendererFrame.h"
 #include "vsRenderTargetLimits.h"
 #include "vsStrategySelector.h"
 #include "vsVisibilityGrid.h"
@@ -261,7 +262,10 @@ vtkVisibilitySweepVolumeMapper::vtkVisibilitySweepVolumeMapper()
   this->SetNumberOfInputPorts(2);
 }
 
-vtkVisibilitySweepVolumeMapper::~vtkVisibilitySweepVolumeMapper() = default;
+vtkVisibilitySweepVolumeMapper::~vtkVisibilitySweepVolumeMapper()
+{
+  vs::RendererFrame::Forget(this);
+}
 
 const char* vtkVisibilitySweepVolumeMapper::GetLastError()
 {
@@ -684,7 +688,10 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   p.dims = glm::vec4(geometry.Dims[0], geometry.Dims[1], geometry.Dims[2], 0.0f);
   auto tf = I.Scene->TF().Params();
   p.tf = glm::vec4(tf[0], tf[1], tf[2], tf[3]);
-  p.background = glm::vec4(0.0f, 0.0f, 0.0f, this->EnvironmentVisible ? 1.0f : 0.0f);
+  // The visible environment is drawn by the first VisSweep volume of the renderer's frame only; the
+  // others are transparent where empty and composite over it (vs::RendererFrame).
+  const bool showsEnvironment = this->EnvironmentVisible && vs::RendererFrame::Claim(ren, this);
+  p.background = glm::vec4(0.0f, 0.0f, 0.0f, showsEnvironment ? 1.0f : 0.0f);
   p.viewport = glm::uvec4(w, h, 0u, static_cast<uint32_t>(this->Seed));
   // Auto: which estimator renders this frame (Environment while the grid is mostly unswept or not
   // needed; then the better one by measured efficiency).

@@ -232,7 +232,11 @@ public:
 
   ///@{
   /** Whether camera rays that leave the volume see the environment (default on); off, they are
-   *  transparent and the renderer's background shows (the environment still lights the volume). */
+   *  transparent and the renderer's background shows (the environment still lights the volume).
+   *  Several VisSweep volumes in one renderer: the first one drawn in the renderer's frame with
+   *  EnvironmentVisible on shows the environment; the VisSweep volumes drawn after it are
+   *  transparent where they are empty and composite over it, so all of them are seen. (A volume
+   *  drawn before it is covered: VTK draws volumes in the renderer's prop order.) */
   vtkSetMacro(EnvironmentVisible, bool);
   vtkGetMacro(EnvironmentVisible, bool);
   vtkBooleanMacro(EnvironmentVisible, bool);
