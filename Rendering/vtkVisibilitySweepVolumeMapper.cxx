@@ -11,6 +11,7 @@
 #include "vsMonteCarloPass.h"
 #include "vsPropertyChecks.h"
 #include "vsRendererFrame.h"
+#include "vsSelectionMask.h"
 #include "vsRenderTargetLimits.h"
 #include "vsStrategySelector.h"
 #include "vsVisibilityGrid.h"
@@ -31,6 +32,7 @@
 #include "vtkEnvironmentMapAlgorithm.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkHardwareSelector.h"
 #include "vtkInformation.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
@@ -63,6 +65,7 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::unique_ptr<vs::MonteCarloPass> MC, Interactive;
   std::unique_ptr<vs::MonteCarloPass> MCGrid; // Auto: the TwoStep samples (MC holds Environment's)
   std::shared_ptr<vs::DirectionTable> Table;   // the grid strategies' direction table, shared by the passes
+  bool WarnedSelectionIds = false;
   std::unique_ptr<vs::VisibilityGridUpdater> Grid;
   std::unique_ptr<vs::DeviceEnvironment> Environment;
   std::shared_ptr<const vs::EnvironmentMap> EnvironmentSource;
@@ -416,7 +419,11 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     {
       I.GridNeedsFull = true;
     }
-    if (this->RenderMode == EmissionAbsorption || projection)
+    if (ren->GetSelector())
+    {
+      this->RenderSelection(ren, vol); // picking: the prop's id where the volume is, no accumulation
+    }
+    else if (this->RenderMode == EmissionAbsorption || projection)
     {
       this->RenderEmissionAbsorption(ren, vol);
     }
@@ -535,13 +542,59 @@ vs::VolumeGeometry CroppedGeometry(vtkVolumeMapper* mapper, const vs::VolumeGeom
 
 void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol)
 {
+  std::vector<float> rgba = this->EmissionAbsorptionImage(ren, vol);
+  if (!rgba.empty())
+  {
+    this->LastRenderComplete = true;
+    vs::WindowCompositor::Draw(ren, vs::WindowCompositor::GetViewport(ren), rgba);
+  }
+}
+
+// In a vtkHardwareSelector pass: the prop's colour where the volume's opacity exceeds 3/255, as
+// vtkOpenGLGPUVolumeRayCastMapper draws it (vs::SelectionMask). The opacity is that of the
+// emission-absorption pass (deterministic, 1 - transmittance), whatever the render mode; the
+// accumulators, the image signature and the radiance are left as they are.
+void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume* vol)
+{
+  Internals& I = *this->Impl;
+  vtkHardwareSelector* selector = ren->GetSelector();
+  if (vs::SelectionMask::AsksForIds(selector) && !I.WarnedSelectionIds)
+  {
+    I.WarnedSelectionIds = true;
+    vtkWarningMacro(<< "vtkHardwareSelector asked for point or cell ids: VisSweep selects the volume's prop only, "
+                    << "its pixels report id 0 (pick the prop, e.g. with vtkPropPicker)");
+  }
+  selector->BeginRenderProp();
+  const bool savedComplete = this->LastRenderComplete;
+  std::vector<float> rgba = this->EmissionAbsorptionImage(ren, vol);
+  this->LastRenderComplete = savedComplete;
+  if (!rgba.empty())
+  {
+    vs::WindowCompositor::Draw(ren, vs::WindowCompositor::GetViewport(ren), vs::SelectionMask::Image(selector, rgba));
+    ++this->SelectionRenderCount;
+  }
+  if (vs::SelectionMask::AsksForIds(selector))
+  {
+    int e[6];
+    vtkImageData::SafeDownCast(this->GetInput())->GetExtent(e);
+    const vtkIdType voxels = vtkIdType(e[1] - e[0] + 1) * (e[3] - e[2] + 1) * (e[5] - e[4] + 1);
+    selector->UpdateMaximumPointId(voxels);
+    selector->UpdateMaximumCellId(voxels);
+  }
+  selector->EndRenderProp();
+}
+
+// The emission-absorption image of the viewport (premultiplied RGBA, rows bottom-up), or nothing
+// for an empty viewport.
+std::vector<float> vtkVisibilitySweepVolumeMapper::EmissionAbsorptionImage(vtkRenderer* ren, vtkVolume* vol)
+{
   Internals& I = *this->Impl;
   const vs::VolumeGeometry geometry = CroppedGeometry(this, I.Scene->Geometry());
   View view = MakeView(ren);
   vs::Viewport vp = view.Port;
   if (vp.Width <= 0 || vp.Height <= 0)
   {
-    return;
+    return {};
   }
   CheckViewport(*I.Context, vp);
   std::vector<float> depth = vs::WindowCompositor::ReadDepth(ren, vp);
@@ -581,8 +634,7 @@ void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, 
   }
   std::vector<float> rgba = I.EA->Render(I.Scene->Volume(), I.Scene->TF(), p, depth);
   this->LastDeviceSeconds = I.EA->LastSeconds();
-  this->LastRenderComplete = true;
-  vs::WindowCompositor::Draw(ren, vp, rgba);
+  return rgba;
 }
 
 void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol)
@@ -1312,6 +1364,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DensityScale: " << this->DensityScale << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "VolumeUploadCount: " << this->VolumeUploadCount << "\n";
+  os << indent << "SelectionRenderCount: " << this->SelectionRenderCount << "\n";
   os << indent << "LastDeviceSeconds: " << this->LastDeviceSeconds << "\n";
   os << indent << "LastMajorantSeconds: " << this->LastMajorantSeconds << "\n";
   os << indent << "CountLookups: " << (this->CountLookups ? "On" : "Off") << "\n";

@@ -437,6 +437,17 @@ public:
   ///@}
   /** Times the volume was uploaded to the device (changes only when the input changes). */
   vtkGetMacro(VolumeUploadCount, int);
+
+  ///@{
+  /** Picking (vtkHardwareSelector, vtkPropPicker, vtkRenderer::PickProp): in a selection pass the
+   *  volume draws the selector's prop colour where its opacity along the pixel's ray exceeds 3/255
+   *  (as vtkGPUVolumeRayCastMapper does; the opacity is the emission-absorption pass's, the same
+   *  extinction the Monte Carlo mode tracks) and nothing else; no accumulator is touched. Point and
+   *  cell id passes get no ids (the picked pixels report id 0; warned once).
+   *  SelectionRenderCount: selection passes drawn so far. */
+  vtkGetMacro(SelectionRenderCount, int);
+  ///@}
+
   /** The last error reported with vtkErrorMacro, or "" after a successful render. */
   const char* GetLastError();
 
@@ -504,6 +515,7 @@ protected:
   bool CountLookups = false;
   double LastLookupCounts[3] = { 0.0, 0.0, 0.0 };
   int VolumeUploadCount = 0;
+  int SelectionRenderCount = 0;
 
 private:
   vtkVisibilitySweepVolumeMapper(const vtkVisibilitySweepVolumeMapper&) = delete;
@@ -513,6 +525,8 @@ private:
   bool SetFloatSetting(const char* name, double value, double& setting);
   void RenderAndCheck(vtkRenderer* ren, vtkVolume* vol);
   void RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol);
+  std::vector<float> EmissionAbsorptionImage(vtkRenderer* ren, vtkVolume* vol);
+  void RenderSelection(vtkRenderer* ren, vtkVolume* vol);
   void RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol);
   void UpdateVisibilityGrid(bool needGrid, bool usesGridOnly);
   std::vector<uint8_t> RequiredDirections(int side);

@@ -1,0 +1,46 @@
+#include "vsSelectionMask.h"
+
+#include "vtkHardwareSelector.h"
+
+namespace vs
+{
+std::vector<float> SelectionMask::Image(vtkHardwareSelector* selector, const std::vector<float>& rgba)
+{
+  std::vector<float> image(rgba.size(), 0.0f);
+  const int pass = selector ? selector->GetCurrentPass() : -1;
+  if (pass != vtkHardwareSelector::ACTOR_PASS && pass != vtkHardwareSelector::PROCESS_PASS)
+  {
+    return image;
+  }
+  float color[3] = { 0.0f, 0.0f, 0.0f };
+  selector->GetPropColorValue(color); // set by BeginRenderProp for these passes
+  for (size_t i = 0; i + 3 < rgba.size(); i += 4)
+  {
+    if (rgba[i + 3] > Threshold)
+    {
+      image[i] = color[0];
+      image[i + 1] = color[1];
+      image[i + 2] = color[2];
+      image[i + 3] = 1.0f;
+    }
+  }
+  return image;
+}
+
+bool SelectionMask::AsksForIds(vtkHardwareSelector* selector)
+{
+  const int pass = selector ? selector->GetCurrentPass() : -1;
+  return pass == vtkHardwareSelector::POINT_ID_LOW24 || pass == vtkHardwareSelector::POINT_ID_HIGH24 ||
+    pass == vtkHardwareSelector::CELL_ID_LOW24 || pass == vtkHardwareSelector::CELL_ID_HIGH24;
+}
+
+long SelectionMask::Covered(const std::vector<float>& rgba)
+{
+  long n = 0;
+  for (size_t i = 3; i < rgba.size(); i += 4)
+  {
+    n += rgba[i] > Threshold ? 1 : 0;
+  }
+  return n;
+}
+}
