@@ -65,6 +65,7 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::unique_ptr<vs::MonteCarloPass> MC, Interactive;
   std::unique_ptr<vs::MonteCarloPass> MCGrid; // Auto: the TwoStep samples (MC holds Environment's)
   std::shared_ptr<vs::DirectionTable> Table;   // the grid strategies' direction table, shared by the passes
+  std::unique_ptr<vs::MonteCarloPass> Tile;   // the tiles of a tiled render (the views' accumulators stay)
   bool WarnedSelectionIds = false;
   std::unique_ptr<vs::VisibilityGridUpdater> Grid;
   std::unique_ptr<vs::DeviceEnvironment> Environment;
@@ -333,6 +334,7 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
   I.MC.reset();
   I.Table.reset();
   I.MCGrid.reset();
+  I.Tile.reset();
   I.OtherViews.clear();
   I.CurrentView = nullptr;
   I.HasCurrentView = false;
@@ -713,7 +715,16 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
 
   // Parameters of this frame.
   vtkRenderWindow* win = ren->GetRenderWindow();
-  const bool interactive = this->InteractiveUpdateRate > 0.0 && win &&
+  // A tile of a tiled render (vtkWindowToImageFilter's Scale): the camera is that of the tile, so
+  // the view's accumulator would restart for every tile and again afterwards. A tile renders into
+  // an accumulator of its own instead, as many samples as the view holds, in one Render().
+  int tileScale[2] = { 1, 1 };
+  if (win)
+  {
+    win->GetTileScale(tileScale);
+  }
+  const bool tiled = tileScale[0] > 1 || tileScale[1] > 1;
+  const bool interactive = !tiled && this->InteractiveUpdateRate > 0.0 && win &&
     win->GetDesiredUpdateRate() >= this->InteractiveUpdateRate;
   const int sub = interactive ? this->InteractiveSubsampling : 1;
   vs::Viewport vp = view.Port;
@@ -754,7 +765,11 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   if (autoStrategy && !emptyVolume)
   {
     const bool ready = grid && I.Grid->SweptImportance() >= 0.5;
-    estimator = interactive ? vs::StrategySelector::EnvironmentEstimator : I.Selector.Choose(ready);
+    // A tile (not a frame of the view) leaves the selector alone: TwoStep once it has measured better.
+    estimator = interactive ? vs::StrategySelector::EnvironmentEstimator
+      : tiled ? (ready && I.Selector.GridEfficiencyRatio() > 1.0 ? vs::StrategySelector::GridEstimator
+                                                                 : vs::StrategySelector::EnvironmentEstimator)
+              : I.Selector.Choose(ready);
     gridFrame = estimator == vs::StrategySelector::GridEstimator;
     effective = gridFrame ? int(TwoStep) : int(Environment);
   }
@@ -807,6 +822,21 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     pass->Reset(w, h);
     I.ImageSignature.clear(); // refine from scratch once the view is still
   }
+  else if (tiled)
+  {
+    if (!I.Tile)
+    {
+      I.Tile = std::make_unique<vs::MonteCarloPass>(I.Context);
+    }
+    pass = I.Tile.get();
+    pass->Reset(w, h);
+    // Each tile its own random streams (the same pixel of two tiles must not share its noise).
+    const double* tvp = win->GetTileViewport();
+    const uint32_t tx = uint32_t(std::lround(tvp[0] * tileScale[0]));
+    const uint32_t ty = uint32_t(std::lround(tvp[1] * tileScale[1]));
+    p.viewport.w = static_cast<uint32_t>(this->Seed) ^ (0x9e3779b9u * (1u + tx + 4099u * ty));
+    ++this->TileRenderCount;
+  }
   else
   {
     if (!I.MC)
@@ -844,9 +874,14 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       p.viewport.w = static_cast<uint32_t>(this->Seed) ^ 0x5bd1e995u;
     }
   }
-  const uint32_t accumulated = interactive ? 0u : this->AccumulatedSamplesOf(autoStrategy);
+  const uint32_t accumulated = interactive || tiled ? 0u : this->AccumulatedSamplesOf(autoStrategy);
   const uint32_t remaining = uint32_t(std::max(0, this->MaximumSamples - int(accumulated)));
-  const uint32_t spp = interactive ? 1u : std::min<uint32_t>(uint32_t(this->SamplesPerFrame), remaining);
+  // A tile: as many samples as the view holds (it is that view, magnified), at least a frame's.
+  const uint32_t tileSpp = uint32_t(std::min(this->MaximumSamples,
+    std::max(this->SamplesPerFrame, int(this->AccumulatedSamplesOf(autoStrategy)))));
+  const uint32_t spp = interactive ? 1u
+    : tiled                        ? tileSpp
+                                   : std::min<uint32_t>(uint32_t(this->SamplesPerFrame), remaining);
   if (spp > 0)
   {
     p.sampling.x = uint32_t(effective);
@@ -861,7 +896,11 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     pass->Render(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), gridFrame ? grid : nullptr,
       *I.Environment, p, depth);
     this->LastDeviceSeconds = pass->LastSeconds();
-    I.LastRenderSeconds = pass->LastSeconds() - pass->LastDirectionTableSeconds();
+    if (!tiled)
+    {
+      // A frame's cost (the sweeps' budget), without the direction table's build.
+      I.LastRenderSeconds = pass->LastSeconds() - pass->LastDirectionTableSeconds();
+    }
     if (pass->LastDirectionTableSeconds() > 0.0)
     {
       this->LastDirectionTableSeconds = pass->LastDirectionTableSeconds();
@@ -875,11 +914,14 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       this->LastLookupCounts[2] = double(n[2]);
     }
   }
-  this->AccumulatedSamples = interactive ? 0 : int(this->AccumulatedSamplesOf(autoStrategy));
+  if (!tiled)
+  {
+    this->AccumulatedSamples = interactive ? 0 : int(this->AccumulatedSamplesOf(autoStrategy));
+  }
 
   // Keep the linear radiance; show it tone mapped.
-  std::vector<float> mean = interactive ? pass->Mean() : this->CombinedMean(autoStrategy);
-  if (autoStrategy && !interactive && spp > 0 && !emptyVolume)
+  std::vector<float> mean = interactive || tiled ? pass->Mean() : this->CombinedMean(autoStrategy);
+  if (autoStrategy && !interactive && !tiled && spp > 0 && !emptyVolume)
   {
     double meanSquare = 0.0;
     for (size_t i = 0; i < mean.size(); i += 4)
@@ -892,7 +934,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     I.Selector.Record(estimator, spp, I.LastRenderSeconds, uint64_t(w) * h, double(pass->Samples()), pass->SquareSum(),
       meanSquare);
   }
-  if (!interactive)
+  if (!interactive && !tiled) // GetRadiance() stays the view's
   {
     if (!I.Radiance)
     {
@@ -1365,6 +1407,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "VolumeUploadCount: " << this->VolumeUploadCount << "\n";
   os << indent << "SelectionRenderCount: " << this->SelectionRenderCount << "\n";
+  os << indent << "TileRenderCount: " << this->TileRenderCount << "\n";
   os << indent << "LastDeviceSeconds: " << this->LastDeviceSeconds << "\n";
   os << indent << "LastMajorantSeconds: " << this->LastMajorantSeconds << "\n";
   os << indent << "CountLookups: " << (this->CountLookups ? "On" : "Off") << "\n";

@@ -448,6 +448,14 @@ public:
   vtkGetMacro(SelectionRenderCount, int);
   ///@}
 
+  ///@{
+  /** Tiled renders (vtkWindowToImageFilter with a Scale above 1, or a window's TileScale): each tile
+   *  is rendered in one Render() into an accumulator of its own with as many samples per pixel as
+   *  the view has accumulated (at least SamplesPerFrame, at most MaximumSamples), so a tiled
+   *  screenshot is as converged as the view, and the view's accumulator is left as it was (it does
+   *  not restart, before or after). TileRenderCount: tiles rendered so far. */
+  vtkGetMacro(TileRenderCount, int);
+  ///@}
   /** The last error reported with vtkErrorMacro, or "" after a successful render. */
   const char* GetLastError();
 
@@ -516,6 +524,7 @@ protected:
   double LastLookupCounts[3] = { 0.0, 0.0, 0.0 };
   int VolumeUploadCount = 0;
   int SelectionRenderCount = 0;
+  int TileRenderCount = 0;
 
 private:
   vtkVisibilitySweepVolumeMapper(const vtkVisibilitySweepVolumeMapper&) = delete;
