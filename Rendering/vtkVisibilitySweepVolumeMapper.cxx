@@ -9,6 +9,7 @@
 #include "vsMajorantGrid.h"
 #include "vsDirectionTable.h"
 #include "vsMonteCarloPass.h"
+#include "vsPeelingDeferral.h"
 #include "vsPropertyChecks.h"
 #include "vsRendererFrame.h"
 #include "vsSelectionMask.h"
@@ -67,6 +68,7 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::shared_ptr<vs::DirectionTable> Table;   // the grid strategies' direction table, shared by the passes
   std::unique_ptr<vs::MonteCarloPass> Tile;   // the tiles of a tiled render (the views' accumulators stay)
   bool WarnedSelectionIds = false;
+  vs::PeelingDeferral Peeling; // inside VTK's depth peeling of volumes: draw at the frame's end instead
   std::unique_ptr<vs::VisibilityGridUpdater> Grid;
   std::unique_ptr<vs::DeviceEnvironment> Environment;
   std::shared_ptr<const vs::EnvironmentMap> EnvironmentSource;
@@ -353,6 +355,21 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
 
 void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
+  if (vs::PeelingDeferral::InsidePeeling(vol))
+  {
+    // vtkDualDepthPeelingPass (UseDepthPeelingForVolumes) calls this several times a frame into its
+    // peeling buffers, which the Monte Carlo image cannot take part in: draw once after it, over the
+    // peeled translucent geometry, as with UseDepthPeelingForVolumes off (warned by vs::PropertyChecks).
+    vtkWeakPointer<vtkVolume> weakVolume(vol);
+    vtkWeakPointer<vtkRenderer> weakRenderer(ren);
+    this->Impl->Peeling.Defer(ren, [this, weakVolume, weakRenderer]() {
+      if (weakVolume && weakRenderer)
+      {
+        this->Render(weakRenderer, weakVolume);
+      }
+    });
+    return;
+  }
   const auto start = std::chrono::steady_clock::now();
   this->RenderAndCheck(ren, vol);
   this->TimeToDraw = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
