@@ -6,6 +6,8 @@
 #ifndef vsSelectionMask_h
 #define vsSelectionMask_h
 
+#include "vtkType.h"
+
 #include <vector>
 
 class vtkHardwareSelector;
@@ -24,9 +26,14 @@ public:
    *  elsewhere; in the other passes (composite index, point and cell ids) transparent everywhere. */
   static std::vector<float> Image(vtkHardwareSelector* selector, const std::vector<float>& rgba);
 
-  /** Whether the selector's current pass asks for point or cell ids, which VisSweep does not
-   *  write (its pixels then report id 0). */
+  /** Whether the selector's current pass asks for point or cell ids (vs::VoxelPicker finds them),
+   *  and whether for cells. */
   static bool AsksForIds(vtkHardwareSelector* selector);
+  static bool AsksForCellIds(vtkHardwareSelector* selector);
+
+  /** The image of an id pass: per pixel (ids, -1 = none) the low or high 24 bits of the id as the
+   *  selector's colour, opaque; transparent where there is no id. */
+  static std::vector<float> IdImage(vtkHardwareSelector* selector, const std::vector<vtkIdType>& ids);
 
   /** Pixels of `rgba` above Threshold (for tests and PrintSelf). */
   static long Covered(const std::vector<float>& rgba);

@@ -13,6 +13,7 @@
 #include "vsPropertyChecks.h"
 #include "vsRendererFrame.h"
 #include "vsSelectionMask.h"
+#include "vsVoxelPicker.h"
 #include "vsRenderTargetLimits.h"
 #include "vsStrategySelector.h"
 #include "vsVisibilityGrid.h"
@@ -67,7 +68,6 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::unique_ptr<vs::MonteCarloPass> MCGrid; // Auto: the TwoStep samples (MC holds Environment's)
   std::shared_ptr<vs::DirectionTable> Table;   // the grid strategies' direction table, shared by the passes
   std::unique_ptr<vs::MonteCarloPass> Tile;   // the tiles of a tiled render (the views' accumulators stay)
-  bool WarnedSelectionIds = false;
   vs::PeelingDeferral Peeling; // inside VTK's depth peeling of volumes: draw at the frame's end instead
   std::unique_ptr<vs::VisibilityGridUpdater> Grid;
   std::unique_ptr<vs::DeviceEnvironment> Environment;
@@ -577,28 +577,46 @@ void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume
 {
   Internals& I = *this->Impl;
   vtkHardwareSelector* selector = ren->GetSelector();
-  if (vs::SelectionMask::AsksForIds(selector) && !I.WarnedSelectionIds)
-  {
-    I.WarnedSelectionIds = true;
-    vtkWarningMacro(<< "vtkHardwareSelector asked for point or cell ids: VisSweep selects the volume's prop only, "
-                    << "its pixels report id 0 (pick the prop, e.g. with vtkPropPicker)");
-  }
   selector->BeginRenderProp();
   const bool savedComplete = this->LastRenderComplete;
   std::vector<float> rgba = this->EmissionAbsorptionImage(ren, vol);
   this->LastRenderComplete = savedComplete;
-  if (!rgba.empty())
+  const vs::Viewport vp = vs::WindowCompositor::GetViewport(ren);
+  if (!rgba.empty() && vs::SelectionMask::AsksForIds(selector))
   {
-    vs::WindowCompositor::Draw(ren, vs::WindowCompositor::GetViewport(ren), vs::SelectionMask::Image(selector, rgba));
+    // The voxel where each covered pixel's ray crosses the selection opacity, marched on the host.
+    vs::VoxelPicker::Volume v;
+    v.Geometry = CroppedGeometry(this, I.Scene->Geometry());
+    int cellFlag = 0;
+    v.Scalars = vtkAbstractMapper::GetScalars(vtkImageData::SafeDownCast(this->GetInput()), this->ScalarMode,
+      this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+    vtkVolumeProperty* property = vol ? vol->GetProperty() : nullptr;
+    v.Opacity = property ? property->GetScalarOpacity(0) : nullptr;
+    v.UnitDistance = property ? property->GetScalarOpacityUnitDistance(0) : 1.0;
+    v.DensityScale = this->DensityScale;
+    v.Nearest = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
+    v.WorldPlanes = WorldPlanes(this->ClippingPlanes, v.Geometry);
+    std::vector<bool> covered(rgba.size() / 4);
+    for (size_t i = 0; i < covered.size(); ++i)
+    {
+      covered[i] = rgba[4 * i + 3] > vs::SelectionMask::Threshold;
+    }
+    const double aspect = vp.Height > 0 ? double(vp.Width) / double(vp.Height) : 1.0;
+    const glm::dmat4 invViewProj =
+      glm::inverse(ToGlm(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1)));
+    const std::vector<vtkIdType> ids = vs::VoxelPicker::Ids(v, invViewProj, vp.Width, vp.Height,
+      vs::WindowCompositor::ReadDepth(ren, vp), covered, vs::SelectionMask::Threshold,
+      vs::SelectionMask::AsksForCellIds(selector));
+    vs::WindowCompositor::Draw(ren, vp, vs::SelectionMask::IdImage(selector, ids));
+    const auto& d = v.Geometry.Dims;
+    selector->UpdateMaximumPointId(vtkIdType(d[0]) * d[1] * d[2]);
+    selector->UpdateMaximumCellId(vtkIdType(d[0]) * d[1] * d[2]);
     ++this->SelectionRenderCount;
   }
-  if (vs::SelectionMask::AsksForIds(selector))
+  else if (!rgba.empty())
   {
-    int e[6];
-    vtkImageData::SafeDownCast(this->GetInput())->GetExtent(e);
-    const vtkIdType voxels = vtkIdType(e[1] - e[0] + 1) * (e[3] - e[2] + 1) * (e[5] - e[4] + 1);
-    selector->UpdateMaximumPointId(voxels);
-    selector->UpdateMaximumCellId(voxels);
+    vs::WindowCompositor::Draw(ren, vp, vs::SelectionMask::Image(selector, rgba));
+    ++this->SelectionRenderCount;
   }
   selector->EndRenderProp();
 }

@@ -411,7 +411,8 @@ public:
 
   /** Renders the volume into the renderer's viewport; TimeToDraw is then its wall seconds.
    *  Settings VisSweep does not honour (gradient opacity, shading, the iso-surface and slice blend
-   *  modes, depth peeling for volumes) are warned about once per change;
+   *  modes, depth peeling for volumes: drawn after the peels, over the translucent geometry, as with
+   *  it off) are warned about once per change;
    *  an error is logged once per change too (GetLastError() holds it on every failed render). */
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
   /** Forgets the accumulators of the views (renderers) in this window; when no view in another
@@ -442,8 +443,10 @@ public:
   /** Picking (vtkHardwareSelector, vtkPropPicker, vtkRenderer::PickProp): in a selection pass the
    *  volume draws the selector's prop colour where its opacity along the pixel's ray exceeds 3/255
    *  (as vtkGPUVolumeRayCastMapper does; the opacity is the emission-absorption pass's, the same
-   *  extinction the Monte Carlo mode tracks) and nothing else; no accumulator is touched. Point and
-   *  cell id passes get no ids (the picked pixels report id 0; warned once).
+   *  extinction the Monte Carlo mode tracks) and nothing else; no accumulator is touched. The point
+   *  and cell id passes get the id of the voxel (the nearest point, or the cell holding it) where
+   *  the pixel's ray first exceeds that opacity, marched on the host (clipping planes and the
+   *  cropped box honoured; cropping regions other than one box are not).
    *  SelectionRenderCount: selection passes drawn so far. */
   vtkGetMacro(SelectionRenderCount, int);
   ///@}
