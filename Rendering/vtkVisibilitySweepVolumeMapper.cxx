@@ -21,6 +21,7 @@
 #include "shared/interpolation.h"
 #include "shared/update_order.h"
 #include "vsVisibilityImage.h"
+#include "vsDisplayTransform.h"
 #include "vsError.h"
 #include "vsFloatRange.h"
 #include "vsTransferFunctionTable.h"
@@ -190,18 +191,6 @@ bool IsProjection(int blendMode)
 {
   return blendMode == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND || blendMode == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND ||
     blendMode == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND || blendMode == vtkVolumeMapper::ADDITIVE_BLEND;
-}
-
-// Filmic tone curve (Narkowicz's fit of ACES) and the sRGB transfer function.
-float Filmic(float x)
-{
-  return std::clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
-}
-
-float ToSRGB(float x)
-{
-  x = std::clamp(x, 0.0f, 1.0f);
-  return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
 }
 
 // Equal up to rounding: VTK recomputes the camera matrices on some passes (e.g. while
@@ -1001,7 +990,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     {
       // Premultiplied: tone map the radiance of the covered part, then weigh by coverage.
       float l = a > 0.0f ? exposure * mean[i + c] / a : 0.0f;
-      display[i + c] = a * ToSRGB(this->ToneMapping ? Filmic(l) : std::min(l, 1.0f));
+      display[i + c] = a * vs::DisplayValue(l, this->ToneMapping);
     }
     display[i + 3] = a;
   }
