@@ -92,8 +92,9 @@ std::vector<std::string> PropertyChecks::Ignored(
   }
   if (renderer && renderer->GetUseDepthPeeling() && renderer->GetUseDepthPeelingForVolumes())
   {
-    ignored.push_back("the renderer's UseDepthPeelingForVolumes is ignored: VisSweep composites over the opaque "
-                      "geometry only; translucent geometry is not interleaved with the volume (turn it off)");
+    ignored.push_back("the renderer's UseDepthPeelingForVolumes is not supported: VisSweep draws its volume over the "
+                      "depth-peeled translucent geometry, as with it off (the volume is not interleaved with the "
+                      "peels; turn it off)");
   }
   return ignored;
 }

@@ -9,7 +9,11 @@
 #include "vsMajorantGrid.h"
 #include "vsDirectionTable.h"
 #include "vsMonteCarloPass.h"
+#include "vsPeelingDeferral.h"
 #include "vsPropertyChecks.h"
+#include "vsRendererFrame.h"
+#include "vsSelectionMask.h"
+#include "vsVoxelPicker.h"
 #include "vsRenderTargetLimits.h"
 #include "vsStrategySelector.h"
 #include "vsVisibilityGrid.h"
@@ -17,6 +21,7 @@
 #include "shared/interpolation.h"
 #include "shared/update_order.h"
 #include "vsVisibilityImage.h"
+#include "vsDisplayTransform.h"
 #include "vsError.h"
 #include "vsFloatRange.h"
 #include "vsTransferFunctionTable.h"
@@ -30,6 +35,7 @@
 #include "vtkEnvironmentMapAlgorithm.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkHardwareSelector.h"
 #include "vtkInformation.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
@@ -80,6 +86,8 @@ struct vtkVisibilitySweepVolumeMapper::Internals
     }
   }
   ~Internals() { this->JoinPrewarm(); }
+  std::unique_ptr<vs::MonteCarloPass> Tile;   // the tiles of a tiled render (the views' accumulators stay)
+  vs::PeelingDeferral Peeling; // inside VTK's depth peeling of volumes: draw at the frame's end instead
   std::unique_ptr<vs::VisibilityGridUpdater> Grid;
   std::unique_ptr<vs::DeviceEnvironment> Environment;
   std::shared_ptr<const vs::EnvironmentMap> EnvironmentSource;
@@ -203,18 +211,6 @@ bool IsProjection(int blendMode)
     blendMode == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND || blendMode == vtkVolumeMapper::ADDITIVE_BLEND;
 }
 
-// Filmic tone curve (Narkowicz's fit of ACES) and the sRGB transfer function.
-float Filmic(float x)
-{
-  return std::clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
-}
-
-float ToSRGB(float x)
-{
-  x = std::clamp(x, 0.0f, 1.0f);
-  return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
-}
-
 // Equal up to rounding: VTK recomputes the camera matrices on some passes (e.g. while
 // vtkWindowToImageFilter grabs the window) with last-bit differences that are no change.
 bool NearlyEqual(const std::vector<double>& a, const std::vector<double>& b)
@@ -279,7 +275,10 @@ vtkVisibilitySweepVolumeMapper::vtkVisibilitySweepVolumeMapper()
   this->SetNumberOfInputPorts(2);
 }
 
-vtkVisibilitySweepVolumeMapper::~vtkVisibilitySweepVolumeMapper() = default;
+vtkVisibilitySweepVolumeMapper::~vtkVisibilitySweepVolumeMapper()
+{
+  vs::RendererFrame::Forget(this);
+}
 
 const char* vtkVisibilitySweepVolumeMapper::GetLastError()
 {
@@ -345,6 +344,7 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
   I.MC.reset();
   I.Table.reset();
   I.MCGrid.reset();
+  I.Tile.reset();
   I.OtherViews.clear();
   I.CurrentView = nullptr;
   I.HasCurrentView = false;
@@ -363,6 +363,21 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
 
 void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
+  if (vs::PeelingDeferral::InsidePeeling(vol))
+  {
+    // vtkDualDepthPeelingPass (UseDepthPeelingForVolumes) calls this several times a frame into its
+    // peeling buffers, which the Monte Carlo image cannot take part in: draw once after it, over the
+    // peeled translucent geometry, as with UseDepthPeelingForVolumes off (warned by vs::PropertyChecks).
+    vtkWeakPointer<vtkVolume> weakVolume(vol);
+    vtkWeakPointer<vtkRenderer> weakRenderer(ren);
+    this->Impl->Peeling.Defer(ren, [this, weakVolume, weakRenderer]() {
+      if (weakVolume && weakRenderer)
+      {
+        this->Render(weakRenderer, weakVolume);
+      }
+    });
+    return;
+  }
   const auto start = std::chrono::steady_clock::now();
   this->RenderAndCheck(ren, vol);
   this->TimeToDraw = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -435,7 +450,11 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     {
       I.GridNeedsFull = true;
     }
-    if (this->RenderMode == EmissionAbsorption || projection)
+    if (ren->GetSelector())
+    {
+      this->RenderSelection(ren, vol); // picking: the prop's id where the volume is, no accumulation
+    }
+    else if (this->RenderMode == EmissionAbsorption || projection)
     {
       this->RenderEmissionAbsorption(ren, vol);
     }
@@ -554,13 +573,77 @@ vs::VolumeGeometry CroppedGeometry(vtkVolumeMapper* mapper, const vs::VolumeGeom
 
 void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol)
 {
+  std::vector<float> rgba = this->EmissionAbsorptionImage(ren, vol);
+  if (!rgba.empty())
+  {
+    this->LastRenderComplete = true;
+    vs::WindowCompositor::Draw(ren, vs::WindowCompositor::GetViewport(ren), rgba);
+  }
+}
+
+// In a vtkHardwareSelector pass: the prop's colour where the volume's opacity exceeds 3/255, as
+// vtkOpenGLGPUVolumeRayCastMapper draws it (vs::SelectionMask). The opacity is that of the
+// emission-absorption pass (deterministic, 1 - transmittance), whatever the render mode; the
+// accumulators, the image signature and the radiance are left as they are.
+void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume* vol)
+{
+  Internals& I = *this->Impl;
+  vtkHardwareSelector* selector = ren->GetSelector();
+  selector->BeginRenderProp();
+  const bool savedComplete = this->LastRenderComplete;
+  std::vector<float> rgba = this->EmissionAbsorptionImage(ren, vol);
+  this->LastRenderComplete = savedComplete;
+  const vs::Viewport vp = vs::WindowCompositor::GetViewport(ren);
+  if (!rgba.empty() && vs::SelectionMask::AsksForIds(selector))
+  {
+    // The voxel where each covered pixel's ray crosses the selection opacity, marched on the host.
+    vs::VoxelPicker::Volume v;
+    v.Geometry = CroppedGeometry(this, I.Scene->Geometry());
+    int cellFlag = 0;
+    v.Scalars = vtkAbstractMapper::GetScalars(vtkImageData::SafeDownCast(this->GetInput()), this->ScalarMode,
+      this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+    vtkVolumeProperty* property = vol ? vol->GetProperty() : nullptr;
+    v.Opacity = property ? property->GetScalarOpacity(0) : nullptr;
+    v.UnitDistance = property ? property->GetScalarOpacityUnitDistance(0) : 1.0;
+    v.DensityScale = this->DensityScale;
+    v.Nearest = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
+    v.WorldPlanes = WorldPlanes(this->ClippingPlanes, v.Geometry);
+    std::vector<bool> covered(rgba.size() / 4);
+    for (size_t i = 0; i < covered.size(); ++i)
+    {
+      covered[i] = rgba[4 * i + 3] > vs::SelectionMask::Threshold;
+    }
+    const double aspect = vp.Height > 0 ? double(vp.Width) / double(vp.Height) : 1.0;
+    const glm::dmat4 invViewProj =
+      glm::inverse(ToGlm(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1)));
+    const std::vector<vtkIdType> ids = vs::VoxelPicker::Ids(v, invViewProj, vp.Width, vp.Height,
+      vs::WindowCompositor::ReadDepth(ren, vp), covered, vs::SelectionMask::Threshold,
+      vs::SelectionMask::AsksForCellIds(selector));
+    vs::WindowCompositor::Draw(ren, vp, vs::SelectionMask::IdImage(selector, ids));
+    const auto& d = v.Geometry.Dims;
+    selector->UpdateMaximumPointId(vtkIdType(d[0]) * d[1] * d[2]);
+    selector->UpdateMaximumCellId(vtkIdType(d[0]) * d[1] * d[2]);
+    ++this->SelectionRenderCount;
+  }
+  else if (!rgba.empty())
+  {
+    vs::WindowCompositor::Draw(ren, vp, vs::SelectionMask::Image(selector, rgba));
+    ++this->SelectionRenderCount;
+  }
+  selector->EndRenderProp();
+}
+
+// The emission-absorption image of the viewport (premultiplied RGBA, rows bottom-up), or nothing
+// for an empty viewport.
+std::vector<float> vtkVisibilitySweepVolumeMapper::EmissionAbsorptionImage(vtkRenderer* ren, vtkVolume* vol)
+{
   Internals& I = *this->Impl;
   const vs::VolumeGeometry geometry = CroppedGeometry(this, I.Scene->Geometry());
   View view = MakeView(ren);
   vs::Viewport vp = view.Port;
   if (vp.Width <= 0 || vp.Height <= 0)
   {
-    return;
+    return {};
   }
   CheckViewport(*I.Context, vp);
   std::vector<float> depth = vs::WindowCompositor::ReadDepth(ren, vp);
@@ -600,8 +683,7 @@ void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, 
   }
   std::vector<float> rgba = I.EA->Render(I.Scene->Volume(), I.Scene->TF(), p, depth);
   this->LastDeviceSeconds = I.EA->LastSeconds();
-  this->LastRenderComplete = true;
-  vs::WindowCompositor::Draw(ren, vp, rgba);
+  return rgba;
 }
 
 void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkVolumeProperty* property)
@@ -706,7 +788,16 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
 
   // Parameters of this frame.
   vtkRenderWindow* win = ren->GetRenderWindow();
-  const bool interactive = this->InteractiveUpdateRate > 0.0 && win &&
+  // A tile of a tiled render (vtkWindowToImageFilter's Scale): the camera is that of the tile, so
+  // the view's accumulator would restart for every tile and again afterwards. A tile renders into
+  // an accumulator of its own instead, as many samples as the view holds, in one Render().
+  int tileScale[2] = { 1, 1 };
+  if (win)
+  {
+    win->GetTileScale(tileScale);
+  }
+  const bool tiled = tileScale[0] > 1 || tileScale[1] > 1;
+  const bool interactive = !tiled && this->InteractiveUpdateRate > 0.0 && win &&
     win->GetDesiredUpdateRate() >= this->InteractiveUpdateRate;
   const int sub = interactive ? this->InteractiveSubsampling : 1;
   vs::Viewport vp = view.Port;
@@ -733,7 +824,10 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   p.dims = glm::vec4(geometry.Dims[0], geometry.Dims[1], geometry.Dims[2], 0.0f);
   auto tf = I.Scene->TF().Params();
   p.tf = glm::vec4(tf[0], tf[1], tf[2], tf[3]);
-  p.background = glm::vec4(0.0f, 0.0f, 0.0f, this->EnvironmentVisible ? 1.0f : 0.0f);
+  // The visible environment is drawn by the first VisSweep volume of the renderer's frame only; the
+  // others are transparent where empty and composite over it (vs::RendererFrame).
+  const bool showsEnvironment = this->EnvironmentVisible && vs::RendererFrame::Claim(ren, this);
+  p.background = glm::vec4(0.0f, 0.0f, 0.0f, showsEnvironment ? 1.0f : 0.0f);
   p.viewport = glm::uvec4(w, h, 0u, static_cast<uint32_t>(this->Seed));
   // Auto: which estimator renders this frame (Environment while the grid is mostly unswept or not
   // needed; then the better one by measured efficiency).
@@ -744,7 +838,11 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   if (autoStrategy && !emptyVolume)
   {
     const bool ready = grid && I.Grid->SweptImportance() >= 0.5;
-    estimator = interactive ? vs::StrategySelector::EnvironmentEstimator : I.Selector.Choose(ready);
+    // A tile (not a frame of the view) leaves the selector alone: TwoStep once it has measured better.
+    estimator = interactive ? vs::StrategySelector::EnvironmentEstimator
+      : tiled ? (ready && I.Selector.GridEfficiencyRatio() > 1.0 ? vs::StrategySelector::GridEstimator
+                                                                 : vs::StrategySelector::EnvironmentEstimator)
+              : I.Selector.Choose(ready);
     gridFrame = estimator == vs::StrategySelector::GridEstimator;
     effective = gridFrame ? int(TwoStep) : int(Environment);
   }
@@ -798,6 +896,21 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     pass->Reset(w, h);
     I.ImageSignature.clear(); // refine from scratch once the view is still
   }
+  else if (tiled)
+  {
+    if (!I.Tile)
+    {
+      I.Tile = std::make_unique<vs::MonteCarloPass>(I.Context);
+    }
+    pass = I.Tile.get();
+    pass->Reset(w, h);
+    // Each tile its own random streams (the same pixel of two tiles must not share its noise).
+    const double* tvp = win->GetTileViewport();
+    const uint32_t tx = uint32_t(std::lround(tvp[0] * tileScale[0]));
+    const uint32_t ty = uint32_t(std::lround(tvp[1] * tileScale[1]));
+    p.viewport.w = static_cast<uint32_t>(this->Seed) ^ (0x9e3779b9u * (1u + tx + 4099u * ty));
+    ++this->TileRenderCount;
+  }
   else
   {
     if (!I.MC)
@@ -835,9 +948,14 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       p.viewport.w = static_cast<uint32_t>(this->Seed) ^ 0x5bd1e995u;
     }
   }
-  const uint32_t accumulated = interactive ? 0u : this->AccumulatedSamplesOf(autoStrategy);
+  const uint32_t accumulated = interactive || tiled ? 0u : this->AccumulatedSamplesOf(autoStrategy);
   const uint32_t remaining = uint32_t(std::max(0, this->MaximumSamples - int(accumulated)));
-  const uint32_t spp = interactive ? 1u : std::min<uint32_t>(uint32_t(this->SamplesPerFrame), remaining);
+  // A tile: as many samples as the view holds (it is that view, magnified), at least a frame's.
+  const uint32_t tileSpp = uint32_t(std::min(this->MaximumSamples,
+    std::max(this->SamplesPerFrame, int(this->AccumulatedSamplesOf(autoStrategy)))));
+  const uint32_t spp = interactive ? 1u
+    : tiled                        ? tileSpp
+                                   : std::min<uint32_t>(uint32_t(this->SamplesPerFrame), remaining);
   if (spp > 0)
   {
     p.sampling.x = uint32_t(effective);
@@ -852,7 +970,11 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     pass->Render(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), gridFrame ? grid : nullptr,
       *I.Environment, p, depth);
     this->LastDeviceSeconds = pass->LastSeconds();
-    I.LastRenderSeconds = pass->LastSeconds() - pass->LastDirectionTableSeconds();
+    if (!tiled)
+    {
+      // A frame's cost (the sweeps' budget), without the direction table's build.
+      I.LastRenderSeconds = pass->LastSeconds() - pass->LastDirectionTableSeconds();
+    }
     if (pass->LastDirectionTableSeconds() > 0.0)
     {
       this->LastDirectionTableSeconds = pass->LastDirectionTableSeconds();
@@ -866,11 +988,14 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       this->LastLookupCounts[2] = double(n[2]);
     }
   }
-  this->AccumulatedSamples = interactive ? 0 : int(this->AccumulatedSamplesOf(autoStrategy));
+  if (!tiled)
+  {
+    this->AccumulatedSamples = interactive ? 0 : int(this->AccumulatedSamplesOf(autoStrategy));
+  }
 
   // Keep the linear radiance; show it tone mapped.
-  std::vector<float> mean = interactive ? pass->Mean() : this->CombinedMean(autoStrategy);
-  if (autoStrategy && !interactive && spp > 0 && !emptyVolume)
+  std::vector<float> mean = interactive || tiled ? pass->Mean() : this->CombinedMean(autoStrategy);
+  if (autoStrategy && !interactive && !tiled && spp > 0 && !emptyVolume)
   {
     double meanSquare = 0.0;
     for (size_t i = 0; i < mean.size(); i += 4)
@@ -883,7 +1008,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     I.Selector.Record(estimator, spp, I.LastRenderSeconds, uint64_t(w) * h, double(pass->Samples()), pass->SquareSum(),
       meanSquare);
   }
-  if (!interactive)
+  if (!interactive && !tiled) // GetRadiance() stays the view's
   {
     if (!I.Radiance)
     {
@@ -915,7 +1040,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     {
       // Premultiplied: tone map the radiance of the covered part, then weigh by coverage.
       float l = a > 0.0f ? exposure * mean[i + c] / a : 0.0f;
-      display[i + c] = a * ToSRGB(this->ToneMapping ? Filmic(l) : std::min(l, 1.0f));
+      display[i + c] = a * vs::DisplayValue(l, this->ToneMapping);
     }
     display[i + 3] = a;
   }
@@ -1355,6 +1480,8 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DensityScale: " << this->DensityScale << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "VolumeUploadCount: " << this->VolumeUploadCount << "\n";
+  os << indent << "SelectionRenderCount: " << this->SelectionRenderCount << "\n";
+  os << indent << "TileRenderCount: " << this->TileRenderCount << "\n";
   os << indent << "LastDeviceSeconds: " << this->LastDeviceSeconds << "\n";
   os << indent << "LastMajorantSeconds: " << this->LastMajorantSeconds << "\n";
   os << indent << "CountLookups: " << (this->CountLookups ? "On" : "Off") << "\n";

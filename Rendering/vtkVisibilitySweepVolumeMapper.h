@@ -233,7 +233,11 @@ public:
 
   ///@{
   /** Whether camera rays that leave the volume see the environment (default on); off, they are
-   *  transparent and the renderer's background shows (the environment still lights the volume). */
+   *  transparent and the renderer's background shows (the environment still lights the volume).
+   *  Several VisSweep volumes in one renderer: the first one drawn in the renderer's frame with
+   *  EnvironmentVisible on shows the environment; the VisSweep volumes drawn after it are
+   *  transparent where they are empty and composite over it, so all of them are seen. (A volume
+   *  drawn before it is covered: VTK draws volumes in the renderer's prop order.) */
   vtkSetMacro(EnvironmentVisible, bool);
   vtkGetMacro(EnvironmentVisible, bool);
   vtkBooleanMacro(EnvironmentVisible, bool);
@@ -408,7 +412,8 @@ public:
 
   /** Renders the volume into the renderer's viewport; TimeToDraw is then its wall seconds.
    *  Settings VisSweep does not honour (gradient opacity, shading, the iso-surface and slice blend
-   *  modes, depth peeling for volumes) are warned about once per change;
+   *  modes, depth peeling for volumes: drawn after the peels, over the translucent geometry, as with
+   *  it off) are warned about once per change;
    *  an error is logged once per change too (GetLastError() holds it on every failed render). */
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
   /** Forgets the accumulators of the views (renderers) in this window; when no view in another
@@ -434,6 +439,27 @@ public:
   ///@}
   /** Times the volume was uploaded to the device (changes only when the input changes). */
   vtkGetMacro(VolumeUploadCount, int);
+
+  ///@{
+  /** Picking (vtkHardwareSelector, vtkPropPicker, vtkRenderer::PickProp): in a selection pass the
+   *  volume draws the selector's prop colour where its opacity along the pixel's ray exceeds 3/255
+   *  (as vtkGPUVolumeRayCastMapper does; the opacity is the emission-absorption pass's, the same
+   *  extinction the Monte Carlo mode tracks) and nothing else; no accumulator is touched. The point
+   *  and cell id passes get the id of the voxel (the nearest point, or the cell holding it) where
+   *  the pixel's ray first exceeds that opacity, marched on the host (clipping planes and the
+   *  cropped box honoured; cropping regions other than one box are not).
+   *  SelectionRenderCount: selection passes drawn so far. */
+  vtkGetMacro(SelectionRenderCount, int);
+  ///@}
+
+  ///@{
+  /** Tiled renders (vtkWindowToImageFilter with a Scale above 1, or a window's TileScale): each tile
+   *  is rendered in one Render() into an accumulator of its own with as many samples per pixel as
+   *  the view has accumulated (at least SamplesPerFrame, at most MaximumSamples), so a tiled
+   *  screenshot is as converged as the view, and the view's accumulator is left as it was (it does
+   *  not restart, before or after). TileRenderCount: tiles rendered so far. */
+  vtkGetMacro(TileRenderCount, int);
+  ///@}
   /** The last error reported with vtkErrorMacro, or "" after a successful render. */
   const char* GetLastError();
 
@@ -501,6 +527,8 @@ protected:
   bool CountLookups = false;
   double LastLookupCounts[3] = { 0.0, 0.0, 0.0 };
   int VolumeUploadCount = 0;
+  int SelectionRenderCount = 0;
+  int TileRenderCount = 0;
 
 private:
   vtkVisibilitySweepVolumeMapper(const vtkVisibilitySweepVolumeMapper&) = delete;
@@ -510,6 +538,8 @@ private:
   bool SetFloatSetting(const char* name, double value, double& setting);
   void RenderAndCheck(vtkRenderer* ren, vtkVolume* vol);
   void RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol);
+  std::vector<float> EmissionAbsorptionImage(vtkRenderer* ren, vtkVolume* vol);
+  void RenderSelection(vtkRenderer* ren, vtkVolume* vol);
   void RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol);
   /** Starts making the first frame's render pipeline on another thread (the scene's conversion
    *  and upload keep this one busy meanwhile): the strategy's, or Environment sampling's for Auto. */

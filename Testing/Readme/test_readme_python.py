@@ -1,11 +1,12 @@
-"""The README's Python snippet, exactly as written: it renders from a folder that holds a link
-to Data/ (as from the repository's root), and its progressive loop stops with an error, instead
-of spinning, where the environment file is missing. Run by ctest with PYTHONPATH=<build>."""
+"""The README's Python snippets, exactly as written: the first renders from a folder that holds a
+link to Data/ (as from the repository's root), and its progressive loop stops with an error, instead
+of spinning, where the environment file is missing; the environment-background snippet runs after it. Run by ctest with PYTHONPATH=<build>."""
 import os
 import re
 import subprocess
 import sys
 import tempfile
+import textwrap
 import time
 import unittest
 
@@ -18,6 +19,15 @@ def snippet(section, language):
     at = text.index("\n### %s\n" % section)
     m = re.compile(r"\n```%s\n(.*?)\n```\n" % re.escape(language), re.S).search(text, at)
     return m.group(1) + "\n"
+
+
+def indented_snippet(marker, language):
+    """A fenced block indented in a list item, the first after `marker`, dedented."""
+    with open(README, encoding="utf-8") as f:
+        text = f.read()
+    at = text.index(marker)
+    m = re.compile(r"\n( +)```%s\n(.*?)\n\1```\n" % re.escape(language), re.S).search(text, at)
+    return textwrap.dedent(m.group(2)) + "\n"
 
 
 def run(code, cwd, timeout=600):
@@ -33,6 +43,16 @@ class ReadmePython(unittest.TestCase):
             p, _ = run(snippet("Python", "python"), d)
             self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
             self.assertIn("(256, 256, 1) 16 spp", p.stdout)
+
+    def test_environment_background_as_written(self):
+        # The "Several volumes in one renderer" snippet, run after the first one (it uses its objects).
+        with tempfile.TemporaryDirectory() as d:
+            os.symlink(DATA, os.path.join(d, "Data"))
+            code = snippet("Python", "python") + indented_snippet("**Several volumes in one renderer**", "python")
+            code += "window.Render()\nprint('props', renderer.GetViewProps().GetNumberOfItems(), 'error', repr(mapper.GetLastError()))\n"
+            p, _ = run(code, d)
+            self.assertEqual(p.returncode, 0, p.stdout + p.stderr)
+            self.assertIn("props 2 error ''", p.stdout)
 
     def test_loop_stops_on_error(self):
         with tempfile.TemporaryDirectory() as d:  # no Data/ here: the environment file is missing
