@@ -967,6 +967,10 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       I.Table = std::make_shared<vs::DirectionTable>(I.Context);
     }
     pass->ShareDirectionTable(I.Table);
+    // While the grid fills in (directions pending) a table of its earlier state may lag until its
+    // build is paid for; a complete grid's table is always current, so its image is reproducible.
+    pass->SetTableRebuildRatio(
+      I.Grid && I.Grid->PendingDirections() > 0 ? vs::MonteCarloPass::kTableRebuildRatio : 0.0);
     pass->Render(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), gridFrame ? grid : nullptr,
       *I.Environment, p, depth);
     this->LastDeviceSeconds = pass->LastSeconds();

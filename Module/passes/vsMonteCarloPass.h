@@ -92,11 +92,12 @@ public:
   /** Lets passes share one table (a mapper's progressive, Auto and interactive passes render the
    *  same grid): it is made on first use otherwise. */
   void ShareDirectionTable(std::shared_ptr<DirectionTable> table) { this->Table_ = std::move(table); }
-  /** A table made from an earlier state of the grid (still a valid pdf) is rebuilt for the grid's
-   *  new values once the pass has rendered kTableRebuildRatio times the last build's device time
-   *  with it, so that rebuilding costs at most ~1/kTableRebuildRatio of the render time while a
-   *  grid fills in (0: rebuild at every change). A new environment, layout, ε or map is rebuilt
-   *  before the next sample. */
+  /** With a ratio r > 0, a table made from an earlier state of the grid (still a valid pdf) is
+   *  rebuilt for the grid's new values only once the pass has rendered r times the last build's
+   *  device time with it, so that rebuilding costs at most ~1/r of the render time while a grid
+   *  fills in (kTableRebuildRatio, what the mapper sets then). The default 0 rebuilds at every
+   *  change, so that an image does not depend on timing. A new environment, layout, ε or map is
+   *  rebuilt before the next sample whatever the ratio. */
   void SetTableRebuildRatio(double ratio) { this->TableRebuildRatio_ = std::max(0.0, ratio); }
   static constexpr double kTableRebuildRatio = 4.0;
   /** Whether the last Render read a direction table; its builds so far, and the device seconds of
@@ -130,7 +131,7 @@ private:
   std::unique_ptr<Buffer> NoTable_;
   bool UseTable_ = true, LastUsedTable_ = false;
   double LastTableSeconds_ = 0.0;
-  double TableRebuildRatio_ = kTableRebuildRatio;
+  double TableRebuildRatio_ = 0.0;
   std::unique_ptr<Buffer> Params_, Depth_, Sum_, Comp_, Squares_, Progress_;
   uint32_t LastCatchUps_ = 0;
   std::vector<float> LastDepth_;
