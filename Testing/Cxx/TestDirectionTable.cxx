@@ -153,28 +153,15 @@ TEST(DirectionTable, RenderingFromTheTableIsUnbiased)
     p.viewport.w = 4u; // independent samples
     auto [b, vb] = scene.Render(p, 2);
     EXPECT_TRUE(scene.LastUsedDirectionTable);
-    double chi2 = 0.0, varA = 0.0, varB = 0.0, varSame = 0.0;
-    int dof = 0;
-    for (size_t i = 0; i < a.size(); ++i)
-    {
-      const double se2 = (va[i] + vb[i]) / n;
-      if (se2 > 0.0)
-      {
-        chi2 += (a[i] - b[i]) * (a[i] - b[i]) / se2;
-        ++dof;
-      }
-      if (i % 4 < 3)
-      {
-        varA += va[i];
-        varB += vb[i];
-        varSame += vsame[i];
-      }
-    }
+    const vstest::Agreement g = vstest::Compare(a, va, b, vb, n);
+    // The same seed: the variance per sample of the map's render and the table's.
+    const vstest::Agreement sameSeed = vstest::Compare(a, va, same, vsame, n);
+    const double varA = g.varA, varB = g.varB, varSame = sameSeed.varB, chi2 = g.chi2;
+    const int dof = g.dof;
     EXPECT_GT(dof, 150);
-    EXPECT_LT(chi2, dof + 4.0 * std::sqrt(2.0 * dof) + 20.0) << "strategy " << strategy;
+    EXPECT_LT(chi2, g.Bound()) << "strategy " << strategy;
     EXPECT_NEAR(varSame / varA, 1.0, 0.03) << "strategy " << strategy << ": the same seed, map against table";
-    std::printf("[ table ] strategy %u: variance per sample %.4g (map) -> %.4g "
-                "(table, same seed), %.4g (table, "
+    std::printf("[ table ] strategy %u: variance per sample %.4g (map) -> %.4g (table, same seed), %.4g (table, "
                 "another seed); chi2 %.1f dof %d\n",
       strategy, varA, varSame, varB, chi2, dof);
   }
@@ -240,19 +227,9 @@ TEST(DirectionTable, DefensiveTwoStepIsUnbiased)
     p.viewport.w = 4u; // independent samples
     auto [b, vb] = scene.Render(p, 2);
     EXPECT_EQ(scene.LastUsedDirectionTable, table);
-    double chi2 = 0.0;
-    int dof = 0;
-    for (size_t i = 0; i < a.size(); ++i)
-    {
-      const double se2 = (va[i] + vb[i]) / n;
-      if (se2 > 0.0)
-      {
-        chi2 += (a[i] - b[i]) * (a[i] - b[i]) / se2;
-        ++dof;
-      }
-    }
-    EXPECT_GT(dof, 150);
-    EXPECT_LT(chi2, dof + 4.0 * std::sqrt(2.0 * dof) + 20.0) << (table ? "table" : "map");
+    const vstest::Agreement g = vstest::Compare(a, va, b, vb, n);
+    EXPECT_GT(g.dof, 150);
+    EXPECT_LT(g.chi2, g.Bound()) << (table ? "table" : "map");
   }
   auto p = scene.Params(8, 8, -2.0f, 18.0f, VS_STRATEGY_TWO_STEP, 4, 3u, true);
   p.mixture.x = 1.5f;

@@ -67,37 +67,8 @@ glm::dvec3 Quadrature(double x, double y, double n, double sigma, glm::dvec3 alb
 // every strategy agrees with the quadrature within 3 standard errors at every pixel.
 namespace
 {
-// Two independent renders of the same expectation, pixel by pixel: the sum of z^2 over the pixels
-// and channels with variance (each ~ chi-square(1)), their count, and the summed rgb variance of
-// one sample of each render (what splitting and the reservoir should lower).
-struct Agreement
-{
-  double chi2 = 0.0, varA = 0.0, varB = 0.0;
-  int dof = 0;
-  // Rejects beyond dof + 4 sd + 20, past the chi-square's 1e-4 quantile.
-  double Bound() const { return dof + 4.0 * std::sqrt(2.0 * dof) + 20.0; }
-};
-
-Agreement Compare(const std::vector<float>& a, const std::vector<double>& va, const std::vector<float>& b,
-  const std::vector<double>& vb, double n)
-{
-  Agreement r;
-  for (size_t i = 0; i < a.size(); ++i)
-  {
-    const double se2 = (va[i] + vb[i]) / n;
-    if (se2 > 0.0)
-    {
-      r.chi2 += (a[i] - b[i]) * (a[i] - b[i]) / se2;
-      ++r.dof;
-    }
-    if (i % 4 < 3)
-    {
-      r.varA += va[i];
-      r.varB += vb[i];
-    }
-  }
-  return r;
-}
+using vstest::Agreement;
+using vstest::Compare;
 }
 
 TEST(MonteCarlo, HomogeneousBoxMatchesQuadrature)

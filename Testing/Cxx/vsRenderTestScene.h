@@ -10,6 +10,9 @@
 #include "vsEnvironmentMap.h"
 #include "vsMonteCarloPass.h"
 
+#include <cmath>
+#include <vector>
+
 namespace vstest
 {
 struct RenderScene : VisibilityScene
@@ -87,6 +90,38 @@ struct RenderScene : VisibilityScene
   bool DirectionTable = true;
   bool LastUsedDirectionTable = false;
 };
+
+// Two independent renders of the same expectation, pixel by pixel: the sum of z^2 over the pixels
+// and channels with variance (each ~ chi-square(1)), their count, and the summed rgb variance of
+// one sample of each render (what splitting and the reservoir should lower).
+struct Agreement
+{
+  double chi2 = 0.0, varA = 0.0, varB = 0.0;
+  int dof = 0;
+  // Rejects beyond dof + 4 sd + 20, past the chi-square's 1e-4 quantile.
+  double Bound() const { return dof + 4.0 * std::sqrt(2.0 * dof) + 20.0; }
+};
+
+inline Agreement Compare(const std::vector<float>& a, const std::vector<double>& va, const std::vector<float>& b,
+  const std::vector<double>& vb, double n)
+{
+  Agreement r;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    const double se2 = (va[i] + vb[i]) / n;
+    if (se2 > 0.0)
+    {
+      r.chi2 += (a[i] - b[i]) * (a[i] - b[i]) / se2;
+      ++r.dof;
+    }
+    if (i % 4 < 3)
+    {
+      r.varA += va[i];
+      r.varB += vb[i];
+    }
+  }
+  return r;
+}
 }
 
 #endif

@@ -41,20 +41,11 @@ const int W = 64, H = 48;
 
 vtkSmartPointer<vtkImageData> Ball(int n, float value)
 {
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(n, n, n);
-  vtkNew<vtkFloatArray> a;
-  a->SetNumberOfTuples(vtkIdType(n) * n * n);
   const double c = 0.5 * (n - 1);
-  for (int z = 0; z < n; ++z)
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x)
-      {
-        const double r = std::sqrt((x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c));
-        a->SetValue((vtkIdType(z) * n + y) * n + x, r < 0.4 * n ? value : 0.0f);
-      }
-  image->GetPointData()->SetScalars(a);
-  return image;
+  return vstest::FloatVolume(n, [c, n, value](int x, int y, int z) {
+    const double r = std::sqrt((x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c));
+    return r < 0.4 * n ? value : 0.0f;
+  });
 }
 
 struct Scene

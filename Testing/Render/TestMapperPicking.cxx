@@ -40,20 +40,11 @@ namespace
 // A ball of radius 0.4 of the box around the centre of a 20^3 volume of unit spacing.
 vtkSmartPointer<vtkImageData> Ball(int n)
 {
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(n, n, n);
-  vtkNew<vtkFloatArray> a;
-  a->SetNumberOfTuples(vtkIdType(n) * n * n);
   const double c = 0.5 * (n - 1);
-  for (int z = 0; z < n; ++z)
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x)
-      {
-        const double r = std::sqrt((x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c));
-        a->SetValue((vtkIdType(z) * n + y) * n + x, r < 0.4 * n ? 1.0f : 0.0f);
-      }
-  image->GetPointData()->SetScalars(a);
-  return image;
+  return vstest::FloatVolume(n, [c, n](int x, int y, int z) {
+    const double r = std::sqrt((x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c));
+    return r < 0.4 * n ? 1.0f : 0.0f;
+  });
 }
 
 vtkSmartPointer<vtkVolumeProperty> Property()

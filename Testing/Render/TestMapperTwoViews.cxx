@@ -31,20 +31,11 @@ namespace
 {
 vtkSmartPointer<vtkImageData> Ball(int n)
 {
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(n, n, n);
-  vtkNew<vtkFloatArray> a;
-  a->SetNumberOfTuples(vtkIdType(n) * n * n);
   const double c = 0.5 * (n - 1);
-  for (int z = 0; z < n; ++z)
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x)
-      {
-        const double r = std::sqrt((x - c) * (x - c) + (y - c) * (y - c) + (z - 0.7 * c) * (z - 0.7 * c));
-        a->SetValue((vtkIdType(z) * n + y) * n + x, float(std::max(0.0, 1.0 - r / c)));
-      }
-  image->GetPointData()->SetScalars(a);
-  return image;
+  return vstest::FloatVolume(n, [c](int x, int y, int z) {
+    const double r = std::sqrt((x - c) * (x - c) + (y - c) * (y - c) + (z - 0.7 * c) * (z - 0.7 * c));
+    return float(std::max(0.0, 1.0 - r / c));
+  });
 }
 
 vtkSmartPointer<vtkVolumeProperty> Property()

@@ -24,27 +24,11 @@
 #include <iostream>
 #include <sstream>
 
+using vstest::Ball;
 using vstest::Check;
 
 namespace
 {
-vtkSmartPointer<vtkImageData> Ball(int n)
-{
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(n, n, n);
-  vtkNew<vtkFloatArray> a;
-  a->SetNumberOfTuples(vtkIdType(n) * n * n);
-  const double c = 0.5 * (n - 1);
-  for (int z = 0; z < n; ++z)
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x)
-      {
-        const double r = std::sqrt((x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c));
-        a->SetValue((vtkIdType(z) * n + y) * n + x, float(std::max(0.0, 1.0 - r / c)));
-      }
-  image->GetPointData()->SetScalars(a);
-  return image;
-}
 
 size_t CountContaining(const std::vector<std::string>& messages, const std::string& text)
 {

@@ -1,12 +1,17 @@
 #include "vsRenderTestUtilities.h"
 
 #include "vtkColorTransferFunction.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNIFTIImageReader.h"
+#include "vtkNew.h"
 #include "vtkObject.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
@@ -47,6 +52,29 @@ std::string Argument(int argc, char* argv[], const char* flag)
     }
   }
   return std::string();
+}
+
+vtkSmartPointer<vtkImageData> FloatVolume(int n, const std::function<float(int x, int y, int z)>& value)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n, n, n);
+  vtkNew<vtkFloatArray> a;
+  a->SetNumberOfTuples(vtkIdType(n) * n * n);
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        a->SetValue((vtkIdType(z) * n + y) * n + x, value(x, y, z));
+  image->GetPointData()->SetScalars(a);
+  return image;
+}
+
+vtkSmartPointer<vtkImageData> Ball(int n)
+{
+  const double c = 0.5 * (n - 1);
+  return FloatVolume(n, [c](int x, int y, int z) {
+    const double r = std::sqrt((x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c));
+    return float(std::max(0.0, 1.0 - r / c));
+  });
 }
 
 vtkSmartPointer<vtkImageData> ReadBrain(const std::string& path)

@@ -1,11 +1,12 @@
-// Helpers shared by the render tests: the MRI volume with a fixed skin TF, and
-// an observer that records vtkErrorMacro messages.
+// Helpers shared by the render tests: the MRI volume with a fixed skin TF, the synthetic
+// volumes, and an observer that records vtkErrorMacro messages.
 #ifndef vsRenderTestUtilities_h
 #define vsRenderTestUtilities_h
 
 #include "vtkCommand.h"
 #include "vtkSmartPointer.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,12 @@ vtkSmartPointer<vtkImageData> ReadBrain(const std::string& path);
 
 /** A fixed skin-and-brain transfer function for ch2 (0..255). */
 vtkSmartPointer<vtkVolumeProperty> BrainProperty();
+
+/** An n x n x n volume (unit spacing, origin 0) of float point scalars value(x, y, z). */
+vtkSmartPointer<vtkImageData> FloatVolume(int n, const std::function<float(int x, int y, int z)>& value);
+
+/** The tests' ball: 1 - r / c at distance r from the centre (c, c, c), c = (n - 1) / 2, and 0 beyond c. */
+vtkSmartPointer<vtkImageData> Ball(int n);
 
 /** Soft assertions of the counter-and-image tests: Check() prints "FAILED: what" to stderr
  *  and counts it; a test returns ExitCode() (EXIT_FAILURE after any failed check). One test
