@@ -70,6 +70,24 @@ bool DirectionTable::Current(
   return this->Usable(grid, environment, strategy, epsilon) && grid.ContentSerial() == this->Key_.Grid;
 }
 
+std::shared_ptr<ComputePipeline> DirectionTable::Pipeline(
+  const std::shared_ptr<Context>& context, vk::Format format, uint32_t D, uint32_t map)
+{
+  using B = BindingType;
+  const std::vector<B> bindings{ B::StorageImage, B::StorageBuffer, B::StorageBuffer };
+  const std::vector<uint32_t> specialization{ D,
+    map == shared::VS_STRATEGY_VISIBILITY ? map : uint32_t(shared::VS_STRATEGY_COMBINED) };
+  const std::string name = std::string("direction table (") +
+    (map == shared::VS_STRATEGY_VISIBILITY ? "visibility" : "product") + ", D " + std::to_string(D);
+  if (format == vk::Format::eR8Unorm)
+    return SharedPipeline(context, VS_SPIRV(vs_spirv_direction_table_r8), bindings, 32, name + ", r8)", specialization);
+  if (format == vk::Format::eR16Unorm)
+    return SharedPipeline(
+      context, VS_SPIRV(vs_spirv_direction_table_r16), bindings, 32, name + ", r16)", specialization);
+  return SharedPipeline(
+    context, VS_SPIRV(vs_spirv_direction_table_r32f), bindings, 32, name + ", r32f)", specialization);
+}
+
 bool DirectionTable::Update(
   const VisibilityGrid& grid, const DeviceEnvironment& environment, uint32_t strategy, float epsilon)
 {
@@ -93,22 +111,7 @@ bool DirectionTable::Update(
     this->Nodes_.reset();
     this->Nodes_ = std::make_unique<Buffer>(this->Context_, bytes, "direction table");
   }
-  const vk::Format f = grid.Image().Format();
-  using B = BindingType;
-  const std::vector<B> bindings{ B::StorageImage, B::StorageBuffer, B::StorageBuffer };
-  std::shared_ptr<ComputePipeline> pipeline;
-  const std::vector<uint32_t> specialization{ D, map };
-  const std::string name = std::string("direction table (") +
-    (map == shared::VS_STRATEGY_VISIBILITY ? "visibility" : "product") + ", D " + std::to_string(D);
-  if (f == vk::Format::eR8Unorm)
-    pipeline = SharedPipeline(
-      this->Context_, VS_SPIRV(vs_spirv_direction_table_r8), bindings, 32, name + ", r8)", specialization);
-  else if (f == vk::Format::eR16Unorm)
-    pipeline = SharedPipeline(
-      this->Context_, VS_SPIRV(vs_spirv_direction_table_r16), bindings, 32, name + ", r16)", specialization);
-  else
-    pipeline = SharedPipeline(
-      this->Context_, VS_SPIRV(vs_spirv_direction_table_r32f), bindings, 32, name + ", r32f)", specialization);
+  std::shared_ptr<ComputePipeline> pipeline = Pipeline(this->Context_, grid.Image().Format(), D, map);
   DescriptorSet set(*pipeline);
   set.Bind(0, grid.Image()).Bind(1, environment.Mips()).Bind(2, *this->Nodes_);
   uint32_t epsilonBits;

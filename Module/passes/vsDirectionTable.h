@@ -14,6 +14,8 @@
 
 #include "vissweepCoreModule.h"
 
+#include "vsVulkan.h"
+
 #include <cstdint>
 #include <memory>
 
@@ -46,6 +48,10 @@ public:
 
   bool Valid() const { return this->Nodes_ != nullptr; }
   const Buffer& Nodes() const { return *this->Nodes_; }
+  /** The builder's pipeline for a grid of this storage format, D and map (made once per process;
+   *  callers may make it ahead of the first Update, on another thread). */
+  static std::shared_ptr<ComputePipeline> Pipeline(
+    const std::shared_ptr<Context>& context, vk::Format format, uint32_t D, uint32_t map);
   /** Bytes of the table for this many cells at D x D directions. */
   static uint64_t BytesFor(uint64_t cells, uint32_t D);
   /** Builds since this object was made, and the device seconds of the last one.

@@ -56,7 +56,9 @@ StrategySelector::Estimator StrategySelector::Choose(bool gridReady)
     return this->EpochFrame_ % 2 == 0 ? GridEstimator : EnvironmentEstimator;
   }
   const Estimator other = this->Preferred_ == GridEstimator ? EnvironmentEstimator : GridEstimator;
-  return this->Frame_ % ExplorationInterval == ExplorationInterval - 1 ? other : this->Preferred_;
+  const bool settled = this->GridVerdict_ && !this->GridWorth_ && this->Preferred_ == EnvironmentEstimator;
+  const uint32_t interval = settled ? SettledExplorationInterval : ExplorationInterval;
+  return this->Frame_ % interval == interval - 1 ? other : this->Preferred_;
 }
 
 void StrategySelector::Record(Estimator estimator, uint32_t spp, double deviceSeconds, uint64_t pixels,

@@ -198,6 +198,8 @@ TEST(StrategySelector, PrefersTheMoreEfficientEstimatorAndKeepsExploring)
     EXPECT_LE(grid, 64 / int(StrategySelector::ExplorationInterval));
     EXPECT_GT(grid, 0);
     EXPECT_FALSE(s.GridWorthSweeping()) << "less efficient at equal time: stop sweeping";
+    EXPECT_LE(grid, 64 / int(StrategySelector::SettledExplorationInterval))
+      << "a grid that no longer fills in is explored once in SettledExplorationInterval frames";
   }
   {
     StrategySelector s;
