@@ -12,12 +12,10 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
@@ -27,7 +25,6 @@
 #include "vtkSphereSource.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <cmath>
 #include <iostream>
@@ -105,22 +102,7 @@ struct Scene
   std::vector<int> Pixels()
   {
     this->Window->Render();
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(this->Window);
-    grab->ShouldRerenderOff();
-    grab->SetInputBufferTypeToRGB();
-    grab->ReadFrontBufferOff();
-    grab->Update();
-    vtkDataArray* a = grab->GetOutput()->GetPointData()->GetScalars();
-    std::vector<int> out;
-    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        out.push_back(int(a->GetComponent(i, c)));
-      }
-    }
-    return out;
+    return vstest::WindowPixels(this->Window);
   }
 
   // The pixel (x, y) of the last Pixels().
@@ -131,15 +113,6 @@ struct Scene
   }
 };
 
-double MeanDifference(const std::vector<int>& a, const std::vector<int>& b)
-{
-  double sum = 0.0;
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
-  {
-    sum += std::abs(a[i] - b[i]);
-  }
-  return a.size() == b.size() && !a.empty() ? sum / double(a.size()) : 1e9;
-}
 
 int Bright(const std::vector<int>& p, std::vector<bool>& mask)
 {
@@ -166,7 +139,7 @@ int TestEnvironmentMapBackground(int argc, char* argv[])
   {
     both += brightA[i] && brightB[i] ? 1 : 0;
   }
-  const double difference = MeanDifference(a, b);
+  const double difference = vstest::MeanAbsoluteDifference(a, b);
   std::cout << "skybox against the mapper's visible environment: mean " << difference << "/255; sun pixels " << na
             << " and " << nb << ", " << both << " in both\n";
   Check(difference < 3.0, "the skybox shows the mapper's visible environment");

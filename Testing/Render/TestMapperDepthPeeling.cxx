@@ -11,12 +11,10 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
-#include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -24,7 +22,6 @@
 #include "vtkSphereSource.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <cmath>
 #include <iostream>
@@ -92,35 +89,7 @@ struct Scene
   }
 };
 
-std::vector<int> Pixels(vtkRenderWindow* win)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(win);
-  grab->ShouldRerenderOff();
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkDataArray* a = grab->GetOutput()->GetPointData()->GetScalars();
-  std::vector<int> out;
-  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      out.push_back(int(a->GetComponent(i, c)));
-    }
-  }
-  return out;
-}
 
-double Difference(const std::vector<int>& a, const std::vector<int>& b)
-{
-  double sum = 0.0;
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
-  {
-    sum += std::abs(a[i] - b[i]);
-  }
-  return a.size() == b.size() && !a.empty() ? sum / double(a.size()) : 1e9;
-}
 }
 
 int TestMapperDepthPeeling(int, char*[])
@@ -134,12 +103,13 @@ int TestMapperDepthPeeling(int, char*[])
     peeled.Window->Render();
     plain.Window->Render();
   }
-  const std::vector<int> a = Pixels(peeled.Window), b = Pixels(plain.Window);
+  const std::vector<int> a = vstest::WindowPixels(peeled.Window), b = vstest::WindowPixels(plain.Window);
   // The volume is seen: the image without the volume differs.
   peeled.Volume->VisibilityOff();
   peeled.Window->Render();
-  const std::vector<int> noVolume = Pixels(peeled.Window);
-  const double difference = Difference(a, b), volumeShows = Difference(a, noVolume);
+  const std::vector<int> noVolume = vstest::WindowPixels(peeled.Window);
+  const double difference = vstest::MeanAbsoluteDifference(a, b),
+               volumeShows = vstest::MeanAbsoluteDifference(a, noVolume);
   std::cout << "mean |peeled - plain| = " << difference << "; mean |peeled - without the volume| = " << volumeShows
             << "\n";
   size_t warnings = 0;

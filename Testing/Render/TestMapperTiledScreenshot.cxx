@@ -10,17 +10,14 @@
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
-#include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <cmath>
 #include <iostream>
@@ -85,43 +82,7 @@ struct Scene
   }
 };
 
-std::vector<int> Grab(vtkRenderWindow* win, int scale)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(win);
-  grab->SetScale(scale);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  if (scale == 1)
-  {
-    grab->ShouldRerenderOff();
-  }
-  grab->Update();
-  vtkDataArray* a = grab->GetOutput()->GetPointData()->GetScalars();
-  std::vector<int> out;
-  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      out.push_back(int(a->GetComponent(i, c)));
-    }
-  }
-  return out;
-}
 
-double MeanAbsoluteDifference(const std::vector<int>& a, const std::vector<int>& b)
-{
-  if (a.size() != b.size() || a.empty())
-  {
-    return 1e9;
-  }
-  double sum = 0.0;
-  for (size_t i = 0; i < a.size(); ++i)
-  {
-    sum += std::abs(a[i] - b[i]);
-  }
-  return sum / double(a.size());
-}
 }
 
 int TestMapperTiledScreenshot(int, char*[])
@@ -132,7 +93,7 @@ int TestMapperTiledScreenshot(int, char*[])
   const int resets = view.Mapper->GetAccumulationResetCount();
   Check(view.Mapper->GetAccumulatedSamples() == 16 && resets == 1, "the 40x40 view converged (16 spp, 1 start)");
 
-  const std::vector<int> tiled = Grab(view.Window, 2);
+  const std::vector<int> tiled = vstest::WindowPixels(view.Window, 2);
   std::cout << "after the screenshot: " << view.Mapper->GetAccumulationResetCount() << " starts, "
             << view.Mapper->GetAccumulatedSamples() << " spp, " << view.Mapper->GetTileRenderCount() << " tiles\n";
   Check(view.Mapper->GetTileRenderCount() == 4, "the screenshot rendered 4 tiles");
@@ -147,9 +108,9 @@ int TestMapperTiledScreenshot(int, char*[])
   Scene big(data, 80, 3), other(data, 80, 4);
   big.Converge();
   other.Converge();
-  const std::vector<int> reference = Grab(big.Window, 1), second = Grab(other.Window, 1);
-  const double tiledError = MeanAbsoluteDifference(tiled, reference);
-  const double noise = MeanAbsoluteDifference(second, reference);
+  const std::vector<int> reference = vstest::WindowPixels(big.Window), second = vstest::WindowPixels(other.Window);
+  const double tiledError = vstest::MeanAbsoluteDifference(tiled, reference);
+  const double noise = vstest::MeanAbsoluteDifference(second, reference);
   std::cout << "mean |tiled - 80x80 render| = " << tiledError << ", mean |80x80 seed 4 - seed 3| = " << noise << "\n";
   Check(tiled.size() == size_t(80 * 80 * 3), "the screenshot is 80x80");
   Check(noise > 0.0 && tiledError <= 1.25 * noise + 0.05,

@@ -21,7 +21,6 @@
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-#include "vtkWindowToImageFilter.h"
 
 #include <cmath>
 #include <iostream>
@@ -88,25 +87,6 @@ vtkSmartPointer<vtkRenderWindow> Window(const std::vector<vtkVolume*>& volumes)
   return win;
 }
 
-std::vector<int> Pixels(vtkRenderWindow* win)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(win);
-  grab->ShouldRerenderOff();
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkDataArray* a = grab->GetOutput()->GetPointData()->GetScalars();
-  std::vector<int> out;
-  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      out.push_back(int(a->GetComponent(i, c)));
-    }
-  }
-  return out;
-}
 
 // Mean absolute difference over the columns [x0, x1) of 96x48 RGB images.
 double Difference(const std::vector<int>& a, const std::vector<int>& b, int x0, int x1)
@@ -136,9 +116,9 @@ int TestMapperTwoVolumes(int argc, char* argv[])
   emptyData->DeepCopy(data);
   emptyData->GetPointData()->GetScalars()->Fill(0.0);
   auto nothing = Volume(emptyData, 1.0, 1.0, 1.0, 0.0, 3);
-  const std::vector<int> both = Pixels(win);
-  const std::vector<int> left = Pixels(Window({ redAlone })), right = Pixels(Window({ blueAlone }));
-  const std::vector<int> environment = Pixels(Window({ nothing }));
+  const std::vector<int> both = vstest::WindowPixels(win);
+  const std::vector<int> left = vstest::WindowPixels(Window({ redAlone })), right = vstest::WindowPixels(Window({ blueAlone }));
+  const std::vector<int> environment = vstest::WindowPixels(Window({ nothing }));
 
   const double leftError = Difference(both, left, 0, 48), rightError = Difference(both, right, 48, 96);
   const double redShows = Difference(left, environment, 0, 48), blueShows = Difference(right, environment, 48, 96);

@@ -8,6 +8,8 @@
 #include "vtkObject.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkWindowToImageFilter.h"
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
@@ -75,6 +77,45 @@ vtkSmartPointer<vtkImageData> Ball(int n)
     const double r = std::sqrt((x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c));
     return float(std::max(0.0, 1.0 - r / c));
   });
+}
+
+std::vector<int> WindowPixels(vtkRenderWindow* win, int scale)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(win);
+  grab->SetScale(scale);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  if (scale == 1)
+  {
+    grab->ShouldRerenderOff();
+  }
+  grab->Update();
+  vtkDataArray* a = grab->GetOutput()->GetPointData()->GetScalars();
+  std::vector<int> out;
+  out.reserve(size_t(a->GetNumberOfTuples()) * 3);
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      out.push_back(int(a->GetComponent(i, c)));
+    }
+  }
+  return out;
+}
+
+double MeanAbsoluteDifference(const std::vector<int>& a, const std::vector<int>& b)
+{
+  if (a.size() != b.size() || a.empty())
+  {
+    return 1e9;
+  }
+  double sum = 0.0;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    sum += std::abs(a[i] - b[i]);
+  }
+  return sum / double(a.size());
 }
 
 vtkSmartPointer<vtkImageData> ReadBrain(const std::string& path)

@@ -12,6 +12,7 @@
 
 class vtkImageData;
 class vtkObject;
+class vtkRenderWindow;
 class vtkVolumeProperty;
 
 namespace vstest
@@ -30,6 +31,13 @@ vtkSmartPointer<vtkImageData> FloatVolume(int n, const std::function<float(int x
 
 /** The tests' ball: 1 - r / c at distance r from the centre (c, c, c), c = (n - 1) / 2, and 0 beyond c. */
 vtkSmartPointer<vtkImageData> Ball(int n);
+
+/** The window's RGB pixels (rows bottom-up, 3 ints per pixel) as vtkWindowToImageFilter reads them
+ *  from the back buffer: as drawn (scale 1, no re-render) or as a tiled screenshot of `scale`. */
+std::vector<int> WindowPixels(vtkRenderWindow* win, int scale = 1);
+
+/** Mean |a - b| over the values of two pixel lists, 1e9 when their sizes differ or they are empty. */
+double MeanAbsoluteDifference(const std::vector<int>& a, const std::vector<int>& b);
 
 /** Soft assertions of the counter-and-image tests: Check() prints "FAILED: what" to stderr
  *  and counts it; a test returns ExitCode() (EXIT_FAILURE after any failed check). One test
