@@ -990,6 +990,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       this->LastLookupCounts[0] = double(n[0]);
       this->LastLookupCounts[1] = double(n[1]);
       this->LastLookupCounts[2] = double(n[2]);
+      this->LastLaneOccupancy = pass->LastLaneOccupancy();
     }
   }
   if (!tiled)
@@ -1491,6 +1492,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CountLookups: " << (this->CountLookups ? "On" : "Off") << "\n";
   os << indent << "LastLookupCounts: " << this->LastLookupCounts[0] << " " << this->LastLookupCounts[1] << " "
      << this->LastLookupCounts[2] << "\n";
+  os << indent << "LastLaneOccupancy: " << this->LastLaneOccupancy << "\n";
   os << indent << "UpdateScheme: " << this->GetUpdateSchemeAsString() << "\n";
   os << indent << "SkipUnlitDirections: " << (this->SkipUnlitDirections ? "On" : "Off") << "\n";
   os << indent << "UnlitDirections: " << this->UnlitDirections << "\n";

@@ -431,11 +431,14 @@ public:
   /** Benchmarks: render Monte Carlo frames with an instrumented kernel that counts its reads
    *  (same samples, slower; r8 visibility grids only; 32-bit counters, so count frames of a
    *  few samples per pixel). LastLookupCounts = (trilinear volume samples, majorant-brick
-   *  loads, visibility-texel loads) of the last frame. Off by default. */
+   *  loads, visibility-texel loads) of the last frame; LastLaneOccupancy = the tracking steps its
+   *  lanes took over the steps their SIMD groups ran times the group's width (1 = no lane waited
+   *  for another; divergence lowers it). Off by default. */
   vtkSetMacro(CountLookups, bool);
   vtkGetMacro(CountLookups, bool);
   vtkBooleanMacro(CountLookups, bool);
   vtkGetVector3Macro(LastLookupCounts, double);
+  vtkGetMacro(LastLaneOccupancy, double);
   ///@}
   /** Times the volume was uploaded to the device (changes only when the input changes). */
   vtkGetMacro(VolumeUploadCount, int);
@@ -526,6 +529,7 @@ protected:
   double LastMajorantSeconds = 0.0;
   bool CountLookups = false;
   double LastLookupCounts[3] = { 0.0, 0.0, 0.0 };
+  double LastLaneOccupancy = 1.0;
   int VolumeUploadCount = 0;
   int SelectionRenderCount = 0;
   int TileRenderCount = 0;

@@ -49,6 +49,7 @@ struct Measurement
   double Variance = 0.0;        // mean over pixels and rgb of the variance of one sample
   double MeanRadiance = 0.0;
   double Lookups[3] = { 0, 0, 0 }; // per path: volume samples, majorant loads, visibility texels
+  double LaneOccupancy = 1.0;      // tracking steps the lanes took / steps their SIMD groups ran x width
   double SweepSeconds = 0.0;
 };
 
@@ -130,6 +131,7 @@ Measurement Measure(
   {
     m.Lookups[k] = mapper->GetLastLookupCounts()[k] / pixels;
   }
+  m.LaneOccupancy = mapper->GetLastLaneOccupancy();
   return m;
 }
 
@@ -184,8 +186,8 @@ int Run(const Options& given)
   report["height"] = o.Height;
   report["spp_per_frame"] = o.Spp;
   report["repeats"] = o.Repeats;
-  std::printf("\n%-12s %-10s %5s %12s %9s %10s %10s %9s %11s %10s\n", "strategy", "cells", "alpha", "paths/s", "cost/Uni",
-    "vol/path", "vis/path", "Mvol/s", "var/sample", "eff/Uni");
+  std::printf("\n%-12s %-10s %5s %12s %9s %10s %10s %9s %6s %11s %10s\n", "strategy", "cells", "alpha", "paths/s",
+    "cost/Uni", "vol/path", "vis/path", "Mvol/s", "lanes", "var/sample", "eff/Uni");
   for (const auto& m : results)
   {
     // Equal-time error of an unbiased estimator ~ variance x time per sample: efficiency = 1 / (var t).
@@ -195,19 +197,22 @@ int Run(const Options& given)
     const double relEff = effU > 0.0 ? eff * effU : 0.0;
     const double cost = uniform && m.PathsPerSecond > 0.0 ? uniform->PathsPerSecond / m.PathsPerSecond : 0.0;
     const double volRate = m.PathsPerSecond * m.Lookups[0];
-    std::printf("%-12s %-10s %5.2f %12.0f %9.2f %10.1f %10.1f %9.1f %11.3g %10.2f\n", m.Strategy.c_str(),
-      m.CellMode.c_str(), m.Defensive, m.PathsPerSecond, cost, m.Lookups[0], m.Lookups[2], volRate / 1e6, m.Variance, relEff);
+    std::printf("%-12s %-10s %5.2f %12.0f %9.2f %10.1f %10.1f %9.1f %6.2f %11.3g %10.2f\n", m.Strategy.c_str(),
+      m.CellMode.c_str(), m.Defensive, m.PathsPerSecond, cost, m.Lookups[0], m.Lookups[2], volRate / 1e6,
+      m.LaneOccupancy, m.Variance, relEff);
     report["strategies"].push_back({ { "strategy", m.Strategy }, { "cell_mode", m.CellMode },
       { "defensive_weight", m.Defensive },
       { "seconds_per_frame", m.SecondsPerFrame }, { "paths_per_second", m.PathsPerSecond },
       { "time_per_sample_relative_to_uniform", cost }, { "volume_samples_per_path", m.Lookups[0] },
       { "majorant_loads_per_path", m.Lookups[1] }, { "visibility_texels_per_path", m.Lookups[2] },
+      { "lane_occupancy", m.LaneOccupancy },
       { "volume_samples_per_second", volRate }, { "variance_per_sample", m.Variance },
       { "mean_radiance", m.MeanRadiance }, { "efficiency_relative_to_uniform", relEff },
       { "sweep_seconds", m.SweepSeconds } });
   }
   std::printf("(cost/Uni: device time per sample relative to Uniform; vol, vis: trilinear volume samples and\n"
-              " visibility texels read per path; eff/Uni: 1/(variance x time per sample) relative to Uniform,\n"
+              " visibility texels read per path; lanes: SIMD occupancy of the tracking loops, the steps the lanes\n"
+              " took over the steps their groups ran x the group's width; eff/Uni: 1/(variance x time per sample) relative to Uniform,\n"
               " i.e. how much faster the error falls at equal time)\n");
 
   // The device's ceiling: the plainest trilinear ray march over the same volume.

@@ -72,9 +72,9 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   if (!pipeline)
   {
     using B = BindingType;
-    std::vector<B> bindings{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageImage, B::StorageBuffer,
-      B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer,
-      B::StorageBuffer, B::StorageBuffer };
+    std::vector<B> bindings{ B::StorageImage, B::UniformTexelBuffer, B::StorageImage, B::StorageImage, B::StorageBuffer,
+      B::UniformTexelBuffer, B::UniformTexelBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer,
+      B::StorageBuffer, B::StorageBuffer, B::UniformTexelBuffer };
     static const char* formats[] = { "r8 visibility", "r16 visibility", "r32f visibility",
       "r8 visibility, counting reads" };
     const std::string name = std::string("monte carlo (") + formats[format] + ", " + StrategyName(strategy) + ", " +
@@ -248,23 +248,23 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     this->PipelineFor(useGrid ? grid : nullptr, params, NeedsCellWalk(majorants, params), table);
   DescriptorSet set(pipeline);
   set.Bind(0, volume.Image())
-    .Bind(1, tf.Lut())
+    .BindTexels(1, tf.Lut(), vk::Format::eR32G32B32A32Sfloat)
     .Bind(2, majorants.Image())
     .Bind(3, useGrid ? grid->Image() : *this->NoGrid_)
     .Bind(4, *this->Params_)
-    .Bind(5, environment.Radiance())
-    .Bind(6, environment.Mips())
+    .BindTexels(5, environment.Radiance(), vk::Format::eR32G32B32A32Sfloat)
+    .BindTexels(6, environment.Mips(), vk::Format::eR32Sfloat)
     .Bind(7, *this->Depth_)
     .Bind(8, *this->Sum_)
     .Bind(9, *this->Comp_)
     .Bind(10, *this->Squares_)
     .Bind(11, *this->Progress_)
-    .Bind(12, table ? this->Table_->Nodes() : *this->NoTable_);
+    .BindTexels(12, table ? this->Table_->Nodes() : *this->NoTable_, vk::Format::eR32Uint);
   if (this->CountLookups_)
   {
     if (!this->Lookups_)
     {
-      this->Lookups_ = std::make_unique<Buffer>(this->Context_, 4 * sizeof(uint32_t), "read counters");
+      this->Lookups_ = std::make_unique<Buffer>(this->Context_, 5 * sizeof(uint32_t), "read counters");
     }
     this->Lookups_->Fill(0u);
     set.Bind(13, *this->Lookups_);
@@ -326,9 +326,10 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   this->SquareScale_ = params.sampling2.w > 0.0f ? params.sampling2.w : 1.0f;
   if (this->CountLookups_)
   {
-    uint32_t counts[3];
+    uint32_t counts[5];
     this->Lookups_->Download(counts, sizeof(counts));
     this->LastLookups_ = { counts[0], counts[1], counts[2] };
+    this->LastLaneOccupancy_ = counts[4] > 0 ? double(counts[3]) / double(counts[4]) : 1.0;
   }
 }
 

@@ -67,6 +67,9 @@ public:
   void SetCountLookups(bool on) { this->CountLookups_ = on; }
   /** Reads of the last counted Render: trilinear volume samples, majorant-brick loads, visibility texels. */
   std::array<uint64_t, 3> LastLookups() const { return this->LastLookups_; }
+  /** Of the last counted Render: the tracking steps the lanes took over the steps their SIMD
+   *  groups ran times the group's width (1: no lane ever waited for another). */
+  double LastLaneOccupancy() const { return this->LastLaneOccupancy_; }
 
   /** Samples per pixel one dispatch adds at most (the rest of a Render's samples go to further
    *  dispatches), clamped to [1, kMaxSamplesPerDispatch]; the image is the same bit for bit for
@@ -126,6 +129,7 @@ private:
   bool CountLookups_ = false;
   uint32_t SamplesPerDispatch_ = 16;
   std::array<uint64_t, 3> LastLookups_{};
+  double LastLaneOccupancy_ = 1.0;
   std::unique_ptr<Image3D> NoGrid_;
   std::shared_ptr<DirectionTable> Table_;
   std::unique_ptr<Buffer> NoTable_;

@@ -3,6 +3,10 @@
  * The including shader declares, before including this file:
  *   layout(binding = VS_BINDING_VOLUME, r32f) uniform readonly image3D uVolume;
  *   layout(std430, binding = VS_BINDING_TF) readonly buffer TransferFunction { vec4 uTF[]; };
+ * or, with VS_TF_TEXELS defined, the same table as a texel buffer (rgba32f texels):
+ *   layout(binding = VS_BINDING_TF) uniform samplerBuffer uTF;
+ * (lavapipe loads a texel buffer at per-lane indices with one gather, a storage buffer with a
+ * scalar loop over the SIMD lanes: the render kernel classifies at every tracking step).
  * Non-finite voxels are stored as NaN; any interpolated NaN classifies to zero
  * extinction and zero albedo (NaN/Inf voxels are empty space).
  */
@@ -71,6 +75,16 @@ float vs_sample(vec3 p, ivec3 dims, uint interpolation)
   return interpolation == VS_INTERPOLATION_NEAREST ? vs_sample_nearest(p, dims) : vs_sample_scalar(p, dims);
 }
 
+/* Entry i of the transfer-function table. */
+vec4 vs_tf_entry(int i)
+{
+#ifdef VS_TF_TEXELS
+  return texelFetch(uTF, i);
+#else
+  return uTF[i];
+#endif
+}
+
 /* Post-classification: (albedo rgb, extinction per world unit) of scalar s,
  * linear between LUT entries, clamped at the ends as VTK's transfer functions are. */
 vec4 vs_classify(float s, vec4 tf)
@@ -80,7 +94,7 @@ vec4 vs_classify(float s, vec4 tf)
   float x = clamp((s - tf.x) * tf.y, 0.0, tf.z - 1.0);
   int i0 = int(floor(x));
   int i1 = min(i0 + 1, int(tf.z) - 1);
-  return mix(uTF[i0], uTF[i1], x - float(i0));
+  return mix(vs_tf_entry(i0), vs_tf_entry(i1), x - float(i0));
 }
 
 /* Extinction entry i of level k of the range-maximum table (vsTransferFunctionTable.h): level 0 is
@@ -88,10 +102,10 @@ vec4 vs_classify(float s, vec4 tf)
 float vs_tf_level_max(int level, int i, vec4 tf)
 {
   if (level == 0)
-    return uTF[i].w;
+    return vs_tf_entry(i).w;
   int n = int(tf.z);
   int f = 4 * n + (level - 1) * n + i;
-  return uTF[f >> 2][f & 3];
+  return vs_tf_entry(f >> 2)[f & 3];
 }
 
 /* The largest extinction vs_classify gives any scalar in [s0, s1], s0 <= s1: two reads of the

@@ -113,8 +113,8 @@ Buffer::Buffer(std::shared_ptr<Context> context, uint64_t bytes, const std::stri
   vk::Device device = this->Context_->Device();
   vk::BufferCreateInfo ci;
   ci.size = bytes;
-  ci.usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferSrc |
-    vk::BufferUsageFlagBits::eTransferDst;
+  ci.usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformTexelBuffer |
+    vk::BufferUsageFlagBits::eTransferSrc | vk::BufferUsageFlagBits::eTransferDst;
   ci.sharingMode = vk::SharingMode::eExclusive;
   this->Buffer_ = device.createBuffer(ci);
   bool hostVisible = false;
@@ -138,12 +138,50 @@ Buffer::Buffer(std::shared_ptr<Context> context, uint64_t bytes, const std::stri
 Buffer::~Buffer()
 {
   vk::Device device = this->Context_->Device();
+  for (const auto& view : this->Views_)
+  {
+    device.destroyBufferView(view.second);
+  }
   if (this->Mapped_)
   {
     device.unmapMemory(this->Memory_);
   }
   device.destroyBuffer(this->Buffer_);
   device.freeMemory(this->Memory_);
+}
+
+vk::BufferView Buffer::TexelView(vk::Format format) const
+{
+  for (const auto& view : this->Views_)
+  {
+    if (view.first == format)
+    {
+      return view.second;
+    }
+  }
+  const uint64_t texelBytes = format == vk::Format::eR32G32B32A32Sfloat ? 16
+    : (format == vk::Format::eR32Sfloat || format == vk::Format::eR32Uint) ? 4
+                                                                          : 0;
+  if (texelBytes == 0)
+  {
+    throw InputError("buffer '" + this->Name_ + "': unsupported texel format " + vk::to_string(format));
+  }
+  const auto& info = this->Context_->Info();
+  const uint64_t texels = this->Bytes_ / texelBytes;
+  if (texels > info.MaxTexelBufferElements)
+  {
+    throw DeviceLimitError("buffer '" + this->Name_ + "' of " + std::to_string(texels) +
+      " texels exceeds the device's maxTexelBufferElements of " + std::to_string(info.MaxTexelBufferElements) +
+      " on '" + info.Name + "'");
+  }
+  vk::BufferViewCreateInfo ci;
+  ci.buffer = this->Buffer_;
+  ci.format = format;
+  ci.offset = 0;
+  ci.range = texels * texelBytes;
+  vk::BufferView view = this->Context_->Device().createBufferView(ci);
+  this->Views_.emplace_back(format, view);
+  return view;
 }
 
 void Buffer::Upload(const void* data, uint64_t bytes, uint64_t offset)

@@ -1,4 +1,5 @@
-// vsBuffer.h — a storage buffer on the device, with upload and download.
+// vsBuffer.h — a storage buffer on the device, with upload and download; also readable as a
+// uniform texel buffer (TexelView) where a shader reads it at divergent indices.
 //
 // Memory: device-local and host-visible where the device has such memory
 // (lavapipe, integrated GPUs, resizable BAR), so transfers are plain copies;
@@ -12,6 +13,8 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace vs
 {
@@ -30,6 +33,12 @@ public:
   void Download(void* data, uint64_t bytes, uint64_t offset = 0) const;
   void Fill(uint32_t value);
 
+  /** The whole buffer as texels of `format` (eR32Sfloat, eR32Uint or eR32G32B32A32Sfloat), for a
+   *  uniform texel buffer binding (made once per format). lavapipe loads a texel buffer at
+   *  per-lane indices with one vector gather, a storage buffer with a scalar loop over the lanes.
+   *  Throws DeviceLimitError past the device's maxTexelBufferElements. */
+  vk::BufferView TexelView(vk::Format format) const;
+
   vk::Buffer Handle() const { return this->Buffer_; }
   uint64_t Size() const { return this->Bytes_; }
   const std::string& Name() const { return this->Name_; }
@@ -41,6 +50,7 @@ private:
   vk::Buffer Buffer_;
   vk::DeviceMemory Memory_;
   void* Mapped_ = nullptr; // when host-visible
+  mutable std::vector<std::pair<vk::Format, vk::BufferView>> Views_;
 };
 
 /** Allocates device memory for the requirements, preferring host-visible device-local memory.

@@ -10,8 +10,15 @@ namespace
 {
 vk::DescriptorType ToVk(BindingType t)
 {
-  return t == BindingType::StorageBuffer ? vk::DescriptorType::eStorageBuffer
-                                          : vk::DescriptorType::eStorageImage;
+  switch (t)
+  {
+    case BindingType::StorageBuffer:
+      return vk::DescriptorType::eStorageBuffer;
+    case BindingType::UniformTexelBuffer:
+      return vk::DescriptorType::eUniformTexelBuffer;
+    default:
+      return vk::DescriptorType::eStorageImage;
+  }
 }
 }
 
@@ -114,12 +121,16 @@ DescriptorSet::DescriptorSet(const ComputePipeline& pipeline)
   , Bindings_(pipeline.Bindings())
 {
   vk::Device device = this->Context_->Device();
-  uint32_t buffers = 0, images = 0;
+  uint32_t buffers = 0, images = 0, texels = 0;
   for (auto b : this->Bindings_)
   {
-    (b == BindingType::StorageBuffer ? buffers : images)++;
+    (b == BindingType::StorageBuffer ? buffers : b == BindingType::UniformTexelBuffer ? texels : images)++;
   }
   std::vector<vk::DescriptorPoolSize> sizes;
+  if (texels)
+  {
+    sizes.push_back({ vk::DescriptorType::eUniformTexelBuffer, texels });
+  }
   if (buffers)
   {
     sizes.push_back({ vk::DescriptorType::eStorageBuffer, buffers });
@@ -160,6 +171,24 @@ DescriptorSet& DescriptorSet::Bind(uint32_t binding, const Buffer& buffer)
   w.descriptorCount = 1;
   w.descriptorType = vk::DescriptorType::eStorageBuffer;
   w.pBufferInfo = &info;
+  this->Context_->Device().updateDescriptorSets(w, {});
+  return *this;
+}
+
+DescriptorSet& DescriptorSet::BindTexels(uint32_t binding, const Buffer& buffer, vk::Format format)
+{
+  if (binding >= this->Bindings_.size() || this->Bindings_[binding] != BindingType::UniformTexelBuffer)
+  {
+    throw InputError("pipeline '" + this->PipelineName_ + "' has no texel buffer at binding " +
+      std::to_string(binding) + " (for '" + buffer.Name() + "')");
+  }
+  vk::BufferView view = buffer.TexelView(format);
+  vk::WriteDescriptorSet w;
+  w.dstSet = this->Set_;
+  w.dstBinding = binding;
+  w.descriptorCount = 1;
+  w.descriptorType = vk::DescriptorType::eUniformTexelBuffer;
+  w.pTexelBufferView = &view;
   this->Context_->Device().updateDescriptorSets(w, {});
   return *this;
 }

@@ -20,7 +20,9 @@ class Image3D;
 enum class BindingType
 {
   StorageBuffer,
-  StorageImage
+  StorageImage,
+  /** A Buffer read through its TexelView (GLSL: samplerBuffer / usamplerBuffer, texelFetch). */
+  UniformTexelBuffer
 };
 
 class VISSWEEPCORE_EXPORT ComputePipeline
@@ -65,6 +67,8 @@ public:
   DescriptorSet& operator=(const DescriptorSet&) = delete;
 
   DescriptorSet& Bind(uint32_t binding, const Buffer& buffer);
+  /** A buffer as uniform texel buffer of `format` texels. */
+  DescriptorSet& BindTexels(uint32_t binding, const Buffer& buffer, vk::Format format);
   DescriptorSet& Bind(uint32_t binding, const Image3D& image);
 
   vk::DescriptorSet Handle() const { return this->Set_; }
