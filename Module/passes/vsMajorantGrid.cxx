@@ -3,6 +3,7 @@
 #include "vsBuffer.h"
 #include "vsContext.h"
 #include "vsDeviceVolume.h"
+#include "vsEmptySpaceDistance.h"
 #include "vsError.h"
 #include "vsImage.h"
 #include "vsPipeline.h"
@@ -59,8 +60,11 @@ void MajorantGrid::UpdateRanges(const DeviceVolume& volume)
   if (bricks != this->Bricks_ || !this->Image_)
   {
     this->Image_.reset();
+    this->EmptyImage_.reset();
     this->Image_ = std::make_unique<Image3D>(this->Context_, bricks[0], bricks[1], bricks[2],
       vk::Format::eR32Sfloat, "majorant grid");
+    this->EmptyImage_ = std::make_unique<Image3D>(this->Context_, bricks[0], bricks[1], bricks[2],
+      vk::Format::eR32Sfloat, "empty-space distances");
     this->Bricks_ = bricks;
   }
   this->Majorants_.clear();
@@ -84,6 +88,8 @@ void MajorantGrid::UpdateMajorants(const TransferFunctionSamples& tf)
     }
   }
   this->Image_->Upload(this->Majorants_.data(), count * sizeof(float));
+  this->EmptyDistances_ = EmptySpaceDistance(this->Majorants_, this->Bricks_, kMaxEmptyDistance);
+  this->EmptyImage_->Upload(this->EmptyDistances_.data(), count * sizeof(float));
   ++this->MajorantUpdates_;
 }
 

@@ -5,6 +5,9 @@
 // ratio tracking use it as their majorant; sweeps and the brute force skip
 // samples in bricks whose majorant is 0 (empty space).
 //
+// With the majorants, how far empty space extends around every brick (vsEmptySpaceDistance.h),
+// for the render kernel to cross it in one step.
+//
 // Two steps so each change does only the work it needs: the scalar range of every
 // brick (a device pass over the voxels, on a data change) and the majorants from
 // those ranges and the transfer function (host, on a transfer-function change).
@@ -36,6 +39,11 @@ public:
   void UpdateMajorants(const TransferFunctionSamples& tf);
 
   const Image3D& Image() const { return *this->Image_; }
+  /** Per brick: 0 where the majorant is not 0, else the chessboard distance in bricks to the
+   *  nearest brick where it is not (EmptySpaceDistance, capped at kMaxEmptyDistance), r32f. */
+  const Image3D& EmptyDistanceImage() const { return *this->EmptyImage_; }
+  const std::vector<float>& EmptyDistances() const { return this->EmptyDistances_; }
+  static constexpr uint32_t kMaxEmptyDistance = 1u << 16;
   std::array<uint32_t, 3> Bricks() const { return this->Bricks_; }
   uint32_t BrickSize() const { return this->BrickSize_; }
   const std::vector<float>& Majorants() const { return this->Majorants_; }
@@ -55,6 +63,8 @@ private:
   std::vector<float> Ranges_; // min, max per brick
   std::vector<float> Majorants_;
   std::unique_ptr<Image3D> Image_;
+  std::vector<float> EmptyDistances_;
+  std::unique_ptr<Image3D> EmptyImage_;
   double LastSeconds_ = 0.0;
   uint64_t RangeUpdates_ = 0, MajorantUpdates_ = 0;
 };

@@ -66,7 +66,7 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   const uint32_t interpolation = uint32_t(params.tracking.w + 0.5f), cropping = params.crop.x != 0u ? 1u : 0u;
   const bool defensive = Defensive(params);
   const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping,
-    table ? 1u : 0u, defensive ? 1u : 0u };
+    table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u };
   auto& slot = this->Pipelines_[specialization];
   auto& pipeline = slot[format];
   if (!pipeline)
@@ -74,14 +74,15 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
     using B = BindingType;
     std::vector<B> bindings{ B::StorageImage, B::UniformTexelBuffer, B::StorageImage, B::StorageImage, B::StorageBuffer,
       B::UniformTexelBuffer, B::UniformTexelBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer,
-      B::StorageBuffer, B::StorageBuffer, B::UniformTexelBuffer };
+      B::StorageBuffer, B::StorageBuffer, B::UniformTexelBuffer, B::StorageImage };
     static const char* formats[] = { "r8 visibility", "r16 visibility", "r32f visibility",
       "r8 visibility, counting reads" };
     const std::string name = std::string("monte carlo (") + formats[format] + ", " + StrategyName(strategy) + ", " +
       (cellMode == shared::VS_CELL_STOCHASTIC ? "stochastic cell" : "trilinear cells") +
       (refine ? ", cell walk" : "") + (camera == shared::VS_CAMERA_RESERVOIR ? ", reservoir camera" : "") +
       (interpolation != 0u ? ", nearest" : "") + (cropping ? ", cropping regions" : "") +
-      (table ? ", direction table" : "") + (defensive ? ", defensive)" : ")");
+      (table ? ", direction table" : "") + (defensive ? ", defensive" : "") +
+      (this->EmptySpaceSkipping_ ? ")" : ", no empty-space skipping)");
     if (format == 3)
     {
       bindings.push_back(B::StorageBuffer);
@@ -248,7 +249,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     this->PipelineFor(useGrid ? grid : nullptr, params, NeedsCellWalk(majorants, params), table);
   DescriptorSet set(pipeline);
   set.Bind(0, volume.Image())
-    .BindTexels(1, tf.Lut(), vk::Format::eR32G32B32A32Sfloat)
+    .BindTexels(1, tf.Lut(), vk::Format::eR32Sfloat)
     .Bind(2, majorants.Image())
     .Bind(3, useGrid ? grid->Image() : *this->NoGrid_)
     .Bind(4, *this->Params_)
@@ -259,7 +260,8 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     .Bind(9, *this->Comp_)
     .Bind(10, *this->Squares_)
     .Bind(11, *this->Progress_)
-    .BindTexels(12, table ? this->Table_->Nodes() : *this->NoTable_, vk::Format::eR32Uint);
+    .BindTexels(12, table ? this->Table_->Nodes() : *this->NoTable_, vk::Format::eR32Uint)
+    .Bind(13, majorants.EmptyDistanceImage());
   if (this->CountLookups_)
   {
     if (!this->Lookups_)
@@ -267,7 +269,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
       this->Lookups_ = std::make_unique<Buffer>(this->Context_, 5 * sizeof(uint32_t), "read counters");
     }
     this->Lookups_->Fill(0u);
-    set.Bind(13, *this->Lookups_);
+    set.Bind(14, *this->Lookups_);
   }
   // Each dispatch brings every pixel towards a target count, SamplesPerDispatch more than the
   // last; a pixel the kernel's loop budget left short (mc_render.glsl) catches up in the next one.

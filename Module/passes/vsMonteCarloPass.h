@@ -65,6 +65,11 @@ public:
   /** Benchmarks: render with the instrumented kernel (mc_render_count.comp, r8 grids or none),
    *  which counts reads; same samples, slower. */
   void SetCountLookups(bool on) { this->CountLookups_ = on; }
+  /** Whether the trackers cross empty space (bricks of majorant 0) a cube of bricks at a time
+   *  (MajorantGrid::EmptyDistanceImage) or a brick at a time. The image is the same bit for bit;
+   *  on by default, off only to measure or test it. */
+  void SetEmptySpaceSkipping(bool on) { this->EmptySpaceSkipping_ = on; }
+  bool GetEmptySpaceSkipping() const { return this->EmptySpaceSkipping_; }
   /** Reads of the last counted Render: trilinear volume samples, majorant-brick loads, visibility texels. */
   std::array<uint64_t, 3> LastLookups() const { return this->LastLookups_; }
   /** Of the last counted Render: the tracking steps the lanes took over the steps their SIMD
@@ -127,6 +132,7 @@ private:
   std::map<std::vector<uint32_t>, std::array<std::shared_ptr<ComputePipeline>, 4>> Pipelines_;
   std::unique_ptr<Buffer> Lookups_;
   bool CountLookups_ = false;
+  bool EmptySpaceSkipping_ = true;
   uint32_t SamplesPerDispatch_ = 16;
   std::array<uint64_t, 3> LastLookups_{};
   double LastLaneOccupancy_ = 1.0;

@@ -47,6 +47,7 @@ layout(constant_id = 3) const uint VS_SPEC_CAMERA = 0u;    /* VS_CAMERA_*, = par
 layout(constant_id = 4) const uint VS_SPEC_INTERPOLATION = 0u; /* interpolation.h, = params.tracking.w */
 layout(constant_id = 5) const uint VS_SPEC_CROPPING = 0u;  /* 1: cropping regions (params.crop.x != 0) */
 layout(constant_id = 7) const uint VS_SPEC_DEFENSIVE = 0u; /* 1: TwoStep mixed with Environment sampling (P.mixture.x) */
+layout(constant_id = 8) const uint VS_SPEC_SKIP = 1u;      /* 1: empty space is crossed in one step (binding 13) */
 layout(constant_id = 6) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
                                                              table (binding 12), stochastic cell only */
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
@@ -67,6 +68,9 @@ layout(std430, binding = 10) buffer Squares { vec4 uSq[]; };
 layout(std430, binding = 11) buffer Progress { uint uCount[]; };
 /* The direction table (shared/direction_table.h): per cell, the shares of its map's quadtree nodes. */
 layout(binding = 12) uniform usamplerBuffer uTable; /* r32ui */
+/* Per majorant brick: 0, or (where its majorant is 0) the chessboard distance in bricks to the nearest
+ * brick whose majorant is not (vsEmptySpaceDistance.h). */
+layout(binding = 13, r32f) uniform readonly image3D uEmptyDistance;
 layout(push_constant) uniform Push { uint target; } pc;
 
 /* The instrumented variant (mc_render_count.comp) counts what a sample reads:
@@ -74,7 +78,7 @@ layout(push_constant) uniform Push { uint target; } pc;
  * and how busy the SIMD lanes are: [3] the tracking steps the lanes took, [4] the steps their
  * subgroups ran times the subgroup's size. */
 #ifdef VS_COUNT_LOOKUPS
-layout(std430, binding = 13) buffer Lookups { uint uLookups[]; };
+layout(std430, binding = 14) buffer Lookups { uint uLookups[]; };
 uvec3 gLookups = uvec3(0u);
 uint gLaneSteps = 0u, gGroupLaneSteps = 0u;
 #define VS_COUNT(i) (gLookups[i]++)
@@ -89,6 +93,21 @@ float vs_env_mip(uint index)
 
 #include "volume_access.glsl"
 #include "direction_map.glsl"
+
+/* Parameters the per-sample code reads, loaded once per invocation in main(): lavapipe loads a
+ * storage-buffer value inside code that not every lane runs with a scalar loop over the lanes
+ * (one masked load per lane), even at a uniform address (measured in its machine code). */
+float gEnvScale;    /* P.sampling2.y: the environment's intensity */
+float gEpsilon;     /* P.sampling2.x */
+float gSquareScale; /* P.sampling2.w */
+float gMixture;     /* P.mixture.x */
+uint gEnvLevels;    /* P.sampling.w */
+vec3 gBoxMin, gBoxMax, gCellSize;
+uvec4 gGrid;
+uvec4 gViewport;
+bool gBackgroundVisible;
+mat4 gWorldToIndex, gInvViewProj;
+vec4 gClipPlanes[VS_MAX_CLIP_PLANES == 8u ? 8 : -1]; /* main() copies 8 */
 
 /* Registers, loaded once per invocation (lavapipe does not hoist buffer loads). */
 ivec3 gDims;
@@ -126,7 +145,7 @@ uint gInterpolation; /* interpolation.h: the scalar's reconstruction (P.tracking
 vec3 env_radiance(vec3 w)
 {
   uvec2 t = vs_dir_to_texel(w, gEnvSize);
-  return texelFetch(uEnv, int(t.y * gEnvSize + t.x)).rgb * P.sampling2.y;
+  return texelFetch(uEnv, int(t.y * gEnvSize + t.x)).rgb * gEnvScale;
 }
 
 /* The environment seen directly (the background): bilinear between texels, so that it does not
@@ -141,7 +160,7 @@ vec3 env_radiance_display(vec3 w)
     uvec2 t = vs_octa_bilinear_texel(uv, gEnvSize, c, weight);
     sum += weight * texelFetch(uEnv, int(t.y * gEnvSize + t.x)).rgb;
   }
-  return sum * P.sampling2.y;
+  return sum * gEnvScale;
 }
 
 float brick_majorant(ivec3 b)
@@ -288,30 +307,78 @@ float refine_majorant(vec3 o, vec3 d, float t, inout float tNext, float mu)
   return min(m, mu);
 }
 
+/* Where the ray o + t d leaves the cube of bricks [b - r, b + r] (r >= 0 bricks; r = 0: brick b),
+ * at least the shortest step past t. */
+float brick_cube_exit(vec3 o, vec3 d, float t, ivec3 b, float r)
+{
+  float h = 2e-6 * max(abs(t), gRay.invLength);
+  vec3 p = o + t * d;
+  vec3 lo = (vec3(b) - r) * gBrickSize, hi = (vec3(b) + r + 1.0) * gBrickSize;
+  vec3 e3 = (mix(lo, hi, greaterThan(d, vec3(0.0))) - p) * gRay.invD;
+  e3 = mix(vec3(1e30), e3, greaterThan(abs(d), vec3(1e-20)));
+  return t + max(min(e3.x, min(e3.y, e3.z)), h);
+}
+
 /* The majorant segment of the ray from t: returns mu and sets tNext, with mu >= the extinction
- * on [t, tNext). One walk for delta tracking and ratio tracking, without loops. */
+ * on [t, tNext). One walk for delta tracking and ratio tracking, without loops. In an empty brick
+ * at distance k from the nearest non-empty one, the segment runs to the exit of the cube of
+ * (2k - 1)^3 empty bricks around it: one step across empty space instead of one per brick. */
 float majorant_segment(vec3 o, vec3 d, float t, float tEnd, out float tNext)
 {
   float tExit;
   ivec3 b = brick_at(o, d, t, tExit);
-  tNext = min(tExit, tEnd);
   float mu = brick_majorant(b);
+  if (VS_SPEC_SKIP != 0u && mu == 0.0 && all(greaterThanEqual(b, ivec3(0))) && all(lessThan(b, gBricks)))
+  {
+    float k = imageLoad(uEmptyDistance, b).r;
+    if (k > 1.0)
+      tExit = max(tExit, brick_cube_exit(o, d, t, b, k - 1.0));
+  }
+  tNext = min(tExit, tEnd);
   if (VS_SPEC_REFINE != 0u && mu * (tNext - t) > gRefineDepth)
     mu = refine_majorant(o, d, t, tNext, mu);
   return mu;
 }
 
-/* The ray interval inside the (cropped) box and the kept side of every clip plane. */
+/* The scalar at index-space point p (vs_sample), with the cropping test only in the pipelines that
+ * have cropping regions: lavapipe would run it at every step otherwise, whatever the flags. */
+float kernel_sample(vec3 p)
+{
+  if (VS_SPEC_CROPPING != 0u && vs_cropped_out(p))
+    return uintBitsToFloat(0x7fc00000u); /* NaN: empty space */
+  return VS_SPEC_INTERPOLATION == VS_INTERPOLATION_NEAREST ? vs_sample_nearest(p, gDims) : vs_sample_scalar(p, gDims);
+}
+
+/* The ray interval inside the (cropped) box and the kept side of every clip plane (vs_clip_planes'
+ * rule), reading the planes from the parameters in place: passed as an array argument, they were
+ * copied into every lane's registers under the lanes' mask at every call (~2,000 instructions per
+ * shadow ray on lavapipe, measured in its machine code). */
 vec2 ray_interval(vec3 o, vec3 d)
 {
-  return vs_clip_planes(o, d, vs_intersect_box(o, d, P.boxMin.xyz, P.boxMax.xyz), P.clipPlanes, gClipCount);
+  vec2 t = vs_intersect_box(o, d, gBoxMin, gBoxMax);
+  for (uint i = 0u; i < gClipCount; ++i)
+  {
+    vec4 plane = gClipPlanes[i];
+    float dn = dot(plane.xyz, d);
+    float on = dot(plane.xyz, o) + plane.w;
+    if (abs(dn) < 1e-20)
+    {
+      if (on < 0.0)
+        t = vec2(1.0, 0.0);
+    }
+    else if (dn > 0.0)
+      t.x = max(t.x, -on / dn);
+    else
+      t.y = min(t.y, -on / dn);
+  }
+  return t;
 }
 
 /* The cell one corner of the 8 around index-space point x, picked with its trilinear weight. */
 uvec3 stochastic_cell(vec3 x, inout VsRng rng)
 {
-  uvec3 cells = P.grid.xyz;
-  vec3 c = clamp((x - P.boxMin.xyz) / P.cellSize.xyz - 0.5, vec3(0.0), vec3(cells - 1u));
+  uvec3 cells = gGrid.xyz;
+  vec3 c = clamp((x - gBoxMin) / gCellSize - 0.5, vec3(0.0), vec3(cells - 1u));
   uvec3 c0 = uvec3(floor(c));
   uvec3 c1 = min(c0 + 1u, cells - 1u);
   vec3 f = c - vec3(c0);
@@ -323,14 +390,14 @@ uvec3 stochastic_cell(vec3 x, inout VsRng rng)
  * pyramid: one cell's map (stochastic cell), or the maps of the 8 cells around x interpolated. */
 void direction_values(vec3 x, uint strategy, uint D, inout VsRng rng)
 {
-  uvec3 cells = P.grid.xyz;
-  vec3 c = (x - P.boxMin.xyz) / P.cellSize.xyz - 0.5;
+  uvec3 cells = gGrid.xyz;
+  vec3 c = (x - gBoxMin) / gCellSize - 0.5;
   c = clamp(c, vec3(0.0), vec3(cells - 1u));
   uvec3 c0 = uvec3(floor(c));
   uvec3 c1 = min(c0 + 1u, cells - 1u);
   vec3 f = c - vec3(c0);
   uint DD = D * D;
-  float epsilon = P.sampling2.x;
+  float epsilon = gEpsilon;
   if (VS_SPEC_CELL_MODE == VS_CELL_STOCHASTIC)
   {
     cell_map(stochastic_cell(x, rng), strategy, D, epsilon);
@@ -358,13 +425,13 @@ void direction_values(vec3 x, uint strategy, uint D, inout VsRng rng)
  * the stochastic cell's table, or the map built here. */
 void prepare_directions(vec3 x, uint strategy, inout VsRng rng)
 {
-  uint D = P.grid.w;
+  uint D = gGrid.w;
   if (strategy == VS_STRATEGY_ENVIRONMENT || strategy == VS_STRATEGY_UNIFORM || D == 0u)
     return;
   if (VS_SPEC_TABLE != 0u)
   {
     uvec3 cell = stochastic_cell(x, rng);
-    gTableBase = 2u * vs_table_nodes(D) * ((cell.z * P.grid.y + cell.y) * P.grid.x + cell.x);
+    gTableBase = 2u * vs_table_nodes(D) * ((cell.z * gGrid.y + cell.y) * gGrid.x + cell.x);
   }
   else
     direction_values(x, strategy, D, rng);
@@ -373,15 +440,15 @@ void prepare_directions(vec3 x, uint strategy, inout VsRng rng)
 /* A direction from the strategy (after prepare_directions at the scatter point) and its pdf. */
 vec3 sample_direction(uint strategy, inout VsRng rng, out float pdf)
 {
-  uint K = P.sampling.w;
-  uint D = P.grid.w;
+  uint K = gEnvLevels;
+  uint D = gGrid.w;
   if (strategy == VS_STRATEGY_ENVIRONMENT)
     return vs_sample_environment(K, vs_rng_vec2(rng), pdf);
   if (strategy == VS_STRATEGY_UNIFORM || D == 0u)
     return vs_sample_uniform(vs_rng_vec2(rng), pdf);
   if (VS_SPEC_DEFENSIVE != 0u && strategy == VS_STRATEGY_TWO_STEP)
   {
-    float alpha = P.mixture.x;
+    float alpha = gMixture;
     if (VS_SPEC_TABLE != 0u)
       return vs_sample_defensive_table(gTableBase, D, K, alpha, vs_rng_vec2(rng), pdf);
     return vs_sample_defensive_pyramid(D, K, alpha, vs_rng_vec2(rng), pdf);
@@ -395,14 +462,18 @@ vec3 sample_direction(uint strategy, inout VsRng rng, out float pdf)
 
 
 /* Delta tracking on [t0, t1): true at a real collision (tHit, its albedo). Distances inside a
- * segment count from its start, so steps far below the resolution of t still add up. */
+ * segment count from its start, so steps far below the resolution of t still add up. The loops
+ * only find the collision; its albedo is looked up once after them (lavapipe would run a lookup
+ * inside the loop at every step, masked). */
 bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, inout uint cost, out float tHit,
   out vec3 albedo)
 {
   set_ray(d);
   float t = t0;
   uint steps = 0u;
-  while (t < t1)
+  bool hit = false;
+  float sHit = 0.0;
+  while (t < t1 && !hit)
   {
     float tNext;
     float mu = majorant_segment(o, d, t, t1, tNext);
@@ -420,20 +491,21 @@ bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, 
         if (dt >= h)
           break;
         VS_COUNT(0);
-        vec4 c = vs_classify(vs_sample(o + (t + dt) * d, gDims, gInterpolation), gTF);
-        if (u.y * mu < c.w || ++steps >= cap)
+        float s = kernel_sample(o + (t + dt) * d);
+        if (u.y * mu < vs_classify_extinction(s, gTF) || ++steps >= cap)
         {
           tHit = t + dt;
-          albedo = c.rgb;
-          cost += steps;
-          return true;
+          sHit = s;
+          hit = true;
+          break;
         }
       }
     }
     t = tNext;
   }
   cost += steps;
-  return false;
+  albedo = hit ? vs_classify(sHit, gTF).rgb : vec3(0.0);
+  return hit;
 }
 
 /* Ratio tracking of the transmittance on [t0, t1), with Russian roulette once it is small. */
@@ -459,7 +531,7 @@ float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap,
         if (dt >= h)
           break;
         VS_COUNT(0);
-        float sigma = vs_classify(vs_sample(o + (t + dt) * d, gDims, gInterpolation), gTF).w;
+        float sigma = vs_classify_extinction(kernel_sample(o + (t + dt) * d), gTF);
         T *= max(0.0, 1.0 - sigma / mu);
         if (++steps >= cap)
         {
@@ -519,7 +591,7 @@ void camera_reservoir(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint 
         if (dt >= h)
           break;
         VS_COUNT(0);
-        vec4 c = vs_classify(vs_sample(o + (t + dt) * d, gDims, gInterpolation), gTF);
+        vec4 c = vs_classify(kernel_sample(o + (t + dt) * d), gTF);
         vec3 ws = T * c.rgb * (c.w / mu);
         float si = dot(ws, vec3(0.2126, 0.7152, 0.0722));
         if (si > 0.0)
@@ -603,7 +675,7 @@ void accumulate(inout Accumulator acc, vec4 v)
   acc.sum = t;
   /* Squares of the radiance scaled to the environment's brightest texel: radiance below ~1e-19
    * (a dim map in physical units) would square to 0 in float and report no variance. */
-  float scale = P.sampling2.w > 0.0 ? P.sampling2.w : 1.0;
+  float scale = gSquareScale > 0.0 ? gSquareScale : 1.0;
   vec4 w = v * vec4(scale, scale, scale, 1.0);
   acc.sq += w * w;
 }
@@ -615,27 +687,27 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPer
   inout uint shadowCost, out bool scattered)
 {
   scattered = false;
-  uint W = P.viewport.x, H = P.viewport.y;
-  VsRng rng = vs_rng_init(pix, sampleIndex, P.viewport.w);
+  uint W = gViewport.x, H = gViewport.y;
+  VsRng rng = vs_rng_init(pix, sampleIndex, gViewport.w);
   vec2 jitter = vs_rng_vec2(rng);
   vec2 ndc = (vec2(pix) + jitter) / vec2(W, H) * 2.0 - 1.0;
-  vec4 pn = P.invViewProj * vec4(ndc, -1.0, 1.0);
-  vec4 pf = P.invViewProj * vec4(ndc, 1.0, 1.0);
+  vec4 pn = gInvViewProj * vec4(ndc, -1.0, 1.0);
+  vec4 pf = gInvViewProj * vec4(ndc, 1.0, 1.0);
   vec3 ow = pn.xyz / pn.w;
   vec3 dw = normalize(pf.xyz / pf.w - ow);
   float tDepth = 1e30;
   if (depth < 1.0)
   {
-    vec4 pd = P.invViewProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
+    vec4 pd = gInvViewProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
     tDepth = dot(pd.xyz / pd.w - ow, dw);
   }
-  vec3 o = (P.worldToIndex * vec4(ow, 1.0)).xyz;
-  vec3 d = (P.worldToIndex * vec4(dw, 0.0)).xyz;
+  vec3 o = (gWorldToIndex * vec4(ow, 1.0)).xyz;
+  vec3 d = (gWorldToIndex * vec4(dw, 0.0)).xyz;
   vec2 ti = ray_interval(o, d);
   float t0 = max(ti.x, 0.0), t1 = min(ti.y, tDepth);
 
   vec4 result = vec4(0.0);
-  bool seesEnvironment = tDepth >= 1e30 && P.background.w > 0.5;
+  bool seesEnvironment = tDepth >= 1e30 && gBackgroundVisible;
   /* The scatter point, and the factor its in-scattered light is scored with (albedo for delta
    * tracking's collision; the reservoir's weight otherwise). */
   bool scatter = false;
@@ -674,7 +746,7 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPer
       uint steps = 0u;
       if (any(greaterThan(Le, vec3(0.0))))
       {
-        vec3 di = (P.worldToIndex * vec4(w, 0.0)).xyz;
+        vec3 di = (gWorldToIndex * vec4(w, 0.0)).xyz;
         vec2 ts = ray_interval(x, di);
         float T = ratio_track(x, di, 0.0, ts.y, rng, VS_TRACKING_CAP, steps);
         sum += T * Le / pdf;
@@ -695,6 +767,29 @@ void main()
   uvec2 pix = gl_GlobalInvocationID.xy;
   uint W = P.viewport.x, H = P.viewport.y;
   bool inside = pix.x < W && pix.y < H;
+  gEnvScale = P.sampling2.y;
+  gEpsilon = P.sampling2.x;
+  gSquareScale = P.sampling2.w;
+  gMixture = P.mixture.x;
+  gEnvLevels = P.sampling.w;
+  gBoxMin = P.boxMin.xyz;
+  gBoxMax = P.boxMax.xyz;
+  gCellSize = P.cellSize.xyz;
+  gGrid = P.grid;
+  gViewport = P.viewport;
+  gBackgroundVisible = P.background.w > 0.5;
+  gWorldToIndex = P.worldToIndex;
+  gInvViewProj = P.invViewProj;
+  /* Unrolled (the kernel's loops count against lavapipe's loop limiter, see the top): as many as
+   * VS_MAX_CLIP_PLANES (gClipPlanes' size would not compile otherwise). */
+  gClipPlanes[0] = P.clipPlanes[0];
+  gClipPlanes[1] = P.clipPlanes[1];
+  gClipPlanes[2] = P.clipPlanes[2];
+  gClipPlanes[3] = P.clipPlanes[3];
+  gClipPlanes[4] = P.clipPlanes[4];
+  gClipPlanes[5] = P.clipPlanes[5];
+  gClipPlanes[6] = P.clipPlanes[6];
+  gClipPlanes[7] = P.clipPlanes[7];
   gDims = ivec3(P.dims.xyz);
   gBricks = ivec3(P.bricks.xyz);
   gBrickSize = P.sampling2.z;

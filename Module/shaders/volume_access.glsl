@@ -3,10 +3,11 @@
  * The including shader declares, before including this file:
  *   layout(binding = VS_BINDING_VOLUME, r32f) uniform readonly image3D uVolume;
  *   layout(std430, binding = VS_BINDING_TF) readonly buffer TransferFunction { vec4 uTF[]; };
- * or, with VS_TF_TEXELS defined, the same table as a texel buffer (rgba32f texels):
+ * or, with VS_TF_TEXELS defined, the same table as a texel buffer of its floats (r32f texels):
  *   layout(binding = VS_BINDING_TF) uniform samplerBuffer uTF;
- * (lavapipe loads a texel buffer at per-lane indices with one gather, a storage buffer with a
- * scalar loop over the SIMD lanes: the render kernel classifies at every tracking step).
+ * (lavapipe loads an r32f texel buffer at per-lane indices with one vector gather per float, a
+ * storage buffer with a scalar loop over the SIMD lanes: the render kernel classifies at every
+ * tracking step, and its null-collision tests need only the extinction, one float of four).
  * Non-finite voxels are stored as NaN; any interpolated NaN classifies to zero
  * extinction and zero albedo (NaN/Inf voxels are empty space).
  */
@@ -75,11 +76,21 @@ float vs_sample(vec3 p, ivec3 dims, uint interpolation)
   return interpolation == VS_INTERPOLATION_NEAREST ? vs_sample_nearest(p, dims) : vs_sample_scalar(p, dims);
 }
 
-/* Entry i of the transfer-function table. */
+/* Float f of the transfer-function table (entry f / 4, channel f % 4; the range-max levels follow). */
+float vs_tf_float(int f)
+{
+#ifdef VS_TF_TEXELS
+  return texelFetch(uTF, f).r;
+#else
+  return uTF[f >> 2][f & 3];
+#endif
+}
+
+/* Entry i of the transfer-function table: (albedo rgb, extinction). */
 vec4 vs_tf_entry(int i)
 {
 #ifdef VS_TF_TEXELS
-  return texelFetch(uTF, i);
+  return vec4(vs_tf_float(4 * i), vs_tf_float(4 * i + 1), vs_tf_float(4 * i + 2), vs_tf_float(4 * i + 3));
 #else
   return uTF[i];
 #endif
@@ -97,15 +108,26 @@ vec4 vs_classify(float s, vec4 tf)
   return mix(vs_tf_entry(i0), vs_tf_entry(i1), x - float(i0));
 }
 
+/* The extinction of scalar s alone: vs_classify(s, tf).w, bit for bit, reading 2 of its 8 floats. */
+float vs_classify_extinction(float s, vec4 tf)
+{
+  if (isnan(s))
+    return 0.0;
+  float x = clamp((s - tf.x) * tf.y, 0.0, tf.z - 1.0);
+  int i0 = int(floor(x));
+  int i1 = min(i0 + 1, int(tf.z) - 1);
+  return mix(vs_tf_float(4 * i0 + 3), vs_tf_float(4 * i1 + 3), x - float(i0));
+}
+
 /* Extinction entry i of level k of the range-maximum table (vsTransferFunctionTable.h): level 0 is
  * the LUT's w, levels 1.. follow the LUT, 4 floats per vec4. */
 float vs_tf_level_max(int level, int i, vec4 tf)
 {
   if (level == 0)
-    return vs_tf_entry(i).w;
+    return vs_tf_float(4 * i + 3);
   int n = int(tf.z);
   int f = 4 * n + (level - 1) * n + i;
-  return vs_tf_entry(f >> 2)[f & 3];
+  return vs_tf_float(f);
 }
 
 /* The largest extinction vs_classify gives any scalar in [s0, s1], s0 <= s1: two reads of the
@@ -168,8 +190,10 @@ float vs_nearest_max_extinction(vec3 f0, vec3 f1, vec4 c0, vec4 c1, vec4 tf)
   low = bvec3(uvec3(low) | uvec3(neither));
   high = bvec3(uvec3(high) | uvec3(neither));
   /* The 8 corners, unrolled (lavapipe's loop limiter counts every back-edge of the render kernel). */
-  vec4 e0 = vec4(vs_classify(c0.x, tf).w, vs_classify(c0.y, tf).w, vs_classify(c0.z, tf).w, vs_classify(c0.w, tf).w);
-  vec4 e1 = vec4(vs_classify(c1.x, tf).w, vs_classify(c1.y, tf).w, vs_classify(c1.z, tf).w, vs_classify(c1.w, tf).w);
+  vec4 e0 = vec4(vs_classify_extinction(c0.x, tf), vs_classify_extinction(c0.y, tf), vs_classify_extinction(c0.z, tf),
+    vs_classify_extinction(c0.w, tf));
+  vec4 e1 = vec4(vs_classify_extinction(c1.x, tf), vs_classify_extinction(c1.y, tf), vs_classify_extinction(c1.z, tf),
+    vs_classify_extinction(c1.w, tf));
   /* Corner (x, y) of a z layer is read when its half is reached along x and y. */
   vec4 xy = vec4(low.x && low.y, high.x && low.y, low.x && high.y, high.x && high.y);
   vec4 m = max(e0 * xy * float(low.z), e1 * xy * float(high.z));

@@ -10,6 +10,7 @@
 #include "vsEnvironmentMap.h"
 #include "vsMonteCarloPass.h"
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -76,6 +77,8 @@ struct RenderScene : VisibilityScene
   {
     vs::MonteCarloPass pass(this->Context);
     pass.SetDirectionTable(this->DirectionTable);
+    pass.SetEmptySpaceSkipping(this->EmptySpaceSkipping);
+    pass.SetCountLookups(this->CountLookups);
     pass.Reset(p.viewport.x, p.viewport.y);
     for (int f = 0; f < frames; ++f)
     {
@@ -83,12 +86,18 @@ struct RenderScene : VisibilityScene
     }
     this->LastSamples = pass.Samples();
     this->LastUsedDirectionTable = pass.LastUsedDirectionTable();
+    this->LastLookups = pass.LastLookups();
     return { pass.Mean(), pass.Variance() };
   }
   uint32_t LastSamples = 0;
   /** Whether Render lets the grid strategies read the cells' direction table (the pass's default). */
   bool DirectionTable = true;
   bool LastUsedDirectionTable = false;
+  /** Whether the trackers cross empty space a cube of bricks at a time (the pass's default). */
+  bool EmptySpaceSkipping = true;
+  /** Whether Render uses the counting kernel; LastLookups are its counts of the last frame. */
+  bool CountLookups = false;
+  std::array<uint64_t, 3> LastLookups{};
 };
 
 // Two independent renders of the same expectation, pixel by pixel: the sum of z^2 over the pixels
