@@ -425,7 +425,7 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     }
     if (!I.PrewarmStarted && this->RenderMode == MonteCarlo && !projection && vol && vol->GetProperty())
     {
-      this->StartPrewarm(vol->GetProperty());
+      this->StartPrewarm(vol->GetProperty(), scalars);
     }
     this->DirectionsUpdatedLastFrame = 0;
     this->LastFrameSweepSeconds = 0.0;
@@ -686,7 +686,7 @@ std::vector<float> vtkVisibilitySweepVolumeMapper::EmissionAbsorptionImage(vtkRe
   return rgba;
 }
 
-void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkVolumeProperty* property)
+void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkVolumeProperty* property, vtkDataArray* scalars)
 {
   Internals& I = *this->Impl;
   I.PrewarmStarted = true;
@@ -706,9 +706,20 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkVolumeProperty* property)
   // A pass of its own: the pipeline lands in the context's cache, where the view's pass finds it
   // (waiting for it if the render gets there first); the view's passes come and go (SwitchView).
   const bool table = this->DirectionTable;
-  I.Prewarm = std::async(std::launch::async, [context = I.Context, p, table]() {
+  // Whether the device volume will be integer-coded (vsDeviceVolume.h quads): integer scalars of one
+  // component spanning at most 255 (the upload decides; a wrong guess only wastes this thread's work).
+  bool quads = false;
+  if (scalars && scalars->GetNumberOfComponents() == 1 && scalars->GetDataType() != VTK_FLOAT &&
+    scalars->GetDataType() != VTK_DOUBLE &&
+    uint64_t(scalars->GetNumberOfTuples()) * 4 <= vs::DeviceVolume::kMaxQuadBytes)
+  {
+    double range[2];
+    scalars->GetRange(range, 0);
+    quads = range[1] - range[0] <= 255.0;
+  }
+  I.Prewarm = std::async(std::launch::async, [context = I.Context, p, table, quads]() {
     vs::MonteCarloPass pass(context);
-    pass.Prewarm(p, table);
+    pass.Prewarm(p, table, quads);
   });
 }
 

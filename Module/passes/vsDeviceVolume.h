@@ -1,6 +1,13 @@
 // vsDeviceVolume.h — a scalar volume on the device: an R32F 3D storage image,
 // uploaded once per change of the data. Non-finite voxels (NaN, +-Inf) are
 // stored as NaN, which classifies to empty space; their count is reported.
+//
+// An integer-coded volume (every voxel finite and an integer at most 255 above the smallest, as
+// 8-bit MRI and segmentations are) is also kept as quads: an R32UI image whose texel (x, y, z)
+// packs the 8-bit codes (value - QuadOffset) of voxels (x, y), (x + 1, y), (x, y + 1),
+// (x + 1, y + 1) of slice z (neighbours clamped to the volume), so that the render kernel reads a
+// trilinear footprint in 2 vector gathers instead of 8 (lavapipe gathers 32-bit texels, and loads
+// 8-bit ones lane by lane). The scalars the two give are the same floats.
 #ifndef vsDeviceVolume_h
 #define vsDeviceVolume_h
 
@@ -24,6 +31,12 @@ public:
   ~DeviceVolume();
 
   const Image3D& Image() const { return *this->Image_; }
+  /** The quads of an integer-coded volume, or nullptr (float data, or quads over kMaxQuadBytes). */
+  const Image3D* Quads() const { return this->Quads_.get(); }
+  /** The value of code 0 in the quads. */
+  float QuadOffset() const { return this->QuadOffset_; }
+  /** The largest quad image made (it doubles the volume's device memory). */
+  static constexpr uint64_t kMaxQuadBytes = 512ull << 20;
   std::array<uint32_t, 3> Dims() const { return this->Dims_; }
   uint64_t NonFiniteCount() const { return this->NonFinite_; }
   /** The range of the finite voxels ([0,0] when none is finite). */
@@ -35,6 +48,8 @@ public:
 private:
   std::array<uint32_t, 3> Dims_;
   std::unique_ptr<Image3D> Image_;
+  std::unique_ptr<Image3D> Quads_;
+  float QuadOffset_ = 0.0f;
   uint64_t NonFinite_ = 0;
   std::array<float, 2> Range_{ { 0.0f, 0.0f } };
 };

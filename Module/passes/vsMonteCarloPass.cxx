@@ -42,7 +42,7 @@ const char* StrategyName(uint32_t s)
 }
 
 const ComputePipeline& MonteCarloPass::PipelineFor(
-  const VisibilityGrid* grid, const shared::VsRenderParams& params, bool refine, bool table)
+  const VisibilityGrid* grid, const shared::VsRenderParams& params, bool refine, bool table, bool quads)
 {
   vk::Format f = grid && grid->Valid() ? grid->Image().Format() : vk::Format::eR8Unorm;
   int format = f == vk::Format::eR8Unorm ? 0 : f == vk::Format::eR16Unorm ? 1 : 2;
@@ -66,7 +66,7 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   const uint32_t interpolation = uint32_t(params.tracking.w + 0.5f), cropping = params.crop.x != 0u ? 1u : 0u;
   const bool defensive = Defensive(params);
   const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping,
-    table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u };
+    table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u, quads ? 1u : 0u };
   auto& slot = this->Pipelines_[specialization];
   auto& pipeline = slot[format];
   if (!pipeline)
@@ -74,7 +74,8 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
     using B = BindingType;
     std::vector<B> bindings{ B::StorageImage, B::UniformTexelBuffer, B::StorageImage, B::StorageImage, B::StorageBuffer,
       B::UniformTexelBuffer, B::UniformTexelBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer,
-      B::StorageBuffer, B::StorageBuffer, B::UniformTexelBuffer, B::StorageImage };
+      B::StorageBuffer, B::StorageBuffer, B::UniformTexelBuffer, B::StorageImage, B::StorageBuffer,
+      B::StorageImage };
     static const char* formats[] = { "r8 visibility", "r16 visibility", "r32f visibility",
       "r8 visibility, counting reads" };
     const std::string name = std::string("monte carlo (") + formats[format] + ", " + StrategyName(strategy) + ", " +
@@ -82,10 +83,9 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
       (refine ? ", cell walk" : "") + (camera == shared::VS_CAMERA_RESERVOIR ? ", reservoir camera" : "") +
       (interpolation != 0u ? ", nearest" : "") + (cropping ? ", cropping regions" : "") +
       (table ? ", direction table" : "") + (defensive ? ", defensive" : "") +
-      (this->EmptySpaceSkipping_ ? ")" : ", no empty-space skipping)");
+      (this->EmptySpaceSkipping_ ? "" : ", no empty-space skipping") + (quads ? ", 8-bit quads)" : ")");
     if (format == 3)
     {
-      bindings.push_back(B::StorageBuffer);
       pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_mc_render_count), bindings, sizeof(uint32_t), name,
         specialization);
     }
@@ -102,9 +102,9 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   return *pipeline;
 }
 
-void MonteCarloPass::Prewarm(const shared::VsRenderParams& params, bool table)
+void MonteCarloPass::Prewarm(const shared::VsRenderParams& params, bool table, bool quads)
 {
-  this->PipelineFor(nullptr, params, false, table && params.sampling.x > shared::VS_STRATEGY_ENVIRONMENT);
+  this->PipelineFor(nullptr, params, false, table && params.sampling.x > shared::VS_STRATEGY_ENVIRONMENT, quads);
 }
 
 bool MonteCarloPass::Defensive(const shared::VsRenderParams& params)
@@ -199,6 +199,9 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     }
   }
   params.viewport.z = this->Samples_;
+  const bool quads = this->VolumeQuads_ && volume.Quads() && uint32_t(params.tracking.w + 0.5f) == 0u;
+  params.dims.w = quads ? volume.QuadOffset() : 0.0f;
+  this->LastUsedQuads_ = quads;
   if (!this->Params_)
   {
     this->Params_ = std::make_unique<Buffer>(this->Context_, sizeof(params), "render parameters");
@@ -246,7 +249,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     this->NoTable_ = std::make_unique<Buffer>(this->Context_, 16, "no direction table");
   }
   const ComputePipeline& pipeline =
-    this->PipelineFor(useGrid ? grid : nullptr, params, NeedsCellWalk(majorants, params), table);
+    this->PipelineFor(useGrid ? grid : nullptr, params, NeedsCellWalk(majorants, params), table, quads);
   DescriptorSet set(pipeline);
   set.Bind(0, volume.Image())
     .BindTexels(1, tf.Lut(), vk::Format::eR32Sfloat)
@@ -262,6 +265,11 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     .Bind(11, *this->Progress_)
     .BindTexels(12, table ? this->Table_->Nodes() : *this->NoTable_, vk::Format::eR32Uint)
     .Bind(13, majorants.EmptyDistanceImage());
+  if (!quads && !this->NoQuads_)
+  {
+    this->NoQuads_ = std::make_unique<Image3D>(this->Context_, 1, 1, 1, vk::Format::eR32Uint, "no volume quads");
+  }
+  set.Bind(15, quads ? *volume.Quads() : *this->NoQuads_);
   if (this->CountLookups_)
   {
     if (!this->Lookups_)

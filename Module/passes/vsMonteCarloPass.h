@@ -48,7 +48,7 @@ public:
    *  lavapipe) can run on another thread while the caller prepares the scene. The caller must not
    *  use this pass on another thread meanwhile. Exceptions are the caller's to take or drop: the
    *  Render that needs the pipeline reports the same error. */
-  void Prewarm(const shared::VsRenderParams& params, bool table);
+  void Prewarm(const shared::VsRenderParams& params, bool table, bool quads = false);
 
   /** Per pixel (rgb, alpha) means, rows bottom-up. */
   std::vector<float> Mean() const;
@@ -69,6 +69,12 @@ public:
    *  (MajorantGrid::EmptyDistanceImage) or a brick at a time. The image is the same bit for bit;
    *  on by default, off only to measure or test it. */
   void SetEmptySpaceSkipping(bool on) { this->EmptySpaceSkipping_ = on; }
+  /** Whether trilinear samples read an integer-coded volume's 8-bit quads (DeviceVolume::Quads,
+   *  2 texel reads instead of 8; the same floats) where it has them. On by default. */
+  void SetVolumeQuads(bool on) { this->VolumeQuads_ = on; }
+  bool GetVolumeQuads() const { return this->VolumeQuads_; }
+  /** Whether the last Render read the volume's quads. */
+  bool LastUsedVolumeQuads() const { return this->LastUsedQuads_; }
   bool GetEmptySpaceSkipping() const { return this->EmptySpaceSkipping_; }
   /** Reads of the last counted Render: trilinear volume samples, majorant-brick loads, visibility texels. */
   std::array<uint64_t, 3> LastLookups() const { return this->LastLookups_; }
@@ -120,7 +126,7 @@ public:
 
 private:
   const ComputePipeline& PipelineFor(
-    const VisibilityGrid* grid, const shared::VsRenderParams& params, bool refine, bool table);
+    const VisibilityGrid* grid, const shared::VsRenderParams& params, bool refine, bool table, bool quads);
   /** Whether params ask for TwoStep's defensive mixture (render_params.h mixture.x > 0). */
   static bool Defensive(const shared::VsRenderParams& params);
   /** Whether some majorant segment may reach the tracking's refinement depth (mc_render.glsl's
@@ -133,6 +139,9 @@ private:
   std::unique_ptr<Buffer> Lookups_;
   bool CountLookups_ = false;
   bool EmptySpaceSkipping_ = true;
+  bool VolumeQuads_ = true;
+  bool LastUsedQuads_ = false;
+  std::unique_ptr<Image3D> NoQuads_;
   uint32_t SamplesPerDispatch_ = 16;
   std::array<uint64_t, 3> LastLookups_{};
   double LastLaneOccupancy_ = 1.0;

@@ -48,6 +48,8 @@ layout(constant_id = 4) const uint VS_SPEC_INTERPOLATION = 0u; /* interpolation.
 layout(constant_id = 5) const uint VS_SPEC_CROPPING = 0u;  /* 1: cropping regions (params.crop.x != 0) */
 layout(constant_id = 7) const uint VS_SPEC_DEFENSIVE = 0u; /* 1: TwoStep mixed with Environment sampling (P.mixture.x) */
 layout(constant_id = 8) const uint VS_SPEC_SKIP = 1u;      /* 1: empty space is crossed in one step (binding 13) */
+layout(constant_id = 9) const uint VS_SPEC_QUADS = 0u;     /* 1: trilinear samples read the volume's 8-bit quads
+                                                             (binding 15, vsDeviceVolume.h) */
 layout(constant_id = 6) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
                                                              table (binding 12), stochastic cell only */
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
@@ -71,6 +73,9 @@ layout(binding = 12) uniform usamplerBuffer uTable; /* r32ui */
 /* Per majorant brick: 0, or (where its majorant is 0) the chessboard distance in bricks to the nearest
  * brick whose majorant is not (vsEmptySpaceDistance.h). */
 layout(binding = 13, r32f) uniform readonly image3D uEmptyDistance;
+/* An integer-coded volume's quads: texel (x, y, z) packs the 8-bit codes of voxels (x, y), (x + 1, y),
+ * (x, y + 1), (x + 1, y + 1) of slice z; the scalar is code + P.dims.w. */
+layout(binding = 15, r32ui) uniform readonly uimage3D uQuads;
 layout(push_constant) uniform Push { uint target; } pc;
 
 /* The instrumented variant (mc_render_count.comp) counts what a sample reads:
@@ -78,7 +83,7 @@ layout(push_constant) uniform Push { uint target; } pc;
  * and how busy the SIMD lanes are: [3] the tracking steps the lanes took, [4] the steps their
  * subgroups ran times the subgroup's size. */
 #ifdef VS_COUNT_LOOKUPS
-layout(std430, binding = 14) buffer Lookups { uint uLookups[]; };
+layout(std430, binding = 14) buffer Lookups { uint uLookups[]; };  /* binding 15: uQuads */
 uvec3 gLookups = uvec3(0u);
 uint gLaneSteps = 0u, gGroupLaneSteps = 0u;
 #define VS_COUNT(i) (gLookups[i]++)
@@ -340,13 +345,40 @@ float majorant_segment(vec3 o, vec3 d, float t, float tEnd, out float tNext)
   return mu;
 }
 
+float gQuadOffset; /* P.dims.w: the scalar of code 0 in the quads */
+
+/* The 4 scalars of a quad texel: (x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1). */
+vec4 quad_scalars(uint q)
+{
+  return vec4(float(q & 0xffu), float((q >> 8u) & 0xffu), float((q >> 16u) & 0xffu), float(q >> 24u)) + gQuadOffset;
+}
+
+/* vs_sample_scalar from the quads: the same corners (integers, exact in float) mixed in the same
+ * order, so the same float, from 2 texel reads instead of 8. */
+float quad_trilinear(vec3 p)
+{
+  vec3 q = clamp(p, vec3(0.0), vec3(gDims - 1));
+  ivec3 i0 = ivec3(floor(q));
+  int z1 = min(i0.z + 1, gDims.z - 1);
+  vec3 f = q - vec3(i0);
+  vec4 a = quad_scalars(imageLoad(uQuads, i0).r);
+  vec4 b = quad_scalars(imageLoad(uQuads, ivec3(i0.xy, z1)).r);
+  float c00 = mix(a.x, a.y, f.x);
+  float c10 = mix(a.z, a.w, f.x);
+  float c01 = mix(b.x, b.y, f.x);
+  float c11 = mix(b.z, b.w, f.x);
+  return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
+}
+
 /* The scalar at index-space point p (vs_sample), with the cropping test only in the pipelines that
  * have cropping regions: lavapipe would run it at every step otherwise, whatever the flags. */
 float kernel_sample(vec3 p)
 {
   if (VS_SPEC_CROPPING != 0u && vs_cropped_out(p))
     return uintBitsToFloat(0x7fc00000u); /* NaN: empty space */
-  return VS_SPEC_INTERPOLATION == VS_INTERPOLATION_NEAREST ? vs_sample_nearest(p, gDims) : vs_sample_scalar(p, gDims);
+  if (VS_SPEC_INTERPOLATION == VS_INTERPOLATION_NEAREST)
+    return vs_sample_nearest(p, gDims);
+  return VS_SPEC_QUADS != 0u ? quad_trilinear(p) : vs_sample_scalar(p, gDims);
 }
 
 /* The ray interval inside the (cropped) box and the kept side of every clip plane (vs_clip_planes'
@@ -791,6 +823,7 @@ void main()
   gClipPlanes[6] = P.clipPlanes[6];
   gClipPlanes[7] = P.clipPlanes[7];
   gDims = ivec3(P.dims.xyz);
+  gQuadOffset = P.dims.w;
   gBricks = ivec3(P.bricks.xyz);
   gBrickSize = P.sampling2.z;
   gInvBrickSize = 1.0 / P.sampling2.z;

@@ -47,6 +47,7 @@ uint32_t Image3D::TexelBytes(vk::Format format)
     case vk::Format::eR16Sfloat:
       return 2;
     case vk::Format::eR32Sfloat:
+    case vk::Format::eR32Uint:
       return 4;
     case vk::Format::eR32G32B32A32Sfloat:
       return 16;

@@ -19,7 +19,7 @@ class Context;
 class VISSWEEPCORE_EXPORT Image3D
 {
 public:
-  /** Supported formats: eR32Sfloat, eR16Unorm, eR8Unorm, eR16Sfloat, eR32G32B32A32Sfloat. */
+  /** Supported formats: eR32Sfloat, eR32Uint, eR16Unorm, eR8Unorm, eR16Sfloat, eR32G32B32A32Sfloat. */
   Image3D(std::shared_ptr<Context> context, uint32_t width, uint32_t height, uint32_t depth,
     vk::Format format, const std::string& name);
   ~Image3D();

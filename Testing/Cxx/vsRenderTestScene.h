@@ -78,6 +78,7 @@ struct RenderScene : VisibilityScene
     vs::MonteCarloPass pass(this->Context);
     pass.SetDirectionTable(this->DirectionTable);
     pass.SetEmptySpaceSkipping(this->EmptySpaceSkipping);
+    pass.SetVolumeQuads(this->VolumeQuads);
     pass.SetCountLookups(this->CountLookups);
     pass.Reset(p.viewport.x, p.viewport.y);
     for (int f = 0; f < frames; ++f)
@@ -87,6 +88,7 @@ struct RenderScene : VisibilityScene
     this->LastSamples = pass.Samples();
     this->LastUsedDirectionTable = pass.LastUsedDirectionTable();
     this->LastLookups = pass.LastLookups();
+    this->LastUsedVolumeQuads = pass.LastUsedVolumeQuads();
     return { pass.Mean(), pass.Variance() };
   }
   uint32_t LastSamples = 0;
@@ -95,6 +97,9 @@ struct RenderScene : VisibilityScene
   bool LastUsedDirectionTable = false;
   /** Whether the trackers cross empty space a cube of bricks at a time (the pass's default). */
   bool EmptySpaceSkipping = true;
+  /** Whether trilinear samples may read an integer-coded volume's 8-bit quads (the pass's default). */
+  bool VolumeQuads = true;
+  bool LastUsedVolumeQuads = false;
   /** Whether Render uses the counting kernel; LastLookups are its counts of the last frame. */
   bool CountLookups = false;
   std::array<uint64_t, 3> LastLookups{};

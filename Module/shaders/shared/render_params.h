@@ -31,7 +31,8 @@ struct VsRenderParams
   mat4 worldToIndex;
   vec4 boxMin;       /* index-space box of the volume (cropped) */
   vec4 boxMax;
-  vec4 dims;         /* voxels per axis */
+  vec4 dims;         /* xyz: voxels per axis; w: the scalar of code 0 in the volume's 8-bit quads
+                        (vsDeviceVolume.h, the render kernel's VS_SPEC_QUADS pipelines) */
   vec4 tf;           /* transfer-function LUT parameters (frame_params.h) */
   vec4 background;   /* rgb: constant background; w: 1 = escaping rays see the environment, 0 = transparent */
   uvec4 viewport;    /* width, height, index of the first sample of this frame, seed */
