@@ -21,29 +21,10 @@ DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const float* scalar
   CheckFits(*context, dims);
   this->Image_ = std::make_unique<Image3D>(context, dims[0], dims[1], dims[2], vk::Format::eR32Sfloat, "volume");
   const uint64_t slice = uint64_t(dims[0]) * dims[1];
-  const uint64_t voxels = slice * dims[2];
-  // Integer-coded: finite integers spanning at most 255 (quads of 8-bit codes, see the header).
-  bool coded = voxels * 4 <= kMaxQuadBytes;
-  float codeLo = std::numeric_limits<float>::max(), codeHi = -std::numeric_limits<float>::max();
-  for (uint64_t i = 0; coded && i < voxels; ++i)
-  {
-    const float v = scalars[i];
-    coded = std::isfinite(v) && v == std::floor(v) && std::abs(v) < 16777216.0f;
-    codeLo = std::min(codeLo, v);
-    codeHi = std::max(codeHi, v);
-  }
-  coded = coded && codeHi - codeLo <= 255.0f;
-  std::vector<uint32_t> quads;
-  if (coded)
-  {
-    Image3D::CheckLimits(*context, dims[0], dims[1], dims[2], vk::Format::eR32Uint, "volume quads");
-    this->Quads_ = std::make_unique<Image3D>(context, dims[0], dims[1], dims[2], vk::Format::eR32Uint, "volume quads");
-    this->QuadOffset_ = codeLo;
-    quads.resize(slice);
-  }
   std::vector<float> staging(slice);
   float lo = std::numeric_limits<float>::max(), hi = -std::numeric_limits<float>::max();
   const float nan = std::numeric_limits<float>::quiet_NaN();
+  bool integral = true;
   for (uint32_t z = 0; z < dims[2]; ++z)
   {
     const float* src = scalars + slice * z;
@@ -54,6 +35,7 @@ DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const float* scalar
       {
         lo = std::min(lo, v);
         hi = std::max(hi, v);
+        integral = integral && v == std::trunc(v);
         staging[i] = v;
       }
       else
@@ -63,26 +45,48 @@ DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const float* scalar
       }
     }
     this->Image_->UploadSlices(staging.data(), z, 1);
-    if (coded)
-    {
-      auto code = [&](uint32_t x, uint32_t y) {
-        return uint32_t(src[uint64_t(y) * dims[0] + x] - codeLo);
-      };
-      for (uint32_t y = 0; y < dims[1]; ++y)
-      {
-        const uint32_t y1 = std::min(y + 1, dims[1] - 1);
-        for (uint32_t x = 0; x < dims[0]; ++x)
-        {
-          const uint32_t x1 = std::min(x + 1, dims[0] - 1);
-          quads[uint64_t(y) * dims[0] + x] = code(x, y) | code(x1, y) << 8 | code(x, y1) << 16 | code(x1, y1) << 24;
-        }
-      }
-      this->Quads_->UploadSlices(quads.data(), z, 1);
-    }
   }
   if (lo <= hi)
   {
     this->Range_ = { { lo, hi } };
+  }
+  // Integer-coded: finite integers spanning at most 255 (quads of 8-bit codes, see the header).
+  const bool coded = this->NonFinite_ == 0 && lo <= hi && integral && hi - lo <= 255.0f &&
+    std::abs(lo) < 16777216.0f && std::abs(hi) < 16777216.0f && slice * dims[2] * 4 <= kMaxQuadBytes;
+  if (coded)
+  {
+    this->MakeQuads(context, scalars, lo);
+  }
+}
+
+void DeviceVolume::MakeQuads(const std::shared_ptr<Context>& context, const float* scalars, float offset)
+{
+  const auto& dims = this->Dims_;
+  Image3D::CheckLimits(*context, dims[0], dims[1], dims[2], vk::Format::eR32Uint, "volume quads");
+  this->Quads_ = std::make_unique<Image3D>(context, dims[0], dims[1], dims[2], vk::Format::eR32Uint, "volume quads");
+  this->QuadOffset_ = offset;
+  const uint64_t slice = uint64_t(dims[0]) * dims[1];
+  std::vector<uint8_t> codes(slice);
+  std::vector<uint32_t> quads(slice);
+  for (uint32_t z = 0; z < dims[2]; ++z)
+  {
+    const float* src = scalars + slice * z;
+    for (uint64_t i = 0; i < slice; ++i)
+    {
+      codes[i] = uint8_t(src[i] - offset);
+    }
+    for (uint32_t y = 0; y < dims[1]; ++y)
+    {
+      const uint8_t* row = codes.data() + uint64_t(y) * dims[0];
+      const uint8_t* next = codes.data() + uint64_t(std::min(y + 1, dims[1] - 1)) * dims[0];
+      uint32_t* out = quads.data() + uint64_t(y) * dims[0];
+      for (uint32_t x = 0; x < dims[0]; ++x)
+      {
+        const uint32_t x1 = std::min(x + 1, dims[0] - 1);
+        out[x] = uint32_t(row[x]) | uint32_t(row[x1]) << 8 | uint32_t(next[x]) << 16 | uint32_t(next[x1]) << 24;
+      }
+    }
+    this->Quads_->UploadSlices(quads.data(), z, 1);
   }
 }
 

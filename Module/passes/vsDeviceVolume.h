@@ -46,6 +46,8 @@ public:
   static void CheckFits(Context& context, std::array<uint32_t, 3> dims);
 
 private:
+  void MakeQuads(const std::shared_ptr<Context>& context, const float* scalars, float offset);
+
   std::array<uint32_t, 3> Dims_;
   std::unique_ptr<Image3D> Image_;
   std::unique_ptr<Image3D> Quads_;
