@@ -55,7 +55,15 @@ DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const float* scalar
     std::abs(lo) < 16777216.0f && std::abs(hi) < 16777216.0f && slice * dims[2] * 4 <= kMaxQuadBytes;
   if (coded)
   {
-    this->MakeQuads(context, scalars, lo);
+    try
+    {
+      this->MakeQuads(context, scalars, lo);
+    }
+    catch (const DeviceLimitError&)
+    {
+      // The quads only speed the kernel up: a volume that fits without them renders without them.
+      this->Quads_.reset();
+    }
   }
 }
 

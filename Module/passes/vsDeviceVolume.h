@@ -31,12 +31,14 @@ public:
   ~DeviceVolume();
 
   const Image3D& Image() const { return *this->Image_; }
-  /** The quads of an integer-coded volume, or nullptr (float data, or quads over kMaxQuadBytes). */
+  /** The quads of an integer-coded volume, or nullptr (float data, quads over kMaxQuadBytes, or
+   *  past the device's limits: they only speed the render kernel up, so a volume that fits without
+   *  them renders without them). */
   const Image3D* Quads() const { return this->Quads_.get(); }
   /** The value of code 0 in the quads. */
   float QuadOffset() const { return this->QuadOffset_; }
   /** The largest quad image made (it doubles the volume's device memory). */
-  static constexpr uint64_t kMaxQuadBytes = 512ull << 20;
+  static constexpr uint64_t kMaxQuadBytes = 256ull << 20;
   std::array<uint32_t, 3> Dims() const { return this->Dims_; }
   uint64_t NonFiniteCount() const { return this->NonFinite_; }
   /** The range of the finite voxels ([0,0] when none is finite). */
