@@ -194,22 +194,27 @@ float cell_face_distance(float p, float d, int lo, int dim)
   return 1e30;
 }
 
-/* The brick the ray o + t d is in just after t (at t + half the shortest step: a brick and a cell
- * are picked at the same point), and the distance t where it leaves it (at least the shortest step
- * on: a sliver of the previous brick shorter than float resolves may go with this one). */
-ivec3 brick_at(vec3 o, vec3 d, float t, out float tExit)
+/* Where the ray o + t d leaves the cube of bricks [b - r, b + r] (r >= 0 bricks; r = 0: brick b):
+ * the face ahead on each axis by the ray's reciprocal direction (1e30 where it is parallel), at
+ * least the shortest step on (a sliver of the previous brick shorter than float resolves may go
+ * with this one; rounding may put the point on the far side of a face: always move forward). */
+float brick_cube_exit(vec3 o, vec3 d, float t, ivec3 b, float r)
 {
   float h = 2e-6 * max(abs(t), gRay.invLength);
   vec3 p = o + t * d;
-  vec3 probe = o + (t + 0.5 * h) * d;
-  ivec3 b = ivec3(floor(probe * gInvBrickSize));
-  vec3 lo = vec3(b) * gBrickSize, hi = lo + gBrickSize;
-  /* The face ahead on each axis, by the ray's reciprocal direction (1e30 where it is parallel). */
+  vec3 lo = (vec3(b) - r) * gBrickSize, hi = (vec3(b) + r + 1.0) * gBrickSize;
   vec3 e3 = (mix(lo, hi, greaterThan(d, vec3(0.0))) - p) * gRay.invD;
   e3 = mix(vec3(1e30), e3, greaterThan(abs(d), vec3(1e-20)));
-  float e = min(e3.x, min(e3.y, e3.z));
-  /* Always move forward, even when rounding put p on the far side of a face. */
-  tExit = t + max(e, h);
+  return t + max(min(e3.x, min(e3.y, e3.z)), h);
+}
+
+/* The brick the ray o + t d is in just after t (at t + half the shortest step: a brick and a cell
+ * are picked at the same point), and the distance t where it leaves it (brick_cube_exit). */
+ivec3 brick_at(vec3 o, vec3 d, float t, out float tExit)
+{
+  float h = 2e-6 * max(abs(t), gRay.invLength);
+  ivec3 b = ivec3(floor((o + (t + 0.5 * h) * d) * gInvBrickSize));
+  tExit = brick_cube_exit(o, d, t, b, 0.0);
   return b;
 }
 
@@ -310,18 +315,6 @@ float refine_majorant(vec3 o, vec3 d, float t, inout float tNext, float mu)
   tNext = t + h;
   /* The brick majorant bounds the cell too (up to rounding at brick faces). */
   return min(m, mu);
-}
-
-/* Where the ray o + t d leaves the cube of bricks [b - r, b + r] (r >= 0 bricks; r = 0: brick b),
- * at least the shortest step past t. */
-float brick_cube_exit(vec3 o, vec3 d, float t, ivec3 b, float r)
-{
-  float h = 2e-6 * max(abs(t), gRay.invLength);
-  vec3 p = o + t * d;
-  vec3 lo = (vec3(b) - r) * gBrickSize, hi = (vec3(b) + r + 1.0) * gBrickSize;
-  vec3 e3 = (mix(lo, hi, greaterThan(d, vec3(0.0))) - p) * gRay.invD;
-  e3 = mix(vec3(1e30), e3, greaterThan(abs(d), vec3(1e-20)));
-  return t + max(min(e3.x, min(e3.y, e3.z)), h);
 }
 
 /* The majorant segment of the ray from t: returns mu and sets tNext, with mu >= the extinction
