@@ -708,3 +708,46 @@ TEST(VisibilityGrid, KernelTapsAreTheFilterThenTheLinearRead)
   std::printf("largest difference from the two-step filter and read: %.2e\n", worst);
   EXPECT_LT(worst, 1e-5);
 }
+
+// The march starts and ends each kernel ray at the occupied box (the bricks of nonzero majorant,
+// widened by the pooled texels' reach) instead of the volume's box: a dense block in a corner of a
+// mostly empty volume casts the same shadow as the brute force (which marches the whole box) sees.
+TEST(VisibilityGrid, OccupiedBoxKeepsTheShadowOfAnIsolatedBlock)
+{
+  VisibilityScene scene({ { 40, 36, 44 } },
+    [](int x, int y, int z) { return x >= 25 && x <= 32 && y >= 4 && y <= 10 && z >= 27 && z <= 35 ? 1.0f : 0.0f; },
+    0.4);
+  VisibilityGridParameters p;
+  p.StorageFormat = VisibilityGridParameters::Format::Float32;
+  p.Algorithm = VisibilityGridParameters::Method::BruteForce;
+  p.BruteForceSamples = 16;
+  vs::VisibilityGrid brute(scene.Context);
+  const std::vector<float> reference = scene.Grid(brute, p);
+  size_t shadowed = 0;
+  for (float v : reference)
+    shadowed += v < 0.5f ? 1 : 0;
+  EXPECT_GT(shadowed, reference.size() / 100) << "the block must shadow part of the grid for this test to mean anything";
+  p.Algorithm = VisibilityGridParameters::Method::Sweep;
+  for (uint32_t pooling : { 1u, 2u })
+  {
+    p.ExtinctionPooling = pooling;
+    vs::VisibilityGrid sweep(scene.Context);
+    const std::vector<float> v = scene.Grid(sweep, p);
+    double sumSweep = 0.0, sumBrute = 0.0;
+    for (size_t i = 0; i < v.size(); ++i)
+    {
+      sumSweep += 1.0 - v[i];
+      sumBrute += 1.0 - reference[i];
+    }
+    const double e = MeanAbsDiff(v, reference);
+    std::printf("isolated block, pooling %u: mean |dV| against the brute force %.4f; shadow (sum of 1 - V) %.1f "
+                "against %.1f\n",
+      pooling, e, sumSweep, sumBrute);
+    // Measured: mean |dV| 0.0089 (P = 1) and 0.0098 (P = 2); shadow ratio 1.004 and 1.145 (mean pooling
+    // spreads the block's edges over a pooled texel, so grazing rays gain optical depth). A ray cut short
+    // by the occupied box would lose shadow: the ratio would fall below 1.
+    EXPECT_LT(e, 0.02);
+    EXPECT_GT(sumSweep / sumBrute, 0.98);
+    EXPECT_LT(sumSweep / sumBrute, pooling == 1 ? 1.03 : 1.25);
+  }
+}
