@@ -38,6 +38,8 @@ struct Options
   bool Profile = false;
   std::string Only;
   int Pooling = -1;
+  double StopTransmittance = -1.0;
+  std::string Format;
   bool MaxPooling = false;
   std::vector<uint32_t> SubsetSizes;
   std::vector<double> Cells;
@@ -96,6 +98,12 @@ int RunProfile(const Options& o)
   {
     if (o.Pooling >= 0)
       p->ExtinctionPooling = uint32_t(o.Pooling);
+    if (o.StopTransmittance >= 0.0)
+      p->StopTransmittance = float(o.StopTransmittance);
+    if (o.Format == "r16")
+      p->StorageFormat = vs::VisibilityGridParameters::Format::Unorm16;
+    else if (o.Format == "r32f")
+      p->StorageFormat = vs::VisibilityGridParameters::Format::Float32;
     p->MaxPooling = o.MaxPooling;
   }
   std::printf("extinction pooling: %u voxels per texel (%s)\n", renderer.PoolingFactor(),
@@ -107,7 +115,7 @@ int RunProfile(const Options& o)
       continue;
     vs::VisibilityGrid grid(ctx);
     grid.SetProfiling(true);
-    std::map<std::string, std::vector<double>> stages;
+    std::map<std::string, std::vector<double>> stages, cpu;
     std::vector<double> total, wall;
     for (int r = 0; r < o.Repeats; ++r)
     {
@@ -116,6 +124,8 @@ int RunProfile(const Options& o)
       wall.push_back(grid.LastWallSeconds());
       for (const auto& [name, sec] : grid.LastStageSeconds())
         stages[name].push_back(sec);
+      for (const auto& [name, sec] : grid.LastStageCpuSeconds())
+        cpu[name].push_back(sec);
     }
     std::sort(total.begin(), total.end());
     std::printf("\n%s grid (%u x %u x %u cells): device %.3f s (min %.3f, max %.3f over %d), wall %.3f s, %u dispatches\n",
@@ -125,8 +135,10 @@ int RunProfile(const Options& o)
     report[c.Name]["wall_seconds"] = wall;
     for (const auto& [name, secs] : stages)
     {
-      std::printf("  %-10s %.3f s (%.0f %%)\n", name.c_str(), Median(secs), 100.0 * Median(secs) / Median(total));
+      std::printf("  %-10s %.3f s (%.0f %%), CPU %.3f s\n", name.c_str(), Median(secs),
+        100.0 * Median(secs) / Median(total), Median(cpu[name]));
       report[c.Name]["stages"][name] = secs;
+      report[c.Name]["cpu_seconds"][name] = cpu[name];
     }
     // All directions in subsets of k per call, on a grid that already has the layout.
     const uint32_t count = c.P.DirectionResolution * c.P.DirectionResolution;
@@ -327,6 +339,10 @@ void AddBenchSweeps(CLI::App& bench)
   cmd->add_flag("--profile", o->Profile,
     "device time per stage of the renderer's and the accurate grid, and of small-subset calls (no brute force)");
   cmd->add_option("--pooling", o->Pooling, "with --profile: ExtinctionPooling (0 auto, 1 full resolution)");
+  cmd->add_option("--stop-transmittance", o->StopTransmittance,
+    "with --profile: StopTransmittance (kernel rays stop marching below it)");
+  cmd->add_option("--format", o->Format, "with --profile: the grid's storage format (r8, the default; r16; r32f)")
+    ->check(CLI::IsMember({ "r8", "r16", "r32f" }));
   cmd->add_flag("--max-pooling", o->MaxPooling, "with --profile: pool by the max instead of the mean");
   cmd->add_option("--only", o->Only, "with --profile: only the 'renderer' or the 'accurate' grid");
   cmd->add_option("--subsets", o->SubsetSizes, "with --profile: directions per call to time (default 1,8; 0 = none)")

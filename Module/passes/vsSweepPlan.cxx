@@ -52,6 +52,10 @@ void VisibilityGridParameters::Validate() const
   {
     throw InputError("KernelResolution must be 0 (auto) or at least 2");
   }
+  if (!(this->StopTransmittance >= 0.0f && this->StopTransmittance < 1.0f))
+  {
+    throw InputError("StopTransmittance must be in [0, 1), got " + std::to_string(this->StopTransmittance));
+  }
   if (this->BruteForceSamples < 1)
   {
     throw InputError("BruteForceSamples must be at least 1");
@@ -208,7 +212,7 @@ SweepPlan SweepPlan::Make(const VolumeGeometry& g, const VisibilityGridParameter
 
   // Group directions into batches whose kernels fit together; assign offsets within a batch.
   std::vector<uint32_t> current;
-  uint64_t used = 0;
+  uint64_t used = 0, filtered = 0;
   for (uint32_t n : directions)
   {
     if (kernelFloats[n] > maxBatchFloats)
@@ -222,11 +226,15 @@ SweepPlan SweepPlan::Make(const VolumeGeometry& g, const VisibilityGridParameter
       plan.Batches.push_back(current);
       current.clear();
       used = 0;
+      filtered = 0;
     }
     plan.Directions[n].axes.w = uint32_t(used);
+    plan.Directions[n].filtered = glm::uvec4(uint32_t(filtered), 0u, 0u, 0u);
     used += kernelFloats[n];
+    filtered += uint64_t(plan.Cells[plan.Directions[n].axes.y]) * plan.Directions[n].kernel.y;
     current.push_back(n);
     plan.LargestBatchKernelFloats = std::max(plan.LargestBatchKernelFloats, used);
+    plan.LargestBatchFilteredFloats = std::max(plan.LargestBatchFilteredFloats, filtered);
   }
   if (!current.empty())
   {

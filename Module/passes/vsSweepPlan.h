@@ -58,8 +58,12 @@ struct VISSWEEPCORE_EXPORT VisibilityGridParameters
   /** Brute force: rays per cell and direction (random points of the cell, random directions of the texel). */
   uint32_t BruteForceSamples = 1;
   Format StorageFormat = Format::Unorm8;
-  /** Kernel rays stop marching below this transmittance (below the 8-bit resolution). */
-  float StopTransmittance = 1e-6f;
+  /** Kernel rays stop marching below this transmittance, keeping the value they reached: the grid
+   *  then overestimates V by less than this (about half a step of the 8-bit grid, 1/255), and only
+   *  where V is already that small. The renderer adds its epsilon (0.01) to V anyway: the pdf
+   *  barely changes, and an approximation of the grid costs variance, never bias. Measured on ch2
+   *  (renderer's grid): the march 10 % cheaper at 1e-3, 15 % at 4e-3, than at 1e-6 (the old default). */
+  float StopTransmittance = 2e-3f;
   /** The world light direction swept for each of the D x D directions (row-major); empty = the
    *  texel centres (SweepPlan::Direction). The renderer sweeps each texel towards where its light
    *  comes from (the environment's radiance-weighted mean direction inside the texel), so that a
@@ -95,6 +99,8 @@ struct VISSWEEPCORE_EXPORT SweepPlan
   /** Directions grouped so that one batch's kernels fit in one storage buffer. */
   std::vector<std::vector<uint32_t>> Batches;
   uint64_t LargestBatchKernelFloats = 0;
+  /** Per batch and slice, the kernel filtered along a (cells along a x rays along b per direction). */
+  uint64_t LargestBatchFilteredFloats = 0;
 
   /** Opening angle (radians) of the cone with the solid angle of one of D x D equal-area cells. */
   static double CellOpeningAngle(uint32_t side);

@@ -24,7 +24,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <limits>
 #include <string_view>
+
+#include <sys/resource.h>
 
 namespace vs
 {
@@ -88,6 +91,24 @@ bool SameGeometry(const VolumeGeometry& a, const VolumeGeometry& b)
     a.CropFlags == b.CropFlags && (a.CropFlags == 0 || (a.CropLo == b.CropLo && a.CropHi == b.CropHi));
 }
 
+// User and system CPU seconds of this process so far (all threads: lavapipe's too).
+double ProcessCpuSeconds()
+{
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+// The kernel rays one box of `width` rays and the linear read beside it weigh at most
+// (vs_kernel_taps: ceil(hi1) - floor(lo0), and hi1 - lo0 <= max(width, 1) + 1), on a line of n rays.
+uint32_t KernelTaps(float width, uint32_t n)
+{
+  const double w = std::max(1.0, double(width));
+  return uint32_t(std::min<double>(std::ceil(w * (1.0 + 1e-6)) + 2.0, double(std::max<uint32_t>(n, 1))));
+}
+// Beyond this, the filter and the projection loop over the taps instead of unrolling them.
+constexpr uint32_t MaxUnrolledTaps = 16;
+
 struct SlicePush
 {
   uint32_t first;
@@ -98,13 +119,6 @@ struct ChunkPush
   uint32_t firstSlice;
   uint32_t count;
   uint32_t firstDirection;
-};
-struct FilterPush
-{
-  uint32_t firstSlice;
-  uint32_t count;
-  uint32_t firstDirection;
-  uint32_t pass;
 };
 }
 
@@ -222,6 +236,46 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
     g.clipPlanes[i] = glm::vec4(glm::vec3(glm::transpose(m) * n), float(glm::dot(n, o) + worldClipPlanes[i].w));
   }
   g.bruteForce = glm::uvec4(parameters.BruteForceSamples, 1u, 0u, 0u);
+  // The occupied box: the bricks of nonzero majorant (each covers voxels [b B, (b + 1) B]),
+  // widened by a pooled texel's reach (P voxels, and one for nearest-neighbour cells and rounding).
+  {
+    const auto& m = majorants.Majorants();
+    const uint32_t B = majorants.BrickSize();
+    glm::ivec3 lo(std::numeric_limits<int>::max()), hi(std::numeric_limits<int>::min());
+    size_t i = 0;
+    for (uint32_t z = 0; z < bricks[2]; ++z)
+      for (uint32_t y = 0; y < bricks[1]; ++y)
+        for (uint32_t x = 0; x < bricks[0]; ++x, ++i)
+        {
+          if (i < m.size() && !(m[i] == 0.0f))
+          {
+            lo = glm::min(lo, glm::ivec3(int(x), int(y), int(z)));
+            hi = glm::max(hi, glm::ivec3(int(x), int(y), int(z)));
+          }
+        }
+    if (m.size() != size_t(bricks[0]) * bricks[1] * bricks[2])
+    {
+      // Not the layout expected: no skipping.
+      g.occupiedMin = g.boxMin;
+      g.occupiedMax = g.boxMax;
+    }
+    else if (lo.x > hi.x)
+    {
+      // Nothing occludes: a degenerate box outside the volume, which no ray's interval overlaps.
+      g.occupiedMin = g.occupiedMax = glm::vec4(geometry.BoxMin - 8.0f, 0.0f);
+    }
+    else
+    {
+      const float margin = float(parameters.Algorithm == VisibilityGridParameters::Method::Sweep
+                                     ? parameters.PoolingFactor()
+                                     : 1u) +
+        1.0f;
+      const glm::vec3 a = glm::vec3(lo) * float(B) - margin;
+      const glm::vec3 b = glm::vec3(hi + 1) * float(B) + margin;
+      g.occupiedMin = glm::vec4(glm::max(a, geometry.BoxMin), 0.0f);
+      g.occupiedMax = glm::vec4(glm::min(b, geometry.BoxMax), 0.0f);
+    }
+  }
   g.cropLo = glm::vec4(geometry.CropLo, 0.0f);
   g.cropHi = glm::vec4(geometry.CropHi, 0.0f);
   g.crop = glm::uvec4(geometry.CropFlags, 0u, 0u, 0u);
@@ -245,6 +299,7 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
   this->LastSeconds_ = 0.0;
   this->LastDispatches_ = 0;
   this->LastStageSeconds_.clear();
+  this->LastStageCpuSeconds_.clear();
   if (parameters.Algorithm == VisibilityGridParameters::Method::Sweep)
   {
     this->RunSweeps(volume, tf, majorants, globals, progress);
@@ -268,73 +323,107 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
       std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
         B::StorageBuffer, B::StorageBuffer },
       sizeof(ChunkPush), "sweep march");
-    this->MarchPooled_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_march_pooled),
-      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
-        B::StorageBuffer, B::StorageBuffer },
-      sizeof(ChunkPush), "sweep march (pooled)");
-    this->Filter_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_filter),
-      std::vector<B>{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer },
-      sizeof(FilterPush), "sweep filter");
   }
+  // The filter and the projection are specialised for the most kernel rays a box (and the linear
+  // read beside it) covers along a and along b in this plan: their tap loops then unroll.
+  const SweepPlan& plan = this->Plan_;
+  uint32_t tapsA = 1, tapsB = 1;
+  for (const auto& batch : plan.Batches)
   {
-    // The projection stores into an image of known format (faster on lavapipe than format-less stores).
+    for (uint32_t n : batch)
+    {
+      const auto& s = plan.Directions[n];
+      const uint32_t k = s.axes.x;
+      float tMax = 0.0f;
+      for (uint32_t slice : { 0u, plan.Cells[k] - 1u })
+      {
+        tMax = std::max(tMax, std::abs(shared::vs_slice_t(this->Geometry_.BoxMin[k], plan.CellSize[k], plan.Cells[k],
+                                s.planeOrigin[k], s.travel[k], s.kernel.z == 1u, slice)));
+      }
+      tapsA = std::max(tapsA, KernelTaps(s.filterSize.x + 2.0f * tMax * s.filterSize.z, s.kernel.x));
+      tapsB = std::max(tapsB, KernelTaps(s.filterSize.y + 2.0f * tMax * s.filterSize.w, s.kernel.y));
+    }
+  }
+  tapsA = tapsA > MaxUnrolledTaps ? 0u : tapsA;
+  tapsB = tapsB > MaxUnrolledTaps ? 0u : tapsB;
+  {
     using B = BindingType;
+    this->Filter_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_filter),
+      std::vector<B>{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer }, sizeof(ChunkPush),
+      "sweep filter (" + std::to_string(tapsA) + " taps)", { tapsA });
+    // The projection stores into an image of known format (faster on lavapipe than format-less stores).
     const std::vector<B> bindings{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageImage };
+    const std::string taps = std::to_string(tapsB) + " taps)";
     switch (this->Parameters_.StorageFormat)
     {
       case VisibilityGridParameters::Format::Unorm8:
         this->Project_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_project_r8), bindings,
-          sizeof(ChunkPush), "sweep project (r8)");
+          sizeof(ChunkPush), "sweep project (r8, " + taps, { tapsB });
         break;
       case VisibilityGridParameters::Format::Unorm16:
         this->Project_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_project_r16), bindings,
-          sizeof(ChunkPush), "sweep project (r16)");
+          sizeof(ChunkPush), "sweep project (r16, " + taps, { tapsB });
         break;
       default:
         this->Project_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_project_r32f), bindings,
-          sizeof(ChunkPush), "sweep project (r32f)");
+          sizeof(ChunkPush), "sweep project (r32f, " + taps, { tapsB });
         break;
     }
   }
-  const SweepPlan& plan = this->Plan_;
-  const bool filtering = this->Parameters_.Filtering;
+  const uint32_t nearest = this->Parameters_.NearestInterpolation ? 1u : 0u;
+  if (!this->MarchPooled_ || this->MarchPooledNearest_ != nearest)
+  {
+    using B = BindingType;
+    this->MarchPooled_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_march_pooled),
+      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
+        B::StorageBuffer, B::StorageBuffer },
+      sizeof(ChunkPush),
+      nearest ? "sweep march (pooled, nearest)" : "sweep march (pooled)", { nearest });
+    this->MarchPooledNearest_ = nearest;
+  }
   const uint64_t budget = std::min<uint64_t>(this->Context_->Info().MaxStorageBufferRange, 64ull << 20) / sizeof(float);
 
   // Directions in batch order, so a batch is a contiguous range of the buffer; per batch, the
-  // slices per chunk so that its kernel stack (rays x slices) fits one buffer.
+  // slices per chunk so that its kernel stack (rays x slices) and the kernel filtered along a
+  // (cells along a x rays along b, per slice) fit one buffer each.
   std::vector<shared::VsSweepDirection> ordered;
   std::vector<uint32_t> firsts, chunks;
-  uint64_t stackFloats = 1, stateFloats = 1;
+  uint64_t stackFloats = 1, stateFloats = 1, filteredFloats = 1;
   for (const auto& batch : plan.Batches)
   {
     firsts.push_back(uint32_t(ordered.size()));
-    uint64_t rays = 0;
+    uint64_t rays = 0, filtered = 0;
     uint32_t slices = 1;
     for (uint32_t n : batch)
     {
-      ordered.push_back(plan.Directions[n]);
-      rays += uint64_t(plan.Directions[n].kernel.x) * plan.Directions[n].kernel.y;
-      slices = std::max(slices, plan.Cells[plan.Directions[n].axes.x]);
+      const auto& s = plan.Directions[n];
+      ordered.push_back(s);
+      rays += uint64_t(s.kernel.x) * s.kernel.y;
+      filtered += uint64_t(plan.Cells[s.axes.y]) * s.kernel.y;
+      slices = std::max(slices, plan.Cells[s.axes.x]);
     }
-    uint32_t chunk = uint32_t(std::max<uint64_t>(1, std::min<uint64_t>(slices, budget / std::max<uint64_t>(rays, 1))));
+    const uint64_t perSlice = std::max<uint64_t>(std::max(rays, filtered), 1);
+    uint32_t chunk = uint32_t(std::max<uint64_t>(1, std::min<uint64_t>(slices, budget / perSlice)));
     chunks.push_back(chunk);
     stackFloats = std::max(stackFloats, rays * chunk);
+    filteredFloats = std::max(filteredFloats, filtered * chunk);
     stateFloats = std::max(stateFloats, rays);
   }
   Buffer dirs(this->Context_, ordered.size() * sizeof(shared::VsSweepDirection), "sweep directions");
   dirs.Upload(ordered.data(), ordered.size() * sizeof(shared::VsSweepDirection));
   Buffer state(this->Context_, stateFloats * sizeof(float), "sweeping kernel");
   Buffer stack(this->Context_, stackFloats * sizeof(float), "sweeping kernel per slice");
-  std::unique_ptr<Buffer> prefix;
-  if (filtering)
-  {
-    prefix = std::make_unique<Buffer>(this->Context_, stackFloats * sizeof(float), "kernel prefix sums");
-  }
+  Buffer filtered(this->Context_, filteredFloats * sizeof(float), "sweeping kernel filtered along a");
   // The pooled extinction volume (cached), or the full-resolution volume with its majorants.
   const bool pooled = this->Parameters_.PoolingFactor() > 1;
   if (pooled)
   {
+    const double cpu0 = ProcessCpuSeconds();
     const double seconds = this->EnsurePooled(volume, tf, majorants);
+    if (seconds > 0.0)
+    {
+      this->LastStageCpuSeconds_["pool"] += ProcessCpuSeconds() - cpu0;
+    }
     this->LastSeconds_ += seconds;
     if (seconds > 0.0)
     {
@@ -343,17 +432,19 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
   }
   const ComputePipeline& marchPipeline = pooled ? *this->MarchPooled_ : *this->March_;
   DescriptorSet march(marchPipeline);
-  march.Bind(0, pooled ? *this->Pooled_ : volume.Image()).Bind(1, tf.Lut())
-    .Bind(2, pooled ? *this->PooledOccupancy_ : majorants.Image()).Bind(3, globals).Bind(4, dirs)
-    .Bind(5, state).Bind(6, stack);
-  DescriptorSet project(*this->Project_);
-  project.Bind(0, globals).Bind(1, dirs).Bind(2, stack).Bind(3, *this->Image_);
-  std::unique_ptr<DescriptorSet> filter;
-  if (filtering)
+  if (pooled)
   {
-    filter = std::make_unique<DescriptorSet>(*this->Filter_);
-    filter->Bind(0, globals).Bind(1, dirs).Bind(2, stack).Bind(3, *prefix);
+    march.Bind(0, *this->Pooled_).Bind(2, *this->PooledOccupancy_);
   }
+  else
+  {
+    march.Bind(0, volume.Image()).Bind(2, majorants.Image());
+  }
+  march.Bind(1, tf.Lut()).Bind(3, globals).Bind(4, dirs).Bind(5, state).Bind(6, stack);
+  DescriptorSet project(*this->Project_);
+  project.Bind(0, globals).Bind(1, dirs).Bind(2, filtered).Bind(3, *this->Image_);
+  DescriptorSet filter(*this->Filter_);
+  filter.Bind(0, globals).Bind(1, dirs).Bind(2, stack).Bind(3, filtered);
 
   for (size_t bi = 0; bi < plan.Batches.size(); ++bi)
   {
@@ -370,49 +461,46 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
     }
     const uint32_t nd = uint32_t(batch.size());
     const uint32_t chunk = chunks[bi];
-    Batch cmd(this->Context_);
+    // Profiling: every dispatch in its own submission, timed on the device and in process CPU
+    // seconds (which, unlike device time, other processes on the machine barely change).
     const bool profiling = this->Profiling_;
-    auto stage = [&](const char* name) {
-      if (profiling)
-        cmd.BeginTimer(name);
+    Batch cmd(this->Context_);
+    auto dispatch = [&](const char* name, const ComputePipeline& pipeline, const DescriptorSet& set,
+                      const ChunkPush& push, uint32_t gx, uint32_t gy, uint32_t gz) {
+      if (!profiling)
+      {
+        cmd.Dispatch(pipeline, set, &push, sizeof(push), gx, gy, gz);
+        cmd.Barrier();
+        return;
+      }
+      const double cpu0 = ProcessCpuSeconds();
+      Batch one(this->Context_);
+      one.BeginTimer(name);
+      one.Dispatch(pipeline, set, &push, sizeof(push), gx, gy, gz);
+      one.EndTimer();
+      one.Submit();
+      this->LastStageCpuSeconds_[name] += ProcessCpuSeconds() - cpu0;
+      this->LastStageSeconds_[name] += one.Seconds(name);
+      this->LastSeconds_ += one.Seconds(name);
+      this->LastDispatches_ += one.DispatchCount();
     };
     if (!profiling)
       cmd.BeginTimer("sweep");
     for (uint32_t first = 0; first < slices; first += chunk)
     {
       ChunkPush cp{ first, chunk, firsts[bi] };
-      stage("march");
-      cmd.Dispatch(marchPipeline, march, &cp, sizeof(cp), (ra + 7) / 8, (rb + 7) / 8, nd);
-      cmd.Barrier();
-      if (filtering)
-      {
-        stage("filter");
-        FilterPush rows{ first, chunk, firsts[bi], 0u };
-        cmd.Dispatch(*this->Filter_, *filter, &rows, sizeof(rows), (rb + 63) / 64, chunk, nd);
-        cmd.Barrier();
-        FilterPush cols{ first, chunk, firsts[bi], 1u };
-        cmd.Dispatch(*this->Filter_, *filter, &cols, sizeof(cols), (ra + 63) / 64, chunk, nd);
-        cmd.Barrier();
-      }
-      stage("project");
-      cmd.Dispatch(*this->Project_, project, &cp, sizeof(cp), (ga + 7) / 8, (gb + 7) / 8, nd);
-      cmd.Barrier();
+      dispatch("march", marchPipeline, march, cp, (ra + 7) / 8, (rb + 7) / 8, nd);
+      // The filter along a and the interpolation along a (Filtering off: the interpolation only).
+      dispatch("filter", *this->Filter_, filter, cp, (ga + 7) / 8, chunk, nd);
+      dispatch("project", *this->Project_, project, cp, (gb + 7) / 8, chunk, nd);
     }
-    cmd.EndTimer();
-    cmd.Submit();
-    if (profiling)
+    if (!profiling)
     {
-      for (const auto& [name, seconds] : cmd.Timings())
-      {
-        this->LastStageSeconds_[name] += seconds;
-        this->LastSeconds_ += seconds;
-      }
-    }
-    else
-    {
+      cmd.EndTimer();
+      cmd.Submit();
       this->LastSeconds_ += cmd.Seconds("sweep");
+      this->LastDispatches_ += cmd.DispatchCount();
     }
-    this->LastDispatches_ += cmd.DispatchCount();
     if (progress)
     {
       progress(double(bi + 1) / double(plan.Batches.size()));
@@ -456,15 +544,18 @@ double VisibilityGrid::EnsurePooled(
   {
     return 0.0;
   }
-  if (!this->Pool_)
+  const uint32_t factor = key.Factor;
   {
+    // Specialised for the factor, the kind of pooling and whether cropping masks voxels.
     using B = BindingType;
+    const uint32_t cropped = key.CropFlags ? 1u : 0u;
     this->Pool_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_pool),
-      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage }, sizeof(PoolPush), "sweep pool");
+      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage }, sizeof(PoolPush),
+      "sweep pool (P " + std::to_string(factor) + (key.Max ? ", max" : ", mean") + (cropped ? ", cropped)" : ")"),
+      { factor, key.Max ? 1u : 0u, cropped });
     this->Occupancy_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_pool_occupancy),
       std::vector<B>{ B::StorageImage, B::StorageImage }, sizeof(OccupancyPush), "sweep pool occupancy");
   }
-  const uint32_t factor = key.Factor;
   const uint32_t brick = PoolBrickTexels(factor);
   glm::ivec3 pooled, bricks;
   for (int i = 0; i < 3; ++i)

@@ -79,6 +79,10 @@ public:
    *  device seconds of the last Compute per stage ("march", "filter", "project", ...). */
   void SetProfiling(bool on) { this->Profiling_ = on; }
   const std::map<std::string, double>& LastStageSeconds() const { return this->LastStageSeconds_; }
+  /** With profiling on, the process CPU seconds (user + system, all threads) per stage of the last
+   *  Compute: each dispatch is then submitted alone, so this is the work each stage took, which
+   *  other processes on a shared machine change far less than its device time. */
+  const std::map<std::string, double>& LastStageCpuSeconds() const { return this->LastStageCpuSeconds_; }
   /** Host wall-clock seconds of the last Compute (planning, buffers, submits, waits). */
   double LastWallSeconds() const { return this->LastWallSeconds_; }
   /** Times the pooled extinction volume was built (it is cached across Compute calls). */
@@ -125,6 +129,7 @@ private:
   };
 
   std::shared_ptr<ComputePipeline> March_, MarchPooled_, Filter_, Project_, Brute_, Pool_, Occupancy_;
+  uint32_t MarchPooledNearest_ = ~0u; // the specialization MarchPooled_ was made for
   std::unique_ptr<Image3D> Pooled_, PooledOccupancy_;
   PoolKey PoolKey_;
   uint32_t PoolBrick_ = 1;
@@ -132,7 +137,7 @@ private:
   double LastSeconds_ = 0.0;
   double LastWallSeconds_ = 0.0;
   bool Profiling_ = false;
-  std::map<std::string, double> LastStageSeconds_;
+  std::map<std::string, double> LastStageSeconds_, LastStageCpuSeconds_;
   uint32_t LastDispatches_ = 0;
   uint64_t DirectionsComputed_ = 0;
   uint64_t ContentSerial_ = 0;

@@ -1,65 +1,81 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 /*
- * Sweep-space filtering (von Radziewsky et al. 2017, Sec. 8): a box filter over the sweeping kernel
- * before projection, separable, with a sliding window whose cost does not depend
- * on its width (an inclusive prefix sum of the line, then differences of its
- * linear interpolant). Width along an axis: the visibility cell projected onto the
- * sweep plane, widened on each side by t_i tan(beta) (Eq. 9). In place on the kernel
- * stack, one invocation per line (row: pass 0, column: pass 1) per slice per direction.
+ * Sweep-space filtering (von Radziewsky et al. 2017, Sec. 8) along the kernel's axis a, fused with
+ * the projection's linear interpolation along a. The projection of step (4) reads the filtered
+ * kernel at the point where a cell centre projects along the light onto the start plane; in one
+ * slice that point's coordinate along a depends only on the cell's index along a (the cells of a
+ * slice form a grid, the light is parallel). So the filter and the interpolation along a are done
+ * once per (cell column along a, kernel row along b) of each slice, here, and sweep_project then
+ * filters and interpolates these values along b for every cell (separable: the same result as
+ * filtering the whole kernel along a, then b, then reading it bilinearly, for fewer reads and no
+ * prefix sums). Box width along a: the visibility cell projected onto the sweep plane, widened on
+ * each side by t_i tan(beta) (Eq. 9); weights: vs_kernel_taps (sweep_params.h).
+ * One invocation per (cell index along a, kernel row) per slice of the chunk per direction.
  */
 #include "sweep_params.h"
 
-layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
+/* Rays of nonzero weight at most (vs_kernel_taps), for every direction of the dispatch: the tap
+ * loops unroll and the weights stay in registers; 0 = any number (a loop). */
+layout(constant_id = 0) const int VS_TAPS = 4;
+const int VS_TAPS_ARRAY = VS_TAPS > 0 ? VS_TAPS : 1;
 layout(std430, binding = 0) readonly buffer Globals { VsSweepGlobals G; };
 layout(std430, binding = 1) readonly buffer Directions { VsSweepDirection uDir[]; };
-layout(std430, binding = 2) buffer Stack { float uStack[]; };
-layout(std430, binding = 3) buffer Prefix { float uPrefix[]; };
-layout(push_constant) uniform Push { uint firstSlice; uint count; uint firstDirection; uint pass; } pc;
+layout(std430, binding = 2) readonly buffer Stack { float uStack[]; };
+layout(std430, binding = 3) writeonly buffer Filtered { float uFiltered[]; };
+layout(push_constant) uniform Push { uint firstSlice; uint count; uint firstDirection; } pc;
 
-/* Integral of the piecewise-constant line over [0, u] (texel j covers [j, j+1)). */
-float integral(uint base, uint stride, uint n, float u)
-{
-  u = clamp(u, 0.0, float(n));
-  uint j = min(uint(floor(u)), n - 1u);
-  float before = j == 0u ? 0.0 : uPrefix[base + (j - 1u) * stride];
-  float here = uPrefix[base + j * stride];
-  return before + (u - float(j)) * (here - before);
-}
-
+/* One invocation per cell index along a per slice per direction: the weights are the same for
+ * every kernel row, so they are computed once and the invocation walks the rows. */
 void main()
 {
   uint s = gl_GlobalInvocationID.y;
   VsSweepDirection D = uDir[pc.firstDirection + gl_GlobalInvocationID.z];
-  uint k = D.axes.x;
+  uint k = D.axes.x, a = D.axes.y;
   uint slice = pc.firstSlice + s;
-  if (s >= pc.count || slice >= G.grid[k])
+  uint ca = gl_GlobalInvocationID.x;
+  uint cellsA = G.grid[a];
+  uvec2 n = D.kernel.xy;
+  if (s >= pc.count || slice >= G.grid[k] || ca >= cellsA)
     return;
-  bool rows = pc.pass == 0u;
-  uint n = rows ? D.kernel.x : D.kernel.y;
-  uint lines = rows ? D.kernel.y : D.kernel.x;
-  uint line = gl_GlobalInvocationID.x;
-  if (line >= lines)
-    return;
-  uint stride = rows ? 1u : D.kernel.x;
-  uint rays = D.kernel.x * D.kernel.y;
-  uint base = D.axes.w * pc.count + s * rays + (rows ? line * D.kernel.x : line);
-
   float t = vs_slice_t(G.boxMin[k], G.cellSize[k], G.grid[k], D.planeOrigin[k], D.travel[k], D.kernel.z == 1u, slice);
-  float width = rows ? D.filterSize.x + 2.0 * t * D.filterSize.z : D.filterSize.y + 2.0 * t * D.filterSize.w;
-  if (width <= 1.0)
+  float pa = G.boxMin[a] + (float(ca) + 0.5) * G.cellSize[a];
+  float u = (pa - t * D.travel[a] - D.planeOrigin[a]) / D.kernelStep.x;
+  VsKernelTaps w = vs_kernel_taps(u, n.x, D.filterSize.x + 2.0 * t * D.filterSize.z);
+  uint base = D.axes.w * pc.count + s * n.x * n.y;
+  uint out0 = D.filtered.x * pc.count + s * cellsA * n.y + ca;
+  if (VS_TAPS == 0)
+  {
+    // Wide boxes: the rays of nonzero weight in a loop, weights recomputed per row.
+    float weights = 0.0;
+    for (int i = w.first; i <= w.last; ++i)
+      weights += vs_kernel_tap_weight(w.lo0, w.hi0, w.inv0, w.lo1, w.hi1, w.inv1, w.f, i);
+    for (uint row = 0u; row < n.y; ++row)
+    {
+      float sum = 0.0;
+      for (int i = w.first; i <= w.last; ++i)
+        sum += uStack[base + row * n.x + uint(i)] * vs_kernel_tap_weight(w.lo0, w.hi0, w.inv0, w.lo1, w.hi1, w.inv1, w.f, i);
+      uFiltered[out0 + row * cellsA] = sum / weights;
+    }
     return;
-  float sum = 0.0;
-  for (uint j = 0u; j < n; ++j)
-  {
-    sum += uStack[base + j * stride];
-    uPrefix[base + j * stride] = sum;
   }
-  float halfWidth = 0.5 * width;
-  for (uint j = 0u; j < n; ++j)
+  float weight[VS_TAPS_ARRAY];
+  uint ray[VS_TAPS_ARRAY];
+  float weights = 0.0;
+  for (int i = 0; i < VS_TAPS; ++i)
   {
-    float lo = max(float(j) + 0.5 - halfWidth, 0.0);
-    float hi = min(float(j) + 0.5 + halfWidth, float(n));
-    uStack[base + j * stride] = (integral(base, stride, n, hi) - integral(base, stride, n, lo)) / (hi - lo);
+    int j = w.first + i;
+    weight[i] = j <= w.last ? vs_kernel_tap_weight(w.lo0, w.hi0, w.inv0, w.lo1, w.hi1, w.inv1, w.f, j) : 0.0;
+    ray[i] = base + uint(min(j, int(n.x) - 1));
+    weights += weight[i];
+  }
+  for (uint row = 0u; row < n.y; ++row)
+  {
+    float sum = 0.0;
+    for (int i = 0; i < VS_TAPS; ++i)
+      sum += uStack[ray[i] + row * n.x] * weight[i];
+    // Divided by the weights' sum (1 up to rounding), so that a constant kernel stays exactly constant.
+    uFiltered[out0 + row * cellsA] = sum / weights;
   }
 }

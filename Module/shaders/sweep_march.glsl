@@ -6,14 +6,26 @@
  * the sweep plane reaches that slice). One invocation walks many slices, so a
  * whole sweep is a few dispatches instead of a few per slice.
  * Included by sweep_march.comp (full resolution) and by sweep_march_pooled.comp, with VS_SWEEP_POOLED: it marches the pooled
- * extinction volume (bound as uVolume, its occupancy as uMajorant) in pooled coordinates.
+ * extinction volume (bound as the image uPool, its occupancy as uPoolOccupancy) in pooled coordinates.
+ *
+ * A ray only marches the slices its segment of the occupied box (G.occupiedMin/Max) overlaps, and
+ * stops marching once its transmittance is below G.march.z: the slices before are the value it
+ * starts with, the slices after the value it stopped at (an overestimate by less than G.march.z,
+ * which the renderer's pdf absorbs: the grid shapes sampling only). Lavapipe runs a loop for a SIMD
+ * group of 8 rays until all 8 leave it, so a row of rays stops marching when all its rays have.
  */
 #include "sweep_params.h"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+#ifdef VS_SWEEP_POOLED
+layout(binding = 0, r32f) uniform readonly image3D uPool;
+layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
+layout(binding = 2, r32f) uniform readonly image3D uPoolOccupancy;
+#else
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
 layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
 layout(binding = 2, r32f) uniform readonly image3D uMajorant;
+#endif
 layout(std430, binding = 3) readonly buffer Globals { VsSweepGlobals G; };
 layout(std430, binding = 4) readonly buffer Directions { VsSweepDirection uDir[]; };
 layout(std430, binding = 5) buffer State { float uState[]; };  /* V per ray between chunks */
@@ -40,27 +52,40 @@ void main()
   o[D.axes.y] += float(r.x) * D.kernelStep.x;
   o[D.axes.z] += float(r.y) * D.kernelStep.y;
   vec3 d = D.travel.xyz;
-  vec2 box = vs_intersect_box(o, d, G.boxMin.xyz, G.boxMax.xyz);
-#ifdef VS_SWEEP_POOLED
-  // Clip planes cut the ray's interval (exact), the pooled march then runs in pooled texels.
+  // The part of the ray that can gather optical depth: inside the occupied box and the clip planes.
+  vec2 box = vs_intersect_box(o, d, G.occupiedMin.xyz, G.occupiedMax.xyz);
   vec2 keep = vs_clip_interval(o, d);
   box = vec2(max(box.x, keep.x), min(box.y, keep.y));
+#ifdef VS_SWEEP_POOLED
+  // The pooled march runs in pooled texels.
   o = (o - vec3(G.pool.z)) / G.pool.x;
   d = d / G.pool.x;
 #endif
+  float stop = G.march.z;
   float V = pc.firstSlice == 0u ? 1.0 : uState[D.axes.w + ray];
-  float t0 = pc.firstSlice == 0u ? 0.0
-    : vs_slice_t(boxMinK, cellSizeK, slices, startK, travelK, descending, pc.firstSlice - 1u);
-  for (uint s = 0u; s < pc.count; ++s)
+  uint end = min(pc.firstSlice + pc.count, slices);
+  uint out0 = D.axes.w * pc.count + ray - pc.firstSlice * rays; /* stack index of slice s: out0 + s * rays */
+  // Slices whose segment ends before the ray reaches the occupied box keep V (slice t is
+  // t(0) + s * dt; one slice of margin against rounding: a marched empty segment adds nothing).
+  float tFirst = vs_slice_t(boxMinK, cellSizeK, slices, startK, travelK, descending, 0u);
+  float dtSlice = cellSizeK / abs(travelK);
+  float ahead = box.x < box.y ? clamp(floor((box.x - tFirst) / dtSlice), 0.0, float(slices)) : float(slices);
+  uint enter = clamp(uint(ahead), pc.firstSlice, end);
+  uint s = pc.firstSlice;
+  for (; s < enter; ++s)
+    uStack[out0 + s * rays] = V;
+  float t0 = s == 0u ? 0.0 : vs_slice_t(boxMinK, cellSizeK, slices, startK, travelK, descending, s - 1u);
+  for (; s < end; ++s)
   {
-    uint slice = pc.firstSlice + s;
-    if (slice >= slices)
+    if (!(V > stop) || t0 >= box.y)
       break;
-    float t1 = vs_slice_t(boxMinK, cellSizeK, slices, startK, travelK, descending, slice);
-    if (V > G.march.z)
-      V *= exp(-vs_optical_depth(o, d, max(t0, box.x), min(t1, box.y)));
-    uStack[D.axes.w * pc.count + s * rays + ray] = V;
+    float t1 = vs_slice_t(boxMinK, cellSizeK, slices, startK, travelK, descending, s);
+    V *= exp(-vs_optical_depth(o, d, max(t0, box.x), min(t1, box.y)));
+    uStack[out0 + s * rays] = V;
     t0 = t1;
   }
+  // Past the occupied box, or stopped: V holds for the rest of the chunk (and the next ones).
+  for (; s < end; ++s)
+    uStack[out0 + s * rays] = V;
   uState[D.axes.w + ray] = V;
 }

@@ -23,6 +23,8 @@ struct VsSweepDirection
   uvec4 axes;       /* x: sweep axis k, y: in-plane axis a, z: in-plane axis b, w: first ray of this direction in its
                        batch (kernel state index; its kernel stack starts at w * slices per chunk) */
   uvec4 kernel;     /* x: rays along a, y: rays along b, z: 1 if slices go from high to low k, w: direction index */
+  uvec4 filtered;   /* x: first entry of this direction's kernel filtered along a (cells along a x rays along b
+                       per slice) in its batch; its values start at x * slices per chunk. y, z, w: unused */
 };
 
 /* What every sweep and brute-force dispatch shares. */
@@ -49,6 +51,11 @@ struct VsSweepGlobals
   vec4 cropLo;       /* the cropping regions (vsVolumeGeometry.h): index-space planes, xyz */
   vec4 cropHi;
   uvec4 crop;        /* x: the regions' flags (0 = none: the box is all), y, z, w: unused */
+  /* Index-space box holding every voxel of nonzero extinction, widened by the pooled texels'
+   * reach (conservative: the bricks of nonzero majorant): outside it a kernel ray gathers no
+   * optical depth, so the march starts and ends there instead of at the volume's box. */
+  vec4 occupiedMin;
+  vec4 occupiedMax;
 };
 
 /* Distance along the light (world units) from the start plane to the centre plane of
@@ -60,6 +67,52 @@ VS_FUNC float vs_slice_t(float boxMinK, float cellSizeK, uint cellsK, float star
   uint c = descending ? cellsK - 1u - slice : slice;
   float coordinate = boxMinK + (float(c) + 0.5f) * cellSizeK;
   return (coordinate - startK) / travelK;
+}
+
+/* The sweep-space filter (Sec. 8) and the projection's linear interpolation along one kernel axis,
+ * as one set of weights on the kernel's texels. Kernel ray i sits at coordinate i; the filtered
+ * kernel at ray c is the mean of the piecewise-constant line (ray i covering [i - 0.5, i + 0.5))
+ * over the box of `width` rays centred on c, cut to the line ([-0.5, n - 0.5]) and renormalised;
+ * a width below one ray is no filtering (the box of ray c alone). The projection reads the
+ * filtered kernel linearly at coordinate u between rays c0 = floor(u) and c0 + 1, clamped to the
+ * line. So ray i's weight is (1 - f) |[i, i + 1) n B0| / |B0| + f |[i, i + 1) n B1| / |B1|, in
+ * coordinates shifted by one half (ray i covering [i, i + 1)), for the boxes B0, B1 around c0, c1,
+ * and only rays first..last have any. One pass reads what the old separate filter passes (prefix
+ * sums and differences of their interpolant, per ray) and the bilinear read computed. */
+struct VsKernelTaps
+{
+  float f;              /* the linear weight of c1 */
+  float lo0, hi0, inv0; /* B0 = [lo0, hi0] (shifted coordinates), inv0 = 1 / |B0| */
+  float lo1, hi1, inv1;
+  int first, last;      /* the rays of nonzero weight */
+};
+
+VS_FUNC VsKernelTaps vs_kernel_taps(float u, uint n, float width)
+{
+  VsKernelTaps w;
+  float halfWidth = 0.5f * max(width, 1.0f);
+  float x0 = floor(u);
+  w.f = u - x0;
+  float last = float(n) - 1.0f;
+  float c0 = clamp(x0, 0.0f, last), c1 = clamp(x0 + 1.0f, 0.0f, last);
+  w.lo0 = max(c0 + 0.5f - halfWidth, 0.0f);
+  w.hi0 = min(c0 + 0.5f + halfWidth, float(n));
+  w.lo1 = max(c1 + 0.5f - halfWidth, 0.0f);
+  w.hi1 = min(c1 + 0.5f + halfWidth, float(n));
+  w.inv0 = 1.0f / (w.hi0 - w.lo0);
+  w.inv1 = 1.0f / (w.hi1 - w.lo1);
+  w.first = int(floor(w.lo0));
+  w.last = min(int(ceil(w.hi1)), int(n)) - 1;
+  return w;
+}
+
+/* The weight of ray i (first <= i <= last) under vs_kernel_taps' w. */
+VS_FUNC float vs_kernel_tap_weight(float lo0, float hi0, float inv0, float lo1, float hi1, float inv1, float f, int i)
+{
+  float a = float(i), b = a + 1.0f;
+  float o0 = max(min(b, hi0) - max(a, lo0), 0.0f);
+  float o1 = max(min(b, hi1) - max(a, lo1), 0.0f);
+  return (1.0f - f) * o0 * inv0 + f * o1 * inv1;
 }
 
 VS_NAMESPACE_END
