@@ -71,21 +71,7 @@ vec2 vs_clip_interval(vec3 o, vec3 d)
 #ifdef VS_SWEEP_POOLED
 layout(constant_id = 0) const uint VS_SWEEP_NEAREST = 0u; /* 1: nearest-neighbour reconstruction */
 
-/* Ray-box intersection in index space (volume_access.glsl's vs_intersect_box, which the pooled
- * shaders do not include: they bind no volume image). */
-vec2 vs_intersect_box(vec3 o, vec3 d, vec3 bmin, vec3 bmax)
-{
-  vec3 inv = 1.0 / d;
-  vec3 ta = (bmin - o) * inv;
-  vec3 tb = (bmax - o) * inv;
-  vec3 tmin = min(ta, tb);
-  vec3 tmax = max(ta, tb);
-  float t0 = max(max(isnan(tmin.x) ? -1e30 : tmin.x, isnan(tmin.y) ? -1e30 : tmin.y),
-    isnan(tmin.z) ? -1e30 : tmin.z);
-  float t1 = min(min(isnan(tmax.x) ? 1e30 : tmax.x, isnan(tmax.y) ? 1e30 : tmax.y),
-    isnan(tmax.z) ? 1e30 : tmax.z);
-  return vec2(t0, t1);
-}
+#include "ray_box.glsl"
 
 /* Pooled extinction at pooled-texel point q (clamped to the volume): trilinear, or under nearest
  * interpolation the texel holding q, whose P^3 voxels' nearest-neighbour cells are exactly the

@@ -12,6 +12,7 @@
  * extinction and zero albedo (NaN/Inf voxels are empty space).
  */
 #include "interpolation.h"
+#include "ray_box.glsl"
 #include "vs_prelude.h"
 
 /* Trilinear interpolation of the scalar at continuous index p with 8 imageLoads
@@ -198,23 +199,6 @@ float vs_nearest_max_extinction(vec3 f0, vec3 f1, vec4 c0, vec4 c1, vec4 tf)
   vec4 xy = vec4(low.x && low.y, high.x && low.y, low.x && high.y, high.x && high.y);
   vec4 m = max(e0 * xy * float(low.z), e1 * xy * float(high.z));
   return max(max(m.x, m.y), max(m.z, m.w));
-}
-
-/* Ray-box intersection in index space; returns (tNear, tFar), empty when tNear >= tFar. */
-vec2 vs_intersect_box(vec3 o, vec3 d, vec3 bmin, vec3 bmax)
-{
-  vec3 inv = 1.0 / d;
-  vec3 ta = (bmin - o) * inv;
-  vec3 tb = (bmax - o) * inv;
-  vec3 tmin = min(ta, tb);
-  vec3 tmax = max(ta, tb);
-  /* An axis-parallel ray (d = 0 on an axis) gives inf/-inf or NaN when it lies on a face;
-   * treat NaN as "no constraint" so rays on a face are inside. */
-  float t0 = max(max(isnan(tmin.x) ? -1e30 : tmin.x, isnan(tmin.y) ? -1e30 : tmin.y),
-    isnan(tmin.z) ? -1e30 : tmin.z);
-  float t1 = min(min(isnan(tmax.x) ? 1e30 : tmax.x, isnan(tmax.y) ? 1e30 : tmax.y),
-    isnan(tmax.z) ? 1e30 : tmax.z);
-  return vec2(t0, t1);
 }
 
 /* Clip the interval [t0,t1] of world ray o + t d against the half-spaces kept by the planes. */
