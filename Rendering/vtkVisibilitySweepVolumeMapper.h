@@ -177,6 +177,27 @@ public:
   const char* GetCameraEstimatorAsString() { return this->CameraEstimator == ReservoirCamera ? "ReservoirCamera" : "CollisionCamera"; }
   ///@}
 
+  enum ControlExtinctions
+  {
+    NoControl = 0,         // plain ratio tracking (shadow rays) and delta tracking (camera rays)
+    ShadowRayControl = 1,  // residual ratio tracking of the shadow rays (Novak et al. 2014)
+    CameraRayControl = 2,  // decomposition tracking of the camera rays (Kutz et al. 2017)
+    FullControl = 3        // both
+  };
+  ///@{
+  /** Control extinction: each majorant brick also holds the smallest extinction of its samples; the
+   *  trackers integrate that part exactly (an exponential) and track only the rest, at the residual
+   *  majorant. Unbiased either way (TestMonteCarlo); it saves volume reads where bricks are dense
+   *  throughout. Ignored with cropping regions. Default: see docs/benchmarks.md. */
+  vtkSetClampMacro(ControlExtinction, int, NoControl, FullControl);
+  vtkGetMacro(ControlExtinction, int);
+  const char* GetControlExtinctionAsString()
+  {
+    static const char* names[] = { "NoControl", "ShadowRayControl", "CameraRayControl", "FullControl" };
+    return names[this->ControlExtinction & 3];
+  }
+  ///@}
+
   ///@{
   /** Samples per pixel added by each Render() (default 1) and the total to stop at (default 4096). */
   vtkSetClampMacro(SamplesPerFrame, int, 1, 1 << 16);
@@ -492,6 +513,7 @@ protected:
   int DirectionTableBuildCount = 0;
   double LastDirectionTableSeconds = 0.0;
   int CameraEstimator = CollisionCamera;
+  int ControlExtinction = NoControl;
   int SamplesPerFrame = 1;
   int MaximumSamples = 4096;
   double VisibilityEpsilon = 0.01;

@@ -37,6 +37,7 @@ struct Options
   bool Quick = false;
   int ShadowRays = 1;
   std::string Camera = "collision";
+  std::string Control; // empty: the mapper's default
   std::vector<double> Defensive{ 0.0 }; // TwoStep's defensive weights to measure
 };
 
@@ -81,6 +82,13 @@ Measurement Measure(
   mapper->SetShadowRays(o.ShadowRays);
   mapper->SetCameraEstimator(o.Camera == "reservoir" ? vtkVisibilitySweepVolumeMapper::ReservoirCamera
                                                      : vtkVisibilitySweepVolumeMapper::CollisionCamera);
+  if (!o.Control.empty())
+  {
+    mapper->SetControlExtinction(o.Control == "both" ? vtkVisibilitySweepVolumeMapper::FullControl
+        : o.Control == "shadow"                    ? vtkVisibilitySweepVolumeMapper::ShadowRayControl
+        : o.Control == "camera"                    ? vtkVisibilitySweepVolumeMapper::CameraRayControl
+                                                   : vtkVisibilitySweepVolumeMapper::NoControl);
+  }
   mapper->SetMaximumSamples(1 << 30);
   mapper->SetSamplesPerFrame(o.Spp);
   Measurement m;
@@ -263,6 +271,9 @@ void AddBenchOverhead(CLI::App& bench)
     "skip the variants of the grid strategies (stochastic cell without the direction table, trilinear cells)");
   cmd->add_flag("--quick", o->Quick, "64 x 64, 1 spp, 1 frame (seconds; for tests)");
   cmd->add_option("--shadow-rays", o->ShadowRays, "shadow rays per scatter point (splitting)")->check(CLI::Range(1, 64));
+  cmd->add_option("--control", o->Control,
+       "control extinction: none, shadow (residual ratio tracking), camera (decomposition tracking) or both")
+    ->check(CLI::IsMember({ "none", "shadow", "camera", "both" }));
   cmd->add_option("--camera", o->Camera, "camera estimator: collision (delta tracking) or reservoir")
     ->check(CLI::IsMember({ "collision", "reservoir" }));
   cmd->add_option("--defensive", o->Defensive, "TwoStep's defensive weights to measure (default 0 = plain TwoStep)")

@@ -460,6 +460,7 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   mapper->SetExposure(scene.Render.Exposure);
   mapper->SetToneMapping(scene.Render.ToneMapping);
   mapper->SetUpdateScheme(UpdateSchemeIndex(scene.Render.UpdateScheme));
+  mapper->SetControlExtinction(ControlExtinctionIndex(scene.Render.ControlExtinction));
   mapper->SetDirectionsPerFrame(scene.Render.DirectionsPerFrame);
   mapper->SetStaticInterval(scene.Render.StaticInterval);
   const auto& v = scene.Visibility;

@@ -530,7 +530,7 @@ Scene::RenderSection ParseRender(const json& v)
   RequireObject(v, path);
   CheckKeys(v, path,
     { "width", "height", "spp", "strategy", "seed", "exposure", "tone_mapping", "update_scheme",
-      "directions_per_frame", "static_interval" });
+      "directions_per_frame", "static_interval", "control_extinction" });
   Scene::RenderSection s;
   if (v.contains("width"))
   {
@@ -574,6 +574,11 @@ Scene::RenderSection ParseRender(const json& v)
   {
     s.StaticInterval = Integer(v["static_interval"], "render.static_interval", 1,
       std::numeric_limits<int>::max(), "frames between static updates");
+  }
+  if (v.contains("control_extinction"))
+  {
+    s.ControlExtinction = String(v["control_extinction"], "render.control_extinction");
+    ControlExtinctionIndex(s.ControlExtinction, "render.control_extinction");
   }
   return s;
 }
@@ -732,6 +737,23 @@ const std::vector<std::string>& SceneUpdateSchemes()
   return names;
 }
 
+const std::vector<std::string>& SceneControlExtinctions()
+{
+  static const std::vector<std::string> names{ "none", "shadow", "camera", "both" };
+  return names;
+}
+
+int ControlExtinctionIndex(const std::string& name, const std::string& key)
+{
+  const auto& names = SceneControlExtinctions();
+  auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end())
+  {
+    Fail(key, "unknown control extinction '" + name + "' (expected " + List(names) + ")");
+  }
+  return static_cast<int>(it - names.begin());
+}
+
 int UpdateSchemeIndex(const std::string& name, const std::string& key)
 {
   const auto& names = SceneUpdateSchemes();
@@ -785,8 +807,9 @@ bool Scene::CameraSection::operator==(const CameraSection& o) const
 bool Scene::RenderSection::operator==(const RenderSection& o) const
 {
   return std::tie(Width, Height, Spp, Strategy, Seed, Exposure, ToneMapping, UpdateScheme, DirectionsPerFrame,
-           StaticInterval) == std::tie(o.Width, o.Height, o.Spp, o.Strategy, o.Seed, o.Exposure, o.ToneMapping,
-                                o.UpdateScheme, o.DirectionsPerFrame, o.StaticInterval);
+           StaticInterval, ControlExtinction) == std::tie(o.Width, o.Height, o.Spp, o.Strategy, o.Seed, o.Exposure,
+                                                   o.ToneMapping, o.UpdateScheme, o.DirectionsPerFrame,
+                                                   o.StaticInterval, o.ControlExtinction);
 }
 
 bool Scene::VisibilitySection::operator==(const VisibilitySection& o) const
@@ -981,7 +1004,8 @@ json ToJson(const Scene& s)
   j["render"] = { { "width", s.Render.Width }, { "height", s.Render.Height }, { "spp", s.Render.Spp },
     { "strategy", s.Render.Strategy }, { "seed", s.Render.Seed }, { "exposure", s.Render.Exposure },
     { "tone_mapping", s.Render.ToneMapping }, { "update_scheme", s.Render.UpdateScheme },
-    { "directions_per_frame", s.Render.DirectionsPerFrame }, { "static_interval", s.Render.StaticInterval } };
+    { "directions_per_frame", s.Render.DirectionsPerFrame }, { "static_interval", s.Render.StaticInterval },
+    { "control_extinction", s.Render.ControlExtinction } };
 
   const auto& v = s.Visibility;
   json vis = json::object();

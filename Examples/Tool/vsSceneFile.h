@@ -101,6 +101,9 @@ struct Scene
     std::string UpdateScheme = "round-robin"; // lazy visibility updates between time steps (the default)
     int DirectionsPerFrame = 4;
     int StaticInterval = 16;
+    // The trackers' control extinction (vtkVisibilitySweepVolumeMapper::ControlExtinction):
+    // "none", "shadow" (residual ratio tracking), "camera" (decomposition tracking) or "both".
+    std::string ControlExtinction = "none";
     bool operator==(const RenderSection& o) const;
   };
   struct VisibilitySection
@@ -153,6 +156,9 @@ int StrategyIndex(const std::string& name, const std::string& key = "render.stra
 const std::vector<std::string>& SceneUpdateSchemes();
 /** The mapper's enum value of an update scheme name; throws std::runtime_error naming `key` if unknown. */
 int UpdateSchemeIndex(const std::string& name, const std::string& key = "render.update_scheme");
+/** The control extinction names, in the order of vtkVisibilitySweepVolumeMapper::ControlExtinctions. */
+const std::vector<std::string>& SceneControlExtinctions();
+int ControlExtinctionIndex(const std::string& name, const std::string& key = "render.control_extinction");
 
 /** Parses a scene; relative paths resolve against baseDir. Throws std::runtime_error naming the key path. */
 Scene ParseScene(const nlohmann::json& j, const std::string& baseDir);

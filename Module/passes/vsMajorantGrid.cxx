@@ -40,7 +40,7 @@ void MajorantGrid::UpdateRanges(const DeviceVolume& volume)
   auto shared = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_majorant_minmax),
     { BindingType::StorageImage, BindingType::StorageBuffer }, 32, "majorant ranges");
   const ComputePipeline& pipeline = *shared;
-  Buffer ranges(this->Context_, count * 2 * sizeof(float), "brick ranges");
+  Buffer ranges(this->Context_, count * 4 * sizeof(float), "brick ranges");
   DescriptorSet set(pipeline);
   set.Bind(0, volume.Image()).Bind(1, ranges);
   struct
@@ -55,16 +55,16 @@ void MajorantGrid::UpdateRanges(const DeviceVolume& volume)
   batch.EndTimer();
   batch.Submit();
   this->LastSeconds_ = batch.Seconds("ranges");
-  this->Ranges_.resize(count * 2);
-  ranges.Download(this->Ranges_.data(), count * 2 * sizeof(float));
+  this->Ranges_.resize(count * 4);
+  ranges.Download(this->Ranges_.data(), count * 4 * sizeof(float));
   if (bricks != this->Bricks_ || !this->Image_)
   {
     this->Image_.reset();
-    this->EmptyImage_.reset();
+    this->TrackingImage_.reset();
     this->Image_ = std::make_unique<Image3D>(this->Context_, bricks[0], bricks[1], bricks[2],
       vk::Format::eR32Sfloat, "majorant grid");
-    this->EmptyImage_ = std::make_unique<Image3D>(this->Context_, bricks[0], bricks[1], bricks[2],
-      vk::Format::eR32Sfloat, "empty-space distances");
+    this->TrackingImage_ = std::make_unique<Image3D>(this->Context_, bricks[0], bricks[1], bricks[2],
+      vk::Format::eR32G32B32A32Sfloat, "majorant walk bricks");
     this->Bricks_ = bricks;
   }
   this->Majorants_.clear();
@@ -77,19 +77,29 @@ void MajorantGrid::UpdateMajorants(const TransferFunctionSamples& tf)
   {
     throw InputError("majorants need the brick ranges first (UpdateRanges)");
   }
-  const size_t count = this->Ranges_.size() / 2;
+  const size_t count = this->Ranges_.size() / 4;
   this->Majorants_.assign(count, 0.0f);
+  this->Controls_.assign(count, 0.0f);
   for (size_t i = 0; i < count; ++i)
   {
-    float lo = this->Ranges_[2 * i], hi = this->Ranges_[2 * i + 1];
+    float lo = this->Ranges_[4 * i], hi = this->Ranges_[4 * i + 1];
+    const bool gap = this->Ranges_[4 * i + 2] != 0.0f; // a non-finite voxel: empty samples
     if (lo <= hi)
     {
       this->Majorants_[i] = tf.MaxExtinction(lo, hi);
+      this->Controls_[i] = gap ? 0.0f : std::min(tf.MinExtinction(lo, hi), this->Majorants_[i]);
     }
   }
   this->Image_->Upload(this->Majorants_.data(), count * sizeof(float));
   this->EmptyDistances_ = EmptySpaceDistance(this->Majorants_, this->Bricks_, kMaxEmptyDistance);
-  this->EmptyImage_->Upload(this->EmptyDistances_.data(), count * sizeof(float));
+  std::vector<float> tracking(4 * count, 0.0f);
+  for (size_t i = 0; i < count; ++i)
+  {
+    tracking[4 * i] = this->Majorants_[i];
+    tracking[4 * i + 1] = this->Controls_[i];
+    tracking[4 * i + 2] = this->EmptyDistances_[i];
+  }
+  this->TrackingImage_->Upload(tracking.data(), tracking.size() * sizeof(float));
   ++this->MajorantUpdates_;
 }
 

@@ -6,7 +6,9 @@
 // samples in bricks whose majorant is 0 (empty space).
 //
 // With the majorants, how far empty space extends around every brick (vsEmptySpaceDistance.h),
-// for the render kernel to cross it in one step.
+// for the render kernel to cross it in one step, and a lower bound of the extinction per brick
+// (the control of residual and decomposition tracking); the render kernel reads all three of a
+// brick in one load (TrackingImage).
 //
 // Two steps so each change does only the work it needs: the scalar range of every
 // brick (a device pass over the voxels, on a data change) and the majorants from
@@ -39,9 +41,15 @@ public:
   void UpdateMajorants(const TransferFunctionSamples& tf);
 
   const Image3D& Image() const { return *this->Image_; }
+  /** Per brick: a lower bound of the extinction in it (the smallest the transfer function gives
+   *  any scalar of the brick's range; 0 where a voxel is not finite): residual and decomposition
+   *  tracking's control. */
+  const std::vector<float>& Controls() const { return this->Controls_; }
+  /** What the render kernel's majorant walk reads of a brick, in one load (rgba32f): the majorant,
+   *  the control, the empty-space distance (below), 0. */
+  const Image3D& TrackingImage() const { return *this->TrackingImage_; }
   /** Per brick: 0 where the majorant is not 0, else the chessboard distance in bricks to the
-   *  nearest brick where it is not (EmptySpaceDistance, capped at kMaxEmptyDistance), r32f. */
-  const Image3D& EmptyDistanceImage() const { return *this->EmptyImage_; }
+   *  nearest brick where it is not (EmptySpaceDistance, capped at kMaxEmptyDistance). */
   const std::vector<float>& EmptyDistances() const { return this->EmptyDistances_; }
   static constexpr uint32_t kMaxEmptyDistance = 1u << 16;
   std::array<uint32_t, 3> Bricks() const { return this->Bricks_; }
@@ -60,11 +68,10 @@ private:
   std::shared_ptr<Context> Context_;
   uint32_t BrickSize_;
   std::array<uint32_t, 3> Bricks_{ { 0, 0, 0 } };
-  std::vector<float> Ranges_; // min, max per brick
-  std::vector<float> Majorants_;
-  std::unique_ptr<Image3D> Image_;
+  std::vector<float> Ranges_; // min, max, non-finite flag, 0 per brick
+  std::vector<float> Majorants_, Controls_;
+  std::unique_ptr<Image3D> Image_, TrackingImage_;
   std::vector<float> EmptyDistances_;
-  std::unique_ptr<Image3D> EmptyImage_;
   double LastSeconds_ = 0.0;
   uint64_t RangeUpdates_ = 0, MajorantUpdates_ = 0;
 };

@@ -65,8 +65,10 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   const uint32_t camera = params.tracking.z > 0.5f ? shared::VS_CAMERA_RESERVOIR : shared::VS_CAMERA_COLLISION;
   const uint32_t interpolation = uint32_t(params.tracking.w + 0.5f), cropping = params.crop.x != 0u ? 1u : 0u;
   const bool defensive = Defensive(params);
+  // Hidden cropping regions have no extinction, below any brick's control: no control there.
+  const uint32_t control = cropping ? 0u : params.crop.y & (shared::VS_CONTROL_SHADOW | shared::VS_CONTROL_CAMERA);
   const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping,
-    table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u, quads ? 1u : 0u };
+    table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u, quads ? 1u : 0u, control };
   auto& slot = this->Pipelines_[specialization];
   auto& pipeline = slot[format];
   if (!pipeline)
@@ -83,7 +85,9 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
       (refine ? ", cell walk" : "") + (camera == shared::VS_CAMERA_RESERVOIR ? ", reservoir camera" : "") +
       (interpolation != 0u ? ", nearest" : "") + (cropping ? ", cropping regions" : "") +
       (table ? ", direction table" : "") + (defensive ? ", defensive" : "") +
-      (this->EmptySpaceSkipping_ ? "" : ", no empty-space skipping") + (quads ? ", 8-bit quads)" : ")");
+      (this->EmptySpaceSkipping_ ? "" : ", no empty-space skipping") + (quads ? ", 8-bit quads" : "") +
+      ((control & shared::VS_CONTROL_SHADOW) ? ", residual ratio tracking" : "") +
+      ((control & shared::VS_CONTROL_CAMERA) ? ", decomposition tracking" : "") + ")";
     if (format == 3)
     {
       pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_mc_render_count), bindings, sizeof(uint32_t), name,
@@ -253,7 +257,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   DescriptorSet set(pipeline);
   set.Bind(0, volume.Image())
     .BindTexels(1, tf.Lut(), vk::Format::eR32Sfloat)
-    .Bind(2, majorants.Image())
+    .Bind(2, majorants.TrackingImage())
     .Bind(3, useGrid ? grid->Image() : *this->NoGrid_)
     .Bind(4, *this->Params_)
     .BindTexels(5, environment.Radiance(), vk::Format::eR32G32B32A32Sfloat)
@@ -263,8 +267,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     .Bind(9, *this->Comp_)
     .Bind(10, *this->Squares_)
     .Bind(11, *this->Progress_)
-    .BindTexels(12, table ? this->Table_->Nodes() : *this->NoTable_, vk::Format::eR32Uint)
-    .Bind(13, majorants.EmptyDistanceImage());
+    .BindTexels(12, table ? this->Table_->Nodes() : *this->NoTable_, vk::Format::eR32Uint);
   if (!quads && !this->NoQuads_)
   {
     this->NoQuads_ = std::make_unique<Image3D>(this->Context_, 1, 1, 1, vk::Format::eR32Uint, "no volume quads");

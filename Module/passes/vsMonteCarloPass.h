@@ -66,7 +66,7 @@ public:
    *  which counts reads; same samples, slower. */
   void SetCountLookups(bool on) { this->CountLookups_ = on; }
   /** Whether the trackers cross empty space (bricks of majorant 0) a cube of bricks at a time
-   *  (MajorantGrid::EmptyDistanceImage) or a brick at a time. The image is the same bit for bit;
+   *  (MajorantGrid::TrackingImage) or a brick at a time. The image is the same bit for bit;
    *  on by default, off only to measure or test it. */
   void SetEmptySpaceSkipping(bool on) { this->EmptySpaceSkipping_ = on; }
   /** Whether trilinear samples read an integer-coded volume's 8-bit quads (DeviceVolume::Quads,

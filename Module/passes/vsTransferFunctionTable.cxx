@@ -57,7 +57,7 @@ TransferFunctionSamples TransferFunctionSamples::FromFunctions(float smin, float
   return t;
 }
 
-float TransferFunctionSamples::MaxExtinction(float s0, float s1) const
+std::pair<size_t, size_t> TransferFunctionSamples::EntrySpan(float s0, float s1) const
 {
   const size_t n = this->Size();
   const double scale = double(n - 1) / (double(this->ScalarMax) - double(this->ScalarMin));
@@ -65,12 +65,27 @@ float TransferFunctionSamples::MaxExtinction(float s0, float s1) const
     return std::clamp((double(s) - this->ScalarMin) * scale, 0.0, double(n - 1));
   };
   double a = index(std::min(s0, s1)), b = index(std::max(s0, s1));
-  size_t i0 = static_cast<size_t>(std::floor(a));
-  size_t i1 = std::min(n - 1, static_cast<size_t>(std::ceil(b)));
+  return { static_cast<size_t>(std::floor(a)), std::min(n - 1, static_cast<size_t>(std::ceil(b))) };
+}
+
+float TransferFunctionSamples::MaxExtinction(float s0, float s1) const
+{
+  auto [i0, i1] = this->EntrySpan(s0, s1);
   float m = 0.0f;
   for (size_t i = i0; i <= i1; ++i)
   {
     m = std::max(m, this->Entries[4 * i + 3]);
+  }
+  return m;
+}
+
+float TransferFunctionSamples::MinExtinction(float s0, float s1) const
+{
+  auto [i0, i1] = this->EntrySpan(s0, s1);
+  float m = this->Entries[4 * i0 + 3];
+  for (size_t i = i0 + 1; i <= i1; ++i)
+  {
+    m = std::min(m, this->Entries[4 * i + 3]);
   }
   return m;
 }

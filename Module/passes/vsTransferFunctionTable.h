@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace vs
@@ -40,6 +41,9 @@ struct VISSWEEPCORE_EXPORT TransferFunctionSamples
 
   /** Max extinction over scalars in [s0, s1] (both clamped to the table), on the table's linear interpolant. */
   float MaxExtinction(float s0, float s1) const;
+  /** A lower bound of the extinction of every scalar in [s0, s1] (the smallest entry the range's
+   *  linear interpolation reads): the control extinction of residual tracking. */
+  float MinExtinction(float s0, float s1) const;
 
   /** A range-maximum (sparse) table of the extinction for the device: levels k = 1 .. L-1 of
    *  Size() values each, entry i of level k = max extinction of entries [i, i + 2^k) (clamped to the
@@ -48,6 +52,10 @@ struct VISSWEEPCORE_EXPORT TransferFunctionSamples
   std::vector<float> RangeMaxLevels() const;
   /** L: the levels of that table, including level 0. */
   uint32_t RangeMaxLevelCount() const;
+
+private:
+  /** The entries [i0, i1] the linear interpolant reads for scalars in [s0, s1]. */
+  std::pair<size_t, size_t> EntrySpan(float s0, float s1) const;
 };
 
 class VISSWEEPCORE_EXPORT TransferFunctionTable

@@ -50,12 +50,15 @@ layout(constant_id = 7) const uint VS_SPEC_DEFENSIVE = 0u; /* 1: TwoStep mixed w
 layout(constant_id = 8) const uint VS_SPEC_SKIP = 1u;      /* 1: empty space is crossed in one step (binding 13) */
 layout(constant_id = 9) const uint VS_SPEC_QUADS = 0u;     /* 1: trilinear samples read the volume's 8-bit quads
                                                              (binding 15, vsDeviceVolume.h) */
+layout(constant_id = 10) const uint VS_SPEC_CONTROL = 0u;   /* VS_CONTROL_* bits (render_params.h): the trackers
+                                                              split the extinction into the brick's control (binding 16) and the rest */
 layout(constant_id = 6) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
                                                              table (binding 12), stochastic cell only */
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
 #define VS_TF_TEXELS
 layout(binding = 1) uniform samplerBuffer uTF;
-layout(binding = 2, r32f) uniform readonly image3D uMajorant;
+layout(binding = 2, rgba32f) uniform readonly image3D uBricks; /* per brick: majorant, control, empty distance, 0
+                                                                  (vsMajorantGrid.h TrackingImage) */
 layout(binding = 3, VS_VIS_FORMAT) uniform readonly image3D uVisibility;
 layout(std430, binding = 4) readonly buffer Params { VsRenderParams P; };
 /* Tables read at per-lane indices are texel buffers: lavapipe loads them with vector gathers, and
@@ -70,9 +73,6 @@ layout(std430, binding = 10) buffer Squares { vec4 uSq[]; };
 layout(std430, binding = 11) buffer Progress { uint uCount[]; };
 /* The direction table (shared/direction_table.h): per cell, the shares of its map's quadtree nodes. */
 layout(binding = 12) uniform usamplerBuffer uTable; /* r32ui */
-/* Per majorant brick: 0, or (where its majorant is 0) the chessboard distance in bricks to the nearest
- * brick whose majorant is not (vsEmptySpaceDistance.h). */
-layout(binding = 13, r32f) uniform readonly image3D uEmptyDistance;
 /* An integer-coded volume's quads: texel (x, y, z) packs the 8-bit codes of voxels (x, y), (x + 1, y),
  * (x, y + 1), (x + 1, y + 1) of slice z; the scalar is code + P.dims.w. */
 layout(binding = 15, r32ui) uniform readonly uimage3D uQuads;
@@ -168,10 +168,13 @@ vec3 env_radiance_display(vec3 w)
   return sum * gEnvScale;
 }
 
-float brick_majorant(ivec3 b)
+/* Brick b's majorant, control extinction (<= every sample's) and empty-space distance (0, or where
+ * the majorant is 0 the chessboard distance in bricks to the nearest brick whose majorant is not:
+ * vsEmptySpaceDistance.h); b clamps to the grid. */
+vec3 brick_walk_values(ivec3 b)
 {
   VS_COUNT(1);
-  return imageLoad(uMajorant, clamp(b, ivec3(0), gBricks - 1)).r;
+  return imageLoad(uBricks, clamp(b, ivec3(0), gBricks - 1)).xyz;
 }
 
 /* The shortest step the trackers take from t: ~16 ulps of t (or 2e-6 voxel), so t + step > t. */
@@ -321,20 +324,29 @@ float refine_majorant(vec3 o, vec3 d, float t, inout float tNext, float mu)
  * on [t, tNext). One walk for delta tracking and ratio tracking, without loops. In an empty brick
  * at distance k from the nearest non-empty one, the segment runs to the exit of the cube of
  * (2k - 1)^3 empty bricks around it: one step across empty space instead of one per brick. */
+const bool VS_SPEC_SHADOW_CONTROL = (VS_SPEC_CONTROL & VS_CONTROL_SHADOW) != 0u;
+const bool VS_SPEC_CAMERA_CONTROL = (VS_SPEC_CONTROL & VS_CONTROL_CAMERA) != 0u;
+float gControl; /* majorant_segment's control extinction (VS_SPEC_CONTROL): <= the extinction on the segment */
+
 float majorant_segment(vec3 o, vec3 d, float t, float tEnd, out float tNext)
 {
   float tExit;
   ivec3 b = brick_at(o, d, t, tExit);
-  float mu = brick_majorant(b);
+  vec3 brick = brick_walk_values(b);
+  float mu = brick.x;
+  if (VS_SPEC_CONTROL != 0u)
+    gControl = brick.y;
   if (VS_SPEC_SKIP != 0u && mu == 0.0 && all(greaterThanEqual(b, ivec3(0))) && all(lessThan(b, gBricks)))
   {
-    float k = imageLoad(uEmptyDistance, b).r;
+    float k = brick.z;
     if (k > 1.0)
       tExit = max(tExit, brick_cube_exit(o, d, t, b, k - 1.0));
   }
   tNext = min(tExit, tEnd);
   if (VS_SPEC_REFINE != 0u && mu * (tNext - t) > gRefineDepth)
     mu = refine_majorant(o, d, t, tNext, mu);
+  if (VS_SPEC_CONTROL != 0u)
+    gControl = min(gControl, mu);
   return mu;
 }
 
@@ -498,35 +510,62 @@ bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, 
   uint steps = 0u;
   bool hit = false;
   float sHit = 0.0;
+  bool controlHit = false;
   while (t < t1 && !hit)
   {
     float tNext;
     float mu = majorant_segment(o, d, t, t1, tNext);
     steps++;
-    if (mu > 0.0)
+    float h = tNext - t;
+    /* Decomposition tracking (Kutz et al. 2017): the extinction is the brick's control c plus a
+     * residual of majorant mu - c; the collision is the first of the control's (exponential, no
+     * lookup) and the residual's (delta tracking at rate mu - c). c = 0: plain delta tracking. */
+    float c = VS_SPEC_CAMERA_CONTROL ? gControl : 0.0;
+    float hEnd = h;
+    if (c > 0.0)
     {
-      float h = tNext - t;
+      float tc = sample_exponential(vs_rng_float(rng), c);
+      if (tc < h)
+      {
+        hEnd = tc;
+        controlHit = true;
+      }
+    }
+    float mr = mu - c;
+    if (mr > 0.0)
+    {
       float dt = 0.0;
       while (true)
       {
         /* One hash gives the step and the collision's test (the test's number is unused when the
          * step leaves the segment). */
         vec2 u = vs_rng_vec2(rng);
-        dt += sample_exponential(u.x, mu);
-        if (dt >= h)
+        dt += sample_exponential(u.x, mr);
+        if (dt >= hEnd)
           break;
         VS_COUNT(0);
         float s = kernel_sample(o + (t + dt) * d);
-        if (u.y * mu < vs_classify_extinction(s, gTF) || ++steps >= cap)
+        if (u.y * mr < vs_classify_extinction(s, gTF) - c || ++steps >= cap)
         {
           tHit = t + dt;
           sHit = s;
           hit = true;
+          controlHit = false;
           break;
         }
       }
     }
+    if (controlHit)
+    {
+      tHit = t + hEnd;
+      hit = true;
+    }
     t = tNext;
+  }
+  if (controlHit)
+  {
+    VS_COUNT(0);
+    sHit = kernel_sample(o + tHit * d); /* the control's collision needs its albedo */
   }
   cost += steps;
   albedo = hit ? vs_classify(sHit, gTF).rgb : vec3(0.0);
@@ -545,19 +584,36 @@ float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap,
     float tNext;
     float mu = majorant_segment(o, d, t, t1, tNext);
     steps++;
-    if (mu > 0.0)
+    float h = tNext - t;
+    /* Residual ratio tracking (Novak et al. 2014): the brick's control extinction c is integrated
+     * exactly, the residual sigma - c (majorant mu - c) by ratio tracking. c = 0: ratio tracking. */
+    float c = VS_SPEC_SHADOW_CONTROL ? gControl : 0.0;
+    if (c > 0.0)
     {
-      float h = tNext - t;
+      T *= exp(-c * h);
+      if (T < 0.05)
+      {
+        if (vs_rng_float(rng) < 0.5 || T == 0.0)
+        {
+          cost += steps;
+          return 0.0;
+        }
+        T *= 2.0;
+      }
+    }
+    float mr = mu - c;
+    if (mr > 0.0)
+    {
       float dt = 0.0;
       while (true)
       {
         vec2 u = vs_rng_vec2(rng); /* the step, and Russian roulette's number */
-        dt += sample_exponential(u.x, mu);
+        dt += sample_exponential(u.x, mr);
         if (dt >= h)
           break;
         VS_COUNT(0);
         float sigma = vs_classify_extinction(kernel_sample(o + (t + dt) * d), gTF);
-        T *= max(0.0, 1.0 - sigma / mu);
+        T *= max(0.0, 1.0 - (sigma - c) / mr);
         if (++steps >= cap)
         {
           cost += steps;

@@ -19,6 +19,12 @@ VS_CONST uint VS_CAMERA_COLLISION = 0u; /* the camera ray delta-tracked to one r
 VS_CONST uint VS_CAMERA_RESERVOIR = 1u; /* ratio-tracked, one scatter point resampled from all its
                                           tentative collisions (mc_render.glsl camera_reservoir) */
 
+/* Control extinctions (the majorant grid's per-brick lower bound, MajorantGrid::ControlImage), bits:
+ * the shadow rays by residual ratio tracking (Novak et al. 2014), the camera ray by decomposition
+ * tracking (Kutz et al. 2017). 0: plain ratio and delta tracking. */
+VS_CONST uint VS_CONTROL_SHADOW = 1u;
+VS_CONST uint VS_CONTROL_CAMERA = 2u;
+
 /* Loop back-edges one invocation of the render kernel takes at most per dispatch (an upper bound
  * the kernel keeps). Lavapipe ends every loop of an invocation once they have taken 65535 together
  * (llvmpipe's loop limiter), silently: the kernel stops below that and resumes in the next dispatch
@@ -49,7 +55,8 @@ struct VsRenderParams
                         w: the scalar's interpolation (interpolation.h: 0 linear, 1 nearest) */
   vec4 cropLo;       /* the cropping regions (vsVolumeGeometry.h): index-space planes, xyz */
   vec4 cropHi;
-  uvec4 crop;        /* x: the regions' flags (0 = none: the box is all), y, z, w: unused */
+  uvec4 crop;        /* x: the regions' flags (0 = none: the box is all); y: VS_CONTROL_* bits (ignored with
+                        cropping regions: hidden regions have no extinction); z, w: unused */
   vec4 mixture;      /* x: TwoStep's defensive weight alpha, the probability of an Environment sample
                         (strategies.h vs_sample_defensive_*; 0 = plain TwoStep); y, z, w: unused */
 };
