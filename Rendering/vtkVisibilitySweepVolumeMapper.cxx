@@ -700,6 +700,7 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkVolumeProperty* property, v
   p.sampling.z = uint32_t(this->CellMode);
   p.tracking.z = float(this->CameraEstimator);
   p.crop.y = uint32_t(this->ControlExtinction);
+  p.crop.z = uint32_t(this->Sampler);
   p.tracking.w = float(property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
       ? vs::shared::VS_INTERPOLATION_NEAREST
       : vs::shared::VS_INTERPOLATION_LINEAR);
@@ -882,7 +883,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   p.tracking.w = float(I.Scene->Interpolation()); // nearest (VTK's default) or trilinear
   p.cropLo = glm::vec4(geometry.CropLo, 0.0f);
   p.cropHi = glm::vec4(geometry.CropHi, 0.0f);
-  p.crop = glm::uvec4(geometry.CropFlags, uint32_t(this->ControlExtinction), 0u, 0u);
+  p.crop = glm::uvec4(geometry.CropFlags, uint32_t(this->ControlExtinction), uint32_t(this->Sampler), 0u);
   const glm::dmat3 m(geometry.IndexToWorld);
   const glm::dvec3 o(geometry.IndexToWorld[3]);
   for (size_t i = 0; i < planes.size(); ++i)
@@ -1469,6 +1470,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DefensiveWeight: " << this->DefensiveWeight << "\n";
   os << indent << "CameraEstimator: " << this->GetCameraEstimatorAsString() << "\n";
   os << indent << "ControlExtinction: " << this->GetControlExtinctionAsString() << "\n";
+  os << indent << "Sampler: " << this->GetSamplerAsString() << "\n";
   os << indent << "SamplesPerFrame: " << this->SamplesPerFrame << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
   os << indent << "AccumulatedSamples: " << this->AccumulatedSamples << "\n";

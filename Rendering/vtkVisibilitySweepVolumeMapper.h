@@ -177,6 +177,24 @@ public:
   const char* GetCameraEstimatorAsString() { return this->CameraEstimator == ReservoirCamera ? "ReservoirCamera" : "CollisionCamera"; }
   ///@}
 
+  enum Samplers
+  {
+    IndependentSampler = 0, // every number of every sample from its own hash stream
+    SobolSampler = 1        // a pixel's jitter and light directions from its scrambled Sobol sequences
+  };
+  ///@{
+  /** Where a sample's pixel jitter and light direction come from. IndependentSampler: independent
+   *  random numbers. SobolSampler: the pixel's own Owen-scrambled Sobol (0,2)-sequences, indexed by
+   *  the sample, so a pixel's samples cover its footprint and the light's directions evenly; each
+   *  sample stays uniform (unbiased, TestMonteCarlo), the error of the mean falls faster. The
+   *  per-sample variance the mapper reports is that of one sample either way. */
+  vtkSetClampMacro(Sampler, int, IndependentSampler, SobolSampler);
+  vtkGetMacro(Sampler, int);
+  void SetSamplerToIndependent() { this->SetSampler(IndependentSampler); }
+  void SetSamplerToSobol() { this->SetSampler(SobolSampler); }
+  const char* GetSamplerAsString() { return this->Sampler == SobolSampler ? "SobolSampler" : "IndependentSampler"; }
+  ///@}
+
   enum ControlExtinctions
   {
     NoControl = 0,         // plain ratio tracking (shadow rays) and delta tracking (camera rays)
@@ -187,8 +205,9 @@ public:
   ///@{
   /** Control extinction: each majorant brick also holds the smallest extinction of its samples; the
    *  trackers integrate that part exactly (an exponential) and track only the rest, at the residual
-   *  majorant. Unbiased either way (TestMonteCarlo); it saves volume reads where bricks are dense
-   *  throughout. Ignored with cropping regions. Default: see docs/benchmarks.md. */
+   *  majorant. Unbiased either way (TestMonteCarlo); it saves volume reads and variance where bricks
+   *  are dense throughout, and costs nothing measurable elsewhere. Ignored with cropping regions.
+   *  Default ShadowRayControl (docs/benchmarks.md: the camera's control saved nothing measured). */
   vtkSetClampMacro(ControlExtinction, int, NoControl, FullControl);
   vtkGetMacro(ControlExtinction, int);
   const char* GetControlExtinctionAsString()
@@ -513,7 +532,8 @@ protected:
   int DirectionTableBuildCount = 0;
   double LastDirectionTableSeconds = 0.0;
   int CameraEstimator = CollisionCamera;
-  int ControlExtinction = NoControl;
+  int ControlExtinction = ShadowRayControl;
+  int Sampler = IndependentSampler;
   int SamplesPerFrame = 1;
   int MaximumSamples = 4096;
   double VisibilityEpsilon = 0.01;

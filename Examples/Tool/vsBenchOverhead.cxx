@@ -38,6 +38,7 @@ struct Options
   int ShadowRays = 1;
   std::string Camera = "collision";
   std::string Control; // empty: the mapper's default
+  std::string Sampler; // empty: the mapper's default
   std::vector<double> Defensive{ 0.0 }; // TwoStep's defensive weights to measure
 };
 
@@ -82,6 +83,11 @@ Measurement Measure(
   mapper->SetShadowRays(o.ShadowRays);
   mapper->SetCameraEstimator(o.Camera == "reservoir" ? vtkVisibilitySweepVolumeMapper::ReservoirCamera
                                                      : vtkVisibilitySweepVolumeMapper::CollisionCamera);
+  if (!o.Sampler.empty())
+  {
+    mapper->SetSampler(o.Sampler == "sobol" ? vtkVisibilitySweepVolumeMapper::SobolSampler
+                                            : vtkVisibilitySweepVolumeMapper::IndependentSampler);
+  }
   if (!o.Control.empty())
   {
     mapper->SetControlExtinction(o.Control == "both" ? vtkVisibilitySweepVolumeMapper::FullControl
@@ -271,6 +277,10 @@ void AddBenchOverhead(CLI::App& bench)
     "skip the variants of the grid strategies (stochastic cell without the direction table, trilinear cells)");
   cmd->add_flag("--quick", o->Quick, "64 x 64, 1 spp, 1 frame (seconds; for tests)");
   cmd->add_option("--shadow-rays", o->ShadowRays, "shadow rays per scatter point (splitting)")->check(CLI::Range(1, 64));
+  cmd->add_option("--sampler", o->Sampler,
+       "pixel jitter and light directions: independent or sobol (the per-sample variance it reports does not "
+       "show the Sobol sampler's gain, which is in the error of the mean: bench convergence)")
+    ->check(CLI::IsMember({ "independent", "sobol" }));
   cmd->add_option("--control", o->Control,
        "control extinction: none, shadow (residual ratio tracking), camera (decomposition tracking) or both")
     ->check(CLI::IsMember({ "none", "shadow", "camera", "both" }));

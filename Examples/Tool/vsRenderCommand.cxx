@@ -461,6 +461,7 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   mapper->SetToneMapping(scene.Render.ToneMapping);
   mapper->SetUpdateScheme(UpdateSchemeIndex(scene.Render.UpdateScheme));
   mapper->SetControlExtinction(ControlExtinctionIndex(scene.Render.ControlExtinction));
+  mapper->SetSampler(SamplerIndex(scene.Render.Sampler));
   mapper->SetDirectionsPerFrame(scene.Render.DirectionsPerFrame);
   mapper->SetStaticInterval(scene.Render.StaticInterval);
   const auto& v = scene.Visibility;

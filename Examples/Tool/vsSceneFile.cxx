@@ -530,7 +530,7 @@ Scene::RenderSection ParseRender(const json& v)
   RequireObject(v, path);
   CheckKeys(v, path,
     { "width", "height", "spp", "strategy", "seed", "exposure", "tone_mapping", "update_scheme",
-      "directions_per_frame", "static_interval", "control_extinction" });
+      "directions_per_frame", "static_interval", "control_extinction", "sampler" });
   Scene::RenderSection s;
   if (v.contains("width"))
   {
@@ -579,6 +579,11 @@ Scene::RenderSection ParseRender(const json& v)
   {
     s.ControlExtinction = String(v["control_extinction"], "render.control_extinction");
     ControlExtinctionIndex(s.ControlExtinction, "render.control_extinction");
+  }
+  if (v.contains("sampler"))
+  {
+    s.Sampler = String(v["sampler"], "render.sampler");
+    SamplerIndex(s.Sampler, "render.sampler");
   }
   return s;
 }
@@ -754,6 +759,23 @@ int ControlExtinctionIndex(const std::string& name, const std::string& key)
   return static_cast<int>(it - names.begin());
 }
 
+const std::vector<std::string>& SceneSamplers()
+{
+  static const std::vector<std::string> names{ "independent", "sobol" };
+  return names;
+}
+
+int SamplerIndex(const std::string& name, const std::string& key)
+{
+  const auto& names = SceneSamplers();
+  auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end())
+  {
+    Fail(key, "unknown sampler '" + name + "' (expected " + List(names) + ")");
+  }
+  return static_cast<int>(it - names.begin());
+}
+
 int UpdateSchemeIndex(const std::string& name, const std::string& key)
 {
   const auto& names = SceneUpdateSchemes();
@@ -807,9 +829,10 @@ bool Scene::CameraSection::operator==(const CameraSection& o) const
 bool Scene::RenderSection::operator==(const RenderSection& o) const
 {
   return std::tie(Width, Height, Spp, Strategy, Seed, Exposure, ToneMapping, UpdateScheme, DirectionsPerFrame,
-           StaticInterval, ControlExtinction) == std::tie(o.Width, o.Height, o.Spp, o.Strategy, o.Seed, o.Exposure,
-                                                   o.ToneMapping, o.UpdateScheme, o.DirectionsPerFrame,
-                                                   o.StaticInterval, o.ControlExtinction);
+           StaticInterval, ControlExtinction, Sampler) == std::tie(o.Width, o.Height, o.Spp, o.Strategy, o.Seed,
+                                                            o.Exposure, o.ToneMapping, o.UpdateScheme,
+                                                            o.DirectionsPerFrame, o.StaticInterval,
+                                                            o.ControlExtinction, o.Sampler);
 }
 
 bool Scene::VisibilitySection::operator==(const VisibilitySection& o) const
@@ -1005,7 +1028,7 @@ json ToJson(const Scene& s)
     { "strategy", s.Render.Strategy }, { "seed", s.Render.Seed }, { "exposure", s.Render.Exposure },
     { "tone_mapping", s.Render.ToneMapping }, { "update_scheme", s.Render.UpdateScheme },
     { "directions_per_frame", s.Render.DirectionsPerFrame }, { "static_interval", s.Render.StaticInterval },
-    { "control_extinction", s.Render.ControlExtinction } };
+    { "control_extinction", s.Render.ControlExtinction }, { "sampler", s.Render.Sampler } };
 
   const auto& v = s.Visibility;
   json vis = json::object();

@@ -103,7 +103,9 @@ struct Scene
     int StaticInterval = 16;
     // The trackers' control extinction (vtkVisibilitySweepVolumeMapper::ControlExtinction):
     // "none", "shadow" (residual ratio tracking), "camera" (decomposition tracking) or "both".
-    std::string ControlExtinction = "none";
+    std::string ControlExtinction = "shadow";
+    // vtkVisibilitySweepVolumeMapper::Sampler: "independent" or "sobol".
+    std::string Sampler = "independent";
     bool operator==(const RenderSection& o) const;
   };
   struct VisibilitySection
@@ -159,6 +161,9 @@ int UpdateSchemeIndex(const std::string& name, const std::string& key = "render.
 /** The control extinction names, in the order of vtkVisibilitySweepVolumeMapper::ControlExtinctions. */
 const std::vector<std::string>& SceneControlExtinctions();
 int ControlExtinctionIndex(const std::string& name, const std::string& key = "render.control_extinction");
+/** The sampler names, in the order of vtkVisibilitySweepVolumeMapper::Samplers. */
+const std::vector<std::string>& SceneSamplers();
+int SamplerIndex(const std::string& name, const std::string& key = "render.sampler");
 
 /** Parses a scene; relative paths resolve against baseDir. Throws std::runtime_error naming the key path. */
 Scene ParseScene(const nlohmann::json& j, const std::string& baseDir);

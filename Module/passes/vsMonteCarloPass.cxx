@@ -68,7 +68,8 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   // Hidden cropping regions have no extinction, below any brick's control: no control there.
   const uint32_t control = cropping ? 0u : params.crop.y & (shared::VS_CONTROL_SHADOW | shared::VS_CONTROL_CAMERA);
   const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping,
-    table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u, quads ? 1u : 0u, control };
+    table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u, quads ? 1u : 0u, control,
+    params.crop.z == shared::VS_SAMPLER_SOBOL ? 1u : 0u };
   auto& slot = this->Pipelines_[specialization];
   auto& pipeline = slot[format];
   if (!pipeline)
@@ -87,7 +88,8 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
       (table ? ", direction table" : "") + (defensive ? ", defensive" : "") +
       (this->EmptySpaceSkipping_ ? "" : ", no empty-space skipping") + (quads ? ", 8-bit quads" : "") +
       ((control & shared::VS_CONTROL_SHADOW) ? ", residual ratio tracking" : "") +
-      ((control & shared::VS_CONTROL_CAMERA) ? ", decomposition tracking" : "") + ")";
+      ((control & shared::VS_CONTROL_CAMERA) ? ", decomposition tracking" : "") +
+      (params.crop.z == shared::VS_SAMPLER_SOBOL ? ", Sobol" : "") + ")";
     if (format == 3)
     {
       pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_mc_render_count), bindings, sizeof(uint32_t), name,

@@ -28,6 +28,7 @@
 #include "octahedral.h"
 #include "render_params.h"
 #include "rng.h"
+#include "sobol.h"
 #include "strategies.h"
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
@@ -50,6 +51,8 @@ layout(constant_id = 7) const uint VS_SPEC_DEFENSIVE = 0u; /* 1: TwoStep mixed w
 layout(constant_id = 8) const uint VS_SPEC_SKIP = 1u;      /* 1: empty space is crossed in one step (binding 13) */
 layout(constant_id = 9) const uint VS_SPEC_QUADS = 0u;     /* 1: trilinear samples read the volume's 8-bit quads
                                                              (binding 15, vsDeviceVolume.h) */
+layout(constant_id = 11) const uint VS_SPEC_SAMPLER = 0u;   /* VS_SAMPLER_* (render_params.h), = params.crop.z */
+const bool VS_SPEC_SOBOL = VS_SPEC_SAMPLER == VS_SAMPLER_SOBOL;
 layout(constant_id = 10) const uint VS_SPEC_CONTROL = 0u;   /* VS_CONTROL_* bits (render_params.h): the trackers
                                                               split the extinction into the brick's control (binding 16) and the rest */
 layout(constant_id = 6) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
@@ -475,24 +478,24 @@ void prepare_directions(vec3 x, uint strategy, inout VsRng rng)
 }
 
 /* A direction from the strategy (after prepare_directions at the scatter point) and its pdf. */
-vec3 sample_direction(uint strategy, inout VsRng rng, out float pdf)
+vec3 sample_direction(uint strategy, vec2 u, out float pdf)
 {
   uint K = gEnvLevels;
   uint D = gGrid.w;
   if (strategy == VS_STRATEGY_ENVIRONMENT)
-    return vs_sample_environment(K, vs_rng_vec2(rng), pdf);
+    return vs_sample_environment(K, u, pdf);
   if (strategy == VS_STRATEGY_UNIFORM || D == 0u)
-    return vs_sample_uniform(vs_rng_vec2(rng), pdf);
+    return vs_sample_uniform(u, pdf);
   if (VS_SPEC_DEFENSIVE != 0u && strategy == VS_STRATEGY_TWO_STEP)
   {
     float alpha = gMixture;
     if (VS_SPEC_TABLE != 0u)
-      return vs_sample_defensive_table(gTableBase, D, K, alpha, vs_rng_vec2(rng), pdf);
-    return vs_sample_defensive_pyramid(D, K, alpha, vs_rng_vec2(rng), pdf);
+      return vs_sample_defensive_table(gTableBase, D, K, alpha, u, pdf);
+    return vs_sample_defensive_pyramid(D, K, alpha, u, pdf);
   }
   if (VS_SPEC_TABLE != 0u)
-    return vs_sample_direction_table(strategy, gTableBase, D, K, vs_rng_vec2(rng), pdf);
-  return vs_sample_direction_pyramid(strategy, D, K, vs_rng_vec2(rng), pdf);
+    return vs_sample_direction_table(strategy, gTableBase, D, K, u, pdf);
+  return vs_sample_direction_pyramid(strategy, D, K, u, pdf);
 }
 
 /* ------------------------------------------------------------------ tracking */
@@ -770,7 +773,11 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPer
   scattered = false;
   uint W = gViewport.x, H = gViewport.y;
   VsRng rng = vs_rng_init(pix, sampleIndex, gViewport.w);
-  vec2 jitter = vs_rng_vec2(rng);
+  /* Under the Sobol sampler (VS_SAMPLER_SOBOL) the pixel jitter and the first light direction come
+   * from the pixel's own scrambled Sobol sequences (sobol.h), indexed by the sample: unbiased, and
+   * stratified across the pixel's samples; everything else from the sample's hash stream. */
+  uvec2 sobolSeeds = VS_SPEC_SOBOL ? vs_pcg4d(uvec4(pix, gViewport.w, 0x50b01u)).xy : uvec2(0u);
+  vec2 jitter = VS_SPEC_SOBOL ? vs_sobol_2d(sampleIndex, sobolSeeds.x) : vs_rng_vec2(rng);
   vec2 ndc = (vec2(pix) + jitter) / vec2(W, H) * 2.0 - 1.0;
   vec4 pn = gInvViewProj * vec4(ndc, -1.0, 1.0);
   vec4 pf = gInvViewProj * vec4(ndc, 1.0, 1.0);
@@ -822,7 +829,10 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPer
     for (uint k = 0u; k < gShadowRays; ++k)
     {
       float pdf;
-      vec3 w = sample_direction(gStrategy, rng, pdf);
+      /* The light's 2D number: the pixel's Sobol point (its samples' directions stratified), or the
+       * sample's own random pair. */
+      vec2 u = VS_SPEC_SOBOL ? vs_sobol_2d(sampleIndex * gShadowRays + k, sobolSeeds.y) : vs_rng_vec2(rng);
+      vec3 w = sample_direction(gStrategy, u, pdf);
       vec3 Le = pdf > 0.0 ? env_radiance(w) : vec3(0.0);
       uint steps = 0u;
       if (any(greaterThan(Le, vec3(0.0))))

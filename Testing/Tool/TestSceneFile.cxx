@@ -38,7 +38,8 @@ json FullScene()
                "parallel_scale": 120.25},
     "render": {"width": 320, "height": 200, "spp": 64, "strategy": "combined", "seed": 7, "exposure": 1.5,
                "tone_mapping": false, "update_scheme": "round-robin", "directions_per_frame": 8,
-               "static_interval": 12, "control_extinction": "shadow"},
+               "static_interval": 12, "control_extinction": "camera",
+               "sampler": "sobol"},
     "visibility": {"direction_resolution": 16, "voxels_per_cell": 8, "kernel_resolution": 64, "filtering": false,
                    "filter_angle_fraction": 0.25, "epsilon": 0.02, "cell_mode": "trilinear",
                    "skip_unlit_directions": false},
@@ -95,7 +96,8 @@ TEST(SceneFile, ParsesEverySection)
   EXPECT_EQ(vstool::UpdateSchemeIndex(s.Render.UpdateScheme), 1);
   EXPECT_EQ(s.Render.DirectionsPerFrame, 8);
   EXPECT_EQ(s.Render.StaticInterval, 12);
-  EXPECT_EQ(s.Render.ControlExtinction, "shadow");
+  EXPECT_EQ(s.Render.ControlExtinction, "camera");
+  EXPECT_EQ(s.Render.Sampler, "sobol");
   EXPECT_EQ(s.Visibility.DirectionResolution.value(), 16);
   EXPECT_EQ(s.Visibility.CellMode.value(), "trilinear");
   EXPECT_FALSE(s.Visibility.SkipUnlitDirections.value());
@@ -124,7 +126,8 @@ TEST(SceneFile, DefaultsOfOptionalSections)
   EXPECT_EQ(s.Render.UpdateScheme, "round-robin"); // docs/reference.md: round-robin by default
   EXPECT_EQ(s.Render.DirectionsPerFrame, 4);
   EXPECT_EQ(s.Render.StaticInterval, 16);
-  EXPECT_EQ(s.Render.ControlExtinction, "none");
+  EXPECT_EQ(s.Render.ControlExtinction, "shadow");
+  EXPECT_EQ(s.Render.Sampler, "independent");
   EXPECT_FALSE(s.Visibility.DirectionResolution.has_value());
   EXPECT_TRUE(s.ClipPlanes.empty());
 }
@@ -219,6 +222,9 @@ TEST(SceneFile, EqualityNoticesChanges)
   EXPECT_FALSE(a == b);
   b = a;
   b.Render.ControlExtinction = "both";
+  EXPECT_FALSE(a == b);
+  b = a;
+  b.Render.Sampler = "sobol";
   EXPECT_FALSE(a == b);
 }
 
@@ -379,6 +385,8 @@ TEST(SceneFile, BadValues)
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["seed"] = -1; }), "render.seed: seed -1 not in");
   EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["strategy"] = "foo"; }),
     "render.strategy: unknown strategy 'foo' (expected uniform, environment, visibility, combined, two-step, auto)");
+  EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["sampler"] = "halton"; }),
+    "render.sampler: unknown sampler 'halton' (expected independent, sobol)");
   EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["control_extinction"] = "residual"; }),
     "render.control_extinction: unknown control extinction 'residual' (expected none, shadow, camera, both)");
   EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["update_scheme"] = "lazy"; }),

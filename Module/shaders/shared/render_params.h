@@ -25,6 +25,11 @@ VS_CONST uint VS_CAMERA_RESERVOIR = 1u; /* ratio-tracked, one scatter point resa
 VS_CONST uint VS_CONTROL_SHADOW = 1u;
 VS_CONST uint VS_CONTROL_CAMERA = 2u;
 
+/* Where a sample's pixel jitter and light direction numbers come from: the sample's own hash
+ * stream (independent samples), or the pixel's Owen-scrambled Sobol sequences (sobol.h). */
+VS_CONST uint VS_SAMPLER_INDEPENDENT = 0u;
+VS_CONST uint VS_SAMPLER_SOBOL = 1u;
+
 /* Loop back-edges one invocation of the render kernel takes at most per dispatch (an upper bound
  * the kernel keeps). Lavapipe ends every loop of an invocation once they have taken 65535 together
  * (llvmpipe's loop limiter), silently: the kernel stops below that and resumes in the next dispatch
@@ -56,7 +61,7 @@ struct VsRenderParams
   vec4 cropLo;       /* the cropping regions (vsVolumeGeometry.h): index-space planes, xyz */
   vec4 cropHi;
   uvec4 crop;        /* x: the regions' flags (0 = none: the box is all); y: VS_CONTROL_* bits (ignored with
-                        cropping regions: hidden regions have no extinction); z, w: unused */
+                        cropping regions: hidden regions have no extinction); z: the sampler (VS_SAMPLER_*); w: unused */
   vec4 mixture;      /* x: TwoStep's defensive weight alpha, the probability of an Environment sample
                         (strategies.h vs_sample_defensive_*; 0 = plain TwoStep); y, z, w: unused */
 };
