@@ -105,7 +105,7 @@ struct Scene
     // "none", "shadow" (residual ratio tracking), "camera" (decomposition tracking) or "both".
     std::string ControlExtinction = "shadow";
     // vtkVisibilitySweepVolumeMapper::Sampler: "independent" or "sobol".
-    std::string Sampler = "independent";
+    std::string Sampler = "sobol";
     bool operator==(const RenderSection& o) const;
   };
   struct VisibilitySection
