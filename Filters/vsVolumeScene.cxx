@@ -76,7 +76,7 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
     {
       this->Majorants_ = std::make_unique<MajorantGrid>(this->Context_);
     }
-    this->Majorants_->UpdateRanges(*this->Volume_);
+    this->Majorants_->UpdateRanges(*this->Volume_, values.data());
     this->DataTime_ = dataTime;
     this->Scalars_ = scalars;
     ++this->Uploads_;

@@ -12,6 +12,8 @@
 #include "vs_spirv_majorant_minmax.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 
 namespace vs
 {
@@ -27,7 +29,95 @@ MajorantGrid::MajorantGrid(std::shared_ptr<Context> context, uint32_t brickSize)
 
 MajorantGrid::~MajorantGrid() = default;
 
-void MajorantGrid::UpdateRanges(const DeviceVolume& volume)
+namespace
+{
+// Per brick b of B voxels along each axis: min, max and a non-finite flag over voxels [bB, (b+1)B]
+// (inclusive, clamped to the volume), as majorant_minmax.comp computes them, by three separable
+// passes (x, then y, then z), each reading its input once.
+struct Span
+{
+  float Min = 3.4e38f, Max = -3.4e38f;
+  bool Gap = false;
+  void Add(const Span& o)
+  {
+    Min = std::min(Min, o.Min);
+    Max = std::max(Max, o.Max);
+    Gap = Gap || o.Gap;
+  }
+};
+
+std::vector<float> HostRanges(const float* v, std::array<uint32_t, 3> dims, std::array<uint32_t, 3> bricks, uint32_t B)
+{
+  const size_t nx = dims[0], ny = dims[1], nz = dims[2];
+  const size_t bx = bricks[0], by = bricks[1], bz = bricks[2];
+  auto lo = [&](size_t b) { return b * B; };
+  auto hi = [&](size_t b, size_t n) { return std::min<size_t>(b * B + B, n - 1); };
+  std::vector<Span> rows(bx * ny * nz); // (brick x, y, z)
+  for (size_t z = 0; z < nz; ++z)
+  {
+    for (size_t y = 0; y < ny; ++y)
+    {
+      const float* row = v + (z * ny + y) * nx;
+      for (size_t b = 0; b < bx; ++b)
+      {
+        Span s;
+        for (size_t x = lo(b); x <= hi(b, nx); ++x)
+        {
+          const float f = row[x];
+          if (!std::isfinite(f)) // stored as NaN on the device: empty space
+          {
+            s.Gap = true;
+          }
+          else
+          {
+            s.Min = std::min(s.Min, f);
+            s.Max = std::max(s.Max, f);
+          }
+        }
+        rows[(z * ny + y) * bx + b] = s;
+      }
+    }
+  }
+  std::vector<Span> planes(bx * by * nz); // (brick x, brick y, z)
+  for (size_t z = 0; z < nz; ++z)
+  {
+    for (size_t b = 0; b < by; ++b)
+    {
+      for (size_t y = lo(b); y <= hi(b, ny); ++y)
+      {
+        for (size_t x = 0; x < bx; ++x)
+        {
+          planes[(z * by + b) * bx + x].Add(rows[(z * ny + y) * bx + x]);
+        }
+      }
+    }
+  }
+  std::vector<float> ranges(4 * bx * by * bz);
+  for (size_t b = 0; b < bz; ++b)
+  {
+    for (size_t y = 0; y < by; ++y)
+    {
+      for (size_t x = 0; x < bx; ++x)
+      {
+        Span s;
+        for (size_t z = lo(b); z <= hi(b, nz); ++z)
+        {
+          s.Add(planes[(z * by + y) * bx + x]);
+        }
+        float* r = &ranges[4 * ((b * by + y) * bx + x)];
+        const bool any = s.Min <= s.Max;
+        r[0] = any ? s.Min : 1.0f;
+        r[1] = any ? s.Max : 0.0f;
+        r[2] = s.Gap ? 1.0f : 0.0f;
+        r[3] = 0.0f;
+      }
+    }
+  }
+  return ranges;
+}
+}
+
+void MajorantGrid::UpdateRanges(const DeviceVolume& volume, const float* hostScalars)
 {
   auto dims = volume.Dims();
   std::array<uint32_t, 3> bricks;
@@ -37,26 +127,37 @@ void MajorantGrid::UpdateRanges(const DeviceVolume& volume)
     bricks[i] = std::max<uint32_t>(1, (dims[i] - 1 + this->BrickSize_ - 1) / this->BrickSize_);
   }
   const uint64_t count = uint64_t(bricks[0]) * bricks[1] * bricks[2];
-  auto shared = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_majorant_minmax),
-    { BindingType::StorageImage, BindingType::StorageBuffer }, 32, "majorant ranges");
-  const ComputePipeline& pipeline = *shared;
-  Buffer ranges(this->Context_, count * 4 * sizeof(float), "brick ranges");
-  DescriptorSet set(pipeline);
-  set.Bind(0, volume.Image()).Bind(1, ranges);
-  struct
+  if (hostScalars)
   {
-    uint32_t bricks[4];
-    int32_t dims[4];
-  } push = { { bricks[0], bricks[1], bricks[2], this->BrickSize_ },
-    { int32_t(dims[0]), int32_t(dims[1]), int32_t(dims[2]), 0 } };
-  Batch batch(this->Context_);
-  batch.BeginTimer("ranges");
-  batch.Dispatch(pipeline, set, &push, sizeof(push), (bricks[0] + 3) / 4, (bricks[1] + 3) / 4, (bricks[2] + 3) / 4);
-  batch.EndTimer();
-  batch.Submit();
-  this->LastSeconds_ = batch.Seconds("ranges");
-  this->Ranges_.resize(count * 4);
-  ranges.Download(this->Ranges_.data(), count * 4 * sizeof(float));
+    const auto start = std::chrono::steady_clock::now();
+    this->Ranges_ = HostRanges(hostScalars, dims, bricks, this->BrickSize_);
+    this->LastSeconds_ = 0.0; // no device time
+    this->LastHostSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  else
+  {
+    auto shared = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_majorant_minmax),
+      { BindingType::StorageImage, BindingType::StorageBuffer }, 32, "majorant ranges");
+    const ComputePipeline& pipeline = *shared;
+    Buffer ranges(this->Context_, count * 4 * sizeof(float), "brick ranges");
+    DescriptorSet set(pipeline);
+    set.Bind(0, volume.Image()).Bind(1, ranges);
+    struct
+    {
+      uint32_t bricks[4];
+      int32_t dims[4];
+    } push = { { bricks[0], bricks[1], bricks[2], this->BrickSize_ },
+      { int32_t(dims[0]), int32_t(dims[1]), int32_t(dims[2]), 0 } };
+    Batch batch(this->Context_);
+    batch.BeginTimer("ranges");
+    batch.Dispatch(pipeline, set, &push, sizeof(push), (bricks[0] + 3) / 4, (bricks[1] + 3) / 4, (bricks[2] + 3) / 4);
+    batch.EndTimer();
+    batch.Submit();
+    this->LastSeconds_ = batch.Seconds("ranges");
+    this->LastHostSeconds_ = 0.0;
+    this->Ranges_.resize(count * 4);
+    ranges.Download(this->Ranges_.data(), count * 4 * sizeof(float));
+  }
   if (bricks != this->Bricks_ || !this->Image_)
   {
     this->Image_.reset();
