@@ -68,7 +68,54 @@ void MajorantGrid::UpdateRanges(const DeviceVolume& volume)
     this->Bricks_ = bricks;
   }
   this->Majorants_.clear();
+  this->FactorRanges_.clear();
+  this->Dims_ = dims;
   ++this->RangeUpdates_;
+}
+
+void MajorantGrid::SetFactor(const float* factor)
+{
+  this->FactorRanges_.clear();
+  if (!factor)
+  {
+    return;
+  }
+  if (!this->Image_)
+  {
+    throw InputError("the majorants' factor needs the brick ranges first (UpdateRanges)");
+  }
+  const auto& d = this->Dims_;
+  const auto& n = this->Bricks_;
+  const uint32_t B = this->BrickSize_;
+  this->FactorRanges_.assign(size_t(2) * n[0] * n[1] * n[2], 0.0f);
+  for (uint32_t bz = 0; bz < n[2]; ++bz)
+  {
+    for (uint32_t by = 0; by < n[1]; ++by)
+    {
+      for (uint32_t bx = 0; bx < n[0]; ++bx)
+      {
+        // Voxels [bB, (b+1)B] clamped to the volume, as majorant_minmax.comp reads the scalars.
+        float lo = 3.4e38f, hi = 0.0f;
+        for (uint32_t z = bz * B; z <= std::min(bz * B + B, d[2] - 1); ++z)
+        {
+          for (uint32_t y = by * B; y <= std::min(by * B + B, d[1] - 1); ++y)
+          {
+            const float* row = factor + (uint64_t(z) * d[1] + y) * d[0];
+            for (uint32_t x = bx * B; x <= std::min(bx * B + B, d[0] - 1); ++x)
+            {
+              lo = std::min(lo, row[x]);
+              hi = std::max(hi, row[x]);
+            }
+          }
+        }
+        const size_t b = (size_t(bz) * n[1] + by) * n[0] + bx;
+        // A trilinear interpolant of the factor may round a few ulps past its corners (three mixes
+        // of float): widen by 1e-6 of the value, which keeps 0 at 0 (empty bricks stay empty).
+        this->FactorRanges_[2 * b] = std::max(0.0f, lo * (1.0f - 1e-6f));
+        this->FactorRanges_[2 * b + 1] = hi * (1.0f + 1e-6f);
+      }
+    }
+  }
 }
 
 void MajorantGrid::UpdateMajorants(const TransferFunctionSamples& tf)
@@ -88,6 +135,13 @@ void MajorantGrid::UpdateMajorants(const TransferFunctionSamples& tf)
     {
       this->Majorants_[i] = tf.MaxExtinction(lo, hi);
       this->Controls_[i] = gap ? 0.0f : std::min(tf.MinExtinction(lo, hi), this->Majorants_[i]);
+      if (!this->FactorRanges_.empty())
+      {
+        // Float products round monotonically: sigma <= max sigma and g <= max g give
+        // fl(sigma g) <= fl(max sigma max g), and the same below for the control.
+        this->Majorants_[i] *= this->FactorRanges_[2 * i + 1];
+        this->Controls_[i] = std::min(this->Controls_[i] * this->FactorRanges_[2 * i], this->Majorants_[i]);
+      }
     }
   }
   this->Image_->Upload(this->Majorants_.data(), count * sizeof(float));
