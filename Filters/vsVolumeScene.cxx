@@ -106,12 +106,14 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
           values.data(), geometry.Dims, image->GetSpacing(), property->GetStoredGradientOpacity(0));
         this->Volume_->SetFactor(factor.data());
         this->Majorants_->SetFactor(factor.data());
+        this->HostFactor_ = std::move(factor);
         this->LastFactorSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       }
       else
       {
         this->Volume_->SetFactor(nullptr);
         this->Majorants_->SetFactor(nullptr);
+        this->HostFactor_.clear();
       }
       this->FactorSignature_ = std::move(signature);
       if (factorChanged)

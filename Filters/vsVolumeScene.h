@@ -87,6 +87,8 @@ public:
   int TableBuilds() const { return this->TableBuilds_; }
   /** Whether the extinction is scaled by the gradient-opacity factor (Volume().Factor() is set). */
   bool HasGradientOpacity() const { return !this->FactorSignature_.empty(); }
+  /** The factor per voxel on the host (empty without one): the voxel picker's march. */
+  const std::vector<float>& HostFactor() const { return this->HostFactor_; }
   /** Times the factor volume was computed or dropped (for tests and the render's signature). */
   int FactorBuilds() const { return this->FactorBuilds_; }
   /** Host seconds the last factor computation took (gradients, GO and upload). */
@@ -105,6 +107,7 @@ private:
   float ExtinctionCap_ = -1.0f;
   int Uploads_ = 0, TableBuilds_ = 0, FactorBuilds_ = 0;
   std::vector<double> FactorSignature_; // vsGradientOpacity.h: empty = no factor
+  std::vector<float> HostFactor_;
   double LastFactorSeconds_ = 0.0;
   uint32_t Interpolation_ = 0;
 };

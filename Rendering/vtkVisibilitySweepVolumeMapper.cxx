@@ -609,6 +609,7 @@ void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume
     v.DensityScale = this->DensityScale;
     v.Nearest = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
     v.WorldPlanes = WorldPlanes(this->ClippingPlanes, v.Geometry);
+    v.Factor = I.Scene->HasGradientOpacity() ? &I.Scene->HostFactor() : nullptr;
     std::vector<bool> covered(rgba.size() / 4);
     for (size_t i = 0; i < covered.size(); ++i)
     {

@@ -14,6 +14,11 @@
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
+#include "vtkHardwareSelector.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkSelection.h"
+#include "vtkSelectionNode.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
@@ -97,6 +102,34 @@ std::vector<double> Brightness(vtkRenderWindow* win)
   for (size_t i = 0; i + 2 < rgb.size(); i += 3)
     b.push_back((rgb[i] + rgb[i + 1] + rgb[i + 2]) / (3.0 * 255.0));
   return b;
+}
+
+// The mean distance from the ball's centre of the voxels a point selection of the 5 x 5 pixels at the image's
+// centre picks (-1 without any).
+double PickedRadius(vtkRenderer* ren, vtkVolume* volume, double c)
+{
+  vtkNew<vtkHardwareSelector> selector;
+  selector->SetRenderer(ren);
+  selector->SetFieldAssociation(vtkDataObject::FIELD_ASSOCIATION_POINTS);
+  selector->SetArea(kPixels / 2 - 2, kPixels / 2 - 2, kPixels / 2 + 2, kPixels / 2 + 2);
+  vtkSmartPointer<vtkSelection> picked;
+  picked.TakeReference(selector->Select());
+  double sum = 0.0, n = 0.0;
+  for (unsigned int i = 0; picked && i < picked->GetNumberOfNodes(); ++i)
+  {
+    vtkSelectionNode* node = picked->GetNode(i);
+    auto* list = vtkIdTypeArray::SafeDownCast(node->GetSelectionList());
+    if (node->GetProperties()->Get(vtkSelectionNode::PROP()) != volume || !list)
+      continue;
+    for (vtkIdType t = 0; t < list->GetNumberOfTuples(); ++t)
+    {
+      const vtkIdType id = list->GetValue(t);
+      const double x = double(id % kVoxels), y = double((id / kVoxels) % kVoxels), z = double(id / (kVoxels * kVoxels));
+      sum += std::sqrt((x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c));
+      n += 1.0;
+    }
+  }
+  return n > 0.0 ? sum / n : -1.0;
 }
 
 double CentreVisibility(vtkVisibilitySweepVolumeMapper* m)
@@ -232,6 +265,24 @@ int TestMapperGradientOpacity(int, char*[])
       "the core is transparent");
     Check(sr > sc + 0.05, "emission-absorption with gradient opacity: a hollow shell");
   }
+  // Picking marches the same extinction: a gradient opacity that keeps only the flat core (1 where the
+  // gradient is 0, 0 on the ramp) moves the picked voxels from the ball's surface (r = c) to the core's (r =
+  // 2c/3).
+  property->DisableGradientOpacityOn();
+  const double surface = PickedRadius(ren, volume, c);
+  vtkNew<vtkPiecewiseFunction> core;
+  core->AddPoint(0.0, 1.0);
+  core->AddPoint(0.02, 1.0);
+  core->AddPoint(0.05, 0.0);
+  property->SetGradientOpacity(core);
+  property->DisableGradientOpacityOff();
+  const double coreSurface = PickedRadius(ren, volume, c);
+  std::cout << "picked radius " << surface << " -> " << coreSurface << " (ball " << c << ", core " << 2.0 * c / 3.0
+            << ")\n";
+  Check(std::abs(surface - c) < 1.5, "without gradient opacity the pick is at the ball's surface");
+  Check(std::abs(coreSurface - 2.0 * c / 3.0) < 1.5, "with the core's gradient opacity the pick is at the core");
+  Check(std::string(m->GetLastError()).empty(), std::string("picking renders: ") + m->GetLastError());
+
   Check(std::none_of(recorder->Warnings.begin(), recorder->Warnings.end(),
           [](const std::string& w) { return w.find("gradient") != std::string::npos; }),
     "the gradient opacity is honoured: no warning");
