@@ -51,7 +51,7 @@ layout(constant_id = 8) const uint VS_SPEC_SKIP = 1u;      /* 1: empty space is 
 layout(constant_id = 9) const uint VS_SPEC_QUADS = 0u;     /* 1: trilinear samples read the volume's 8-bit quads
                                                              (binding 15, vsDeviceVolume.h) */
 layout(constant_id = 10) const uint VS_SPEC_CONTROL = 0u;   /* VS_CONTROL_* bits (render_params.h): the trackers
-                                                              split the extinction into the brick's control (binding 16) and the rest */
+                                                              split the extinction into the brick's control (uBricks.y) and the rest */
 layout(constant_id = 11) const uint VS_SPEC_FACTOR = 0u;   /* 1: the extinction is scaled by the volume's factor
                                                               (the gradient opacity, binding 16; = params.crop.z) */
 layout(constant_id = 6) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
