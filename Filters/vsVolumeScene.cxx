@@ -2,6 +2,7 @@
 
 #include "vsDeviceVolume.h"
 #include "vsError.h"
+#include "vsGradientOpacity.h"
 #include "vsMajorantGrid.h"
 #include "vsTransferFunctionTable.h"
 #include "vsVolumeInput.h"
@@ -12,6 +13,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
+#include <chrono>
 #include <limits>
 
 namespace vs
@@ -64,13 +66,14 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
     densityScale != this->DensityScale_ || cap != this->ExtinctionCap_;
 
   const vtkMTimeType dataTime = std::max(image->GetMTime(), scalars->GetMTime());
+  std::vector<float> values; // the scalars as floats, when read for an upload
   if (!this->Volume_ || scalars != this->Scalars_ || dataTime > this->DataTime_ ||
     this->Volume_->Dims() != geometry.Dims)
   {
     this->Volume_.reset();
     this->TF_.reset();
     DeviceVolume::CheckFits(*this->Context_, geometry.Dims);
-    std::vector<float> values = ScalarsAsFloat(scalars);
+    values = ScalarsAsFloat(scalars);
     this->Volume_ = std::make_unique<DeviceVolume>(this->Context_, values.data(), geometry.Dims);
     if (!this->Majorants_)
     {
@@ -81,6 +84,43 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
     this->Scalars_ = scalars;
     ++this->Uploads_;
     changes.Data = true;
+  }
+
+  // The gradient-opacity factor: new data drops it (UpdateRanges), a new function or spacing
+  // recomputes it; the majorants follow below.
+  bool factorChanged = false;
+  if (changes.Data || changes.TransferFunction || changes.Geometry)
+  {
+    std::vector<double> signature = GradientOpacitySignature(property, image->GetSpacing());
+    if (changes.Data || signature != this->FactorSignature_)
+    {
+      factorChanged = changes.Data ? !signature.empty() : true;
+      if (!signature.empty())
+      {
+        const auto start = std::chrono::steady_clock::now();
+        if (values.empty())
+        {
+          values = ScalarsAsFloat(scalars);
+        }
+        std::vector<float> factor = GradientOpacityFactor(
+          values.data(), geometry.Dims, image->GetSpacing(), property->GetStoredGradientOpacity(0));
+        this->Volume_->SetFactor(factor.data());
+        this->Majorants_->SetFactor(factor.data());
+        this->HostFactor_ = std::move(factor);
+        this->LastFactorSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      }
+      else
+      {
+        this->Volume_->SetFactor(nullptr);
+        this->Majorants_->SetFactor(nullptr);
+        this->HostFactor_.clear();
+      }
+      this->FactorSignature_ = std::move(signature);
+      if (factorChanged)
+      {
+        ++this->FactorBuilds_;
+      }
+    }
   }
 
   if (changes.Data || changes.TransferFunction)
@@ -115,6 +155,7 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
       this->TF_ = std::make_unique<TransferFunctionTable>(this->Context_, samples);
       ++this->TableBuilds_;
     }
+    changes.Extinction = changes.Extinction || factorChanged;
     if (changes.Extinction)
     {
       this->Majorants_->UpdateMajorants(samples);
@@ -122,6 +163,12 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
     this->PropertyTime_ = property->GetMTime();
     this->DensityScale_ = densityScale;
     this->ExtinctionCap_ = cap;
+  }
+  else if (factorChanged)
+  {
+    // The spacing changed the gradients (and so the factor) under the same table.
+    this->Majorants_->UpdateMajorants(this->TF_->Samples());
+    changes.Extinction = changes.TransferFunction = true;
   }
   // Nearest or trilinear reconstruction of the scalar: a different extinction between voxels
   // (the same table and majorants: a brick's majorant bounds both), so the visibility changes.

@@ -4,6 +4,7 @@
 //   data changed            -> upload, brick ranges, majorants
 //   extinction changed      -> table, majorants (opacity, unit distance, density scale)
 //   only albedo changed     -> table
+//   gradient opacity        -> factor volume (vsGradientOpacity.h), majorants (reported as Extinction)
 // With new data the table is resampled over the new scalar range, so Extinction is reported
 // even when the transfer function itself is unchanged; TransferFunction tells the two apart
 // (a new time step under the same transfer function: Data without TransferFunction).
@@ -84,6 +85,14 @@ public:
    *  VS_INTERPOLATION_LINEAR or VS_INTERPOLATION_NEAREST). */
   uint32_t Interpolation() const { return this->Interpolation_; }
   int TableBuilds() const { return this->TableBuilds_; }
+  /** Whether the extinction is scaled by the gradient-opacity factor (Volume().Factor() is set). */
+  bool HasGradientOpacity() const { return !this->FactorSignature_.empty(); }
+  /** The factor per voxel on the host (empty without one): the voxel picker's march. */
+  const std::vector<float>& HostFactor() const { return this->HostFactor_; }
+  /** Times the factor volume was computed or dropped (for tests and the render's signature). */
+  int FactorBuilds() const { return this->FactorBuilds_; }
+  /** Host seconds the last factor computation took (gradients, GO and upload). */
+  double LastFactorSeconds() const { return this->LastFactorSeconds_; }
 
 private:
   std::shared_ptr<Context> Context_;
@@ -96,7 +105,10 @@ private:
   vtkMTimeType PropertyTime_ = 0;
   double DensityScale_ = -1.0;
   float ExtinctionCap_ = -1.0f;
-  int Uploads_ = 0, TableBuilds_ = 0;
+  int Uploads_ = 0, TableBuilds_ = 0, FactorBuilds_ = 0;
+  std::vector<double> FactorSignature_; // vsGradientOpacity.h: empty = no factor
+  std::vector<float> HostFactor_;
+  double LastFactorSeconds_ = 0.0;
   uint32_t Interpolation_ = 0;
 };
 }

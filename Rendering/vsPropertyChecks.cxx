@@ -1,6 +1,5 @@
 #include "vsPropertyChecks.h"
 
-#include "vtkPiecewiseFunction.h"
 #include "vtkRenderer.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
@@ -34,29 +33,6 @@ const char* BlendModeName(int mode)
   return "an unknown blend mode";
 }
 
-// A gradient opacity that changes anything: set, enabled, and not 1 everywhere.
-bool HasEffectiveGradientOpacity(vtkVolumeProperty* property)
-{
-  if (!property->HasGradientOpacity(0) || property->GetDisableGradientOpacity(0))
-  {
-    return false;
-  }
-  vtkPiecewiseFunction* f = property->GetStoredGradientOpacity(0);
-  if (!f)
-  {
-    return false;
-  }
-  for (int i = 0; i < f->GetSize(); ++i)
-  {
-    double node[4];
-    f->GetNodeValue(i, node);
-    if (node[1] != 1.0)
-    {
-      return true;
-    }
-  }
-  return false;
-}
 }
 
 std::vector<std::string> PropertyChecks::Ignored(
@@ -65,10 +41,12 @@ std::vector<std::string> PropertyChecks::Ignored(
   std::vector<std::string> ignored;
   if (property)
   {
-    if (HasEffectiveGradientOpacity(property))
+    // The gradient opacity (component 0) is honoured in every mode and pass (vsGradientOpacity.h),
+    // except by the projections, where VTK does not apply it either. Per-label ones are not.
+    if (property->HasLabelGradientOpacity())
     {
-      ignored.push_back("the vtkVolumeProperty's gradient opacity is ignored: VisSweep's opacity depends on the "
-                        "scalar only (DisableGradientOpacityOn() to silence this)");
+      ignored.push_back("the vtkVolumeProperty's label gradient opacities (SetLabelGradientOpacity) are ignored: "
+                        "VisSweep has no label-map mask input; the gradient opacity of the scalars is honoured");
     }
     if (property->GetShade(0))
     {

@@ -10,12 +10,14 @@ namespace vs
 {
 namespace
 {
-// The scalar at continuous index p (voxel centres at integers), NaN outside the grid.
-double Sample(const VoxelPicker::Volume& v, const glm::dvec3& p)
+// The scalar (or, with `factor`, the extinction factor) at continuous index p (voxel centres at
+// integers), NaN outside the grid.
+double Sample(const VoxelPicker::Volume& v, const glm::dvec3& p, const std::vector<float>* factor = nullptr)
 {
   const auto& d = v.Geometry.Dims;
   auto at = [&](int i, int j, int k) {
-    return v.Scalars->GetComponent((vtkIdType(k) * d[1] + j) * d[0] + i, 0);
+    const vtkIdType id = (vtkIdType(k) * d[1] + j) * d[0] + i;
+    return factor ? double((*factor)[size_t(id)]) : v.Scalars->GetComponent(id, 0);
   };
   if (v.Nearest)
   {
@@ -149,7 +151,8 @@ std::vector<vtkIdType> VoxelPicker::Ids(const Volume& v, const glm::dmat4& invVi
           continue;
         }
         const glm::dvec3 p = o + t * d;
-        tau += Extinction(v, Sample(v, p)) * step;
+        const double sigma = Extinction(v, Sample(v, p));
+        tau += (v.Factor && sigma > 0.0 ? sigma * Sample(v, p, v.Factor) : sigma) * step;
         if (tau > tauHit)
         {
           ids[pixel] = IdOf(v, p, cells);

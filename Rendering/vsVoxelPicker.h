@@ -3,7 +3,8 @@
 // becomes part of the volume, which is where its opacity first exceeds the selection threshold
 // (3/255, vs::SelectionMask). The device passes return colours only, so the ids are marched on the
 // host, per covered pixel: the same extinction as the renderer (sigma_t = -ln(1 - alpha) / unit
-// distance x density scale, the property's nearest or trilinear interpolation, NaN voxels empty),
+// distance x density scale, times the gradient opacity's factor where there is one, the property's
+// nearest or trilinear interpolation, NaN voxels empty),
 // clipped by the clipping planes and the (cropped) box, and stopped at the opaque depth.
 #ifndef vsVoxelPicker_h
 #define vsVoxelPicker_h
@@ -32,6 +33,7 @@ public:
     double UnitDistance = 1.0, DensityScale = 1.0;
     bool Nearest = true;
     std::vector<glm::dvec4> WorldPlanes; // kept where dot(n, x) + w >= 0
+    const std::vector<float>* Factor = nullptr; // the extinction factor per voxel (gradient opacity), or none
   };
 
   /** For each pixel of a width x height viewport (rows bottom-up) whose `covered` flag is set: the

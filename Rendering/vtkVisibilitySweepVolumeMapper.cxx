@@ -24,6 +24,7 @@
 #include "vsDisplayTransform.h"
 #include "vsError.h"
 #include "vsFloatRange.h"
+#include "vsGradientOpacity.h"
 #include "vsTransferFunctionTable.h"
 #include "vsVolumeInput.h"
 #include "vsVolumeScene.h"
@@ -608,6 +609,7 @@ void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume
     v.DensityScale = this->DensityScale;
     v.Nearest = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
     v.WorldPlanes = WorldPlanes(this->ClippingPlanes, v.Geometry);
+    v.Factor = I.Scene->HasGradientOpacity() ? &I.Scene->HostFactor() : nullptr;
     std::vector<bool> covered(rgba.size() / 4);
     for (size_t i = 0; i < covered.size(); ++i)
     {
@@ -705,6 +707,7 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkVolumeProperty* property, v
       ? vs::shared::VS_INTERPOLATION_NEAREST
       : vs::shared::VS_INTERPOLATION_LINEAR);
   p.mixture.x = float(this->DefensiveWeight);
+  p.crop.w = vs::HasEffectiveGradientOpacity(property) ? 1u : 0u; // the kernel's factor volume
   // A pass of its own: the pipeline lands in the context's cache, where the view's pass finds it
   // (waiting for it if the render gets there first); the view's passes come and go (SwitchView).
   const bool table = this->DirectionTable;
@@ -940,6 +943,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     std::vector<double> signature = RenderSignature(p);
     signature.push_back(double(I.Scene->TableBuilds()));
     signature.push_back(double(I.Scene->Uploads()));
+    signature.push_back(double(I.Scene->FactorBuilds())); // a new gradient-opacity factor
     signature.push_back(double(this->EnvironmentUploadCount));
     signature.push_back(double(I.Grid && needGrid ? I.Grid->Generation() : 0));
     signature.insert(signature.end(), depth.begin(), depth.end());
@@ -1504,6 +1508,12 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TileRenderCount: " << this->TileRenderCount << "\n";
   os << indent << "LastDeviceSeconds: " << this->LastDeviceSeconds << "\n";
   os << indent << "LastMajorantSeconds: " << this->LastMajorantSeconds << "\n";
+  os << indent << "GradientOpacity: "
+     << (this->Impl->Scene && this->Impl->Scene->HasGradientOpacity()
+            ? "honoured (a factor volume scales the extinction; computed in " +
+             std::to_string(this->Impl->Scene->LastFactorSeconds()) + " s)"
+            : std::string("none effective"))
+     << "\n";
   os << indent << "CountLookups: " << (this->CountLookups ? "On" : "Off") << "\n";
   os << indent << "LastLookupCounts: " << this->LastLookupCounts[0] << " " << this->LastLookupCounts[1] << " "
      << this->LastLookupCounts[2] << "\n";

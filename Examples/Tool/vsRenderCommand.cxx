@@ -380,6 +380,15 @@ vtkSmartPointer<vtkVolumeProperty> MakeVolumeProperty(const Scene& scene)
   property->SetScalarOpacity(opacity);
   property->SetColor(color);
   property->SetScalarOpacityUnitDistance(tf.UnitDistance);
+  if (!tf.GradientOpacity.empty())
+  {
+    vtkNew<vtkPiecewiseFunction> gradient; // opacity x gradient-opacity(|grad s|), as VTK
+    for (const auto& p : tf.GradientOpacity)
+    {
+      gradient->AddPoint(p[0], p[1]);
+    }
+    property->SetGradientOpacity(gradient);
+  }
   if (tf.Nearest)
   {
     property->SetInterpolationTypeToNearest(); // label maps: no blended labels between regions

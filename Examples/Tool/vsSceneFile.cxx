@@ -328,7 +328,7 @@ Scene::TransferFunctionSection ParseTransferFunction(const json& v)
 {
   const std::string path = "transfer_function";
   RequireObject(v, path);
-  CheckKeys(v, path, { "opacity", "color", "unit_distance", "density_scale", "interpolation" });
+  CheckKeys(v, path, { "opacity", "color", "unit_distance", "density_scale", "interpolation", "gradient_opacity" });
   Scene::TransferFunctionSection s;
   const json& op = Require(v, path, "opacity");
   if (!op.is_array() || op.empty())
@@ -390,6 +390,27 @@ Scene::TransferFunctionSection ParseTransferFunction(const json& v)
       Fail("transfer_function.interpolation", "unknown interpolation '" + m + "' (expected linear, nearest)");
     }
     s.Nearest = m == "nearest";
+  }
+  if (v.contains("gradient_opacity"))
+  {
+    const json& g = v["gradient_opacity"];
+    if (!g.is_array() || g.empty())
+    {
+      Fail("transfer_function.gradient_opacity", "expected a non-empty array of [gradient magnitude, opacity] points");
+    }
+    for (size_t i = 0; i < g.size(); ++i)
+    {
+      const std::string key = At("transfer_function.gradient_opacity", i);
+      auto p = Numbers<2>(g[i], key);
+      FitsFloat(NonNegative(g[i][0], At(key, 0), "a gradient magnitude"), At(key, 0));
+      NumberIn(g[i][1], At(key, 1), 0.0, 1.0, "opacity");
+      if (!s.GradientOpacity.empty() && !(p[0] > s.GradientOpacity.back()[0]))
+      {
+        Fail(At(key, 0), "gradient magnitude " + Num(p[0]) + " does not follow " + Num(s.GradientOpacity.back()[0]) +
+            " (points must be sorted by increasing magnitude)");
+      }
+      s.GradientOpacity.push_back(p);
+    }
   }
   return s;
 }
@@ -794,8 +815,8 @@ bool Scene::VolumeSection::operator==(const VolumeSection& o) const
 
 bool Scene::TransferFunctionSection::operator==(const TransferFunctionSection& o) const
 {
-  return std::tie(Opacity, Color, UnitDistance, DensityScale, Nearest) ==
-    std::tie(o.Opacity, o.Color, o.UnitDistance, o.DensityScale, o.Nearest);
+  return std::tie(Opacity, Color, UnitDistance, DensityScale, Nearest, GradientOpacity) ==
+    std::tie(o.Opacity, o.Color, o.UnitDistance, o.DensityScale, o.Nearest, o.GradientOpacity);
 }
 
 bool Scene::EnvironmentSection::operator==(const EnvironmentSection& o) const
@@ -979,6 +1000,14 @@ json ToJson(const Scene& s)
   tf["unit_distance"] = s.TransferFunction.UnitDistance;
   tf["density_scale"] = s.TransferFunction.DensityScale;
   tf["interpolation"] = s.TransferFunction.Nearest ? "nearest" : "linear";
+  if (!s.TransferFunction.GradientOpacity.empty())
+  {
+    tf["gradient_opacity"] = json::array();
+    for (const auto& p : s.TransferFunction.GradientOpacity)
+    {
+      tf["gradient_opacity"].push_back(json::array({ p[0], p[1] }));
+    }
+  }
   j["transfer_function"] = tf;
 
   const auto& e = s.Environment;

@@ -52,6 +52,8 @@ struct Scene
     double UnitDistance = 1.0;
     double DensityScale = 1.0;
     bool Nearest = false; // "interpolation": "nearest" (label maps); default "linear"
+    // (|grad s| per world unit, opacity factor), magnitudes strictly increasing; empty = none
+    std::vector<std::array<double, 2>> GradientOpacity;
     bool operator==(const TransferFunctionSection& o) const;
   };
   struct EnvironmentSection

@@ -2,6 +2,7 @@
 #include "vsContext.h"
 #include "vsError.h"
 #include "vsImage.h"
+#include "vsSerial.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +17,8 @@ void DeviceVolume::CheckFits(Context& context, std::array<uint32_t, 3> dims)
 }
 
 DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const float* scalars, std::array<uint32_t, 3> dims)
-  : Dims_(dims)
+  : Context_(context)
+  , Dims_(dims)
 {
   CheckFits(*context, dims);
   this->Image_ = std::make_unique<Image3D>(context, dims[0], dims[1], dims[2], vk::Format::eR32Sfloat, "volume");
@@ -99,4 +101,20 @@ void DeviceVolume::MakeQuads(const std::shared_ptr<Context>& context, const floa
 }
 
 DeviceVolume::~DeviceVolume() = default;
+
+void DeviceVolume::SetFactor(const float* factor)
+{
+  this->Factor_.reset();
+  if (factor)
+  {
+    this->Factor_ = std::make_unique<Image3D>(
+      this->Context_, this->Dims_[0], this->Dims_[1], this->Dims_[2], vk::Format::eR32Sfloat, "extinction factor");
+    const uint64_t slice = uint64_t(this->Dims_[0]) * this->Dims_[1];
+    for (uint32_t z = 0; z < this->Dims_[2]; ++z)
+    {
+      this->Factor_->UploadSlices(factor + slice * z, z, 1);
+    }
+  }
+  this->FactorSerial_ = NewSerial();
+}
 }

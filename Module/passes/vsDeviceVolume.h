@@ -8,6 +8,9 @@
 // (x + 1, y + 1) of slice z (neighbours clamped to the volume), so that the render kernel reads a
 // trilinear footprint in 2 vector gathers instead of 8 (lavapipe gathers 32-bit texels, and loads
 // 8-bit ones lane by lane). The scalars the two give are the same floats.
+//
+// Optionally a factor per voxel (the gradient opacity, vsGradientOpacity.h): a second R32F image of
+// the same dimensions whose interpolant scales the classified extinction in every pass.
 #ifndef vsDeviceVolume_h
 #define vsDeviceVolume_h
 
@@ -44,14 +47,25 @@ public:
   /** The range of the finite voxels ([0,0] when none is finite). */
   std::array<float, 2> Range() const { return this->Range_; }
 
+  /** Uploads the extinction factor per voxel (Dims() floats, x fastest, finite, >= 0), or drops it
+   *  (nullptr). Each call gives a new FactorSerial(). */
+  void SetFactor(const float* factor);
+  /** The factor image, or nullptr (no factor: the extinction is the transfer function's). */
+  const Image3D* Factor() const { return this->Factor_.get(); }
+  /** Changes with every SetFactor (0: never set): what caches of the extinction compare. */
+  uint64_t FactorSerial() const { return this->FactorSerial_; }
+
   /** Throws if a volume of these dimensions cannot live on the device. */
   static void CheckFits(Context& context, std::array<uint32_t, 3> dims);
 
 private:
   void MakeQuads(const std::shared_ptr<Context>& context, const float* scalars, float offset);
 
+  std::shared_ptr<Context> Context_;
   std::array<uint32_t, 3> Dims_;
   std::unique_ptr<Image3D> Image_;
+  std::unique_ptr<Image3D> Factor_;
+  uint64_t FactorSerial_ = 0;
   std::unique_ptr<Image3D> Quads_;
   float QuadOffset_ = 0.0f;
   uint64_t NonFinite_ = 0;

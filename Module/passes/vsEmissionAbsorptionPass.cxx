@@ -29,10 +29,19 @@ void Reserve(std::unique_ptr<Buffer>& b, const std::shared_ptr<Context>& ctx, ui
 EmissionAbsorptionPass::EmissionAbsorptionPass(std::shared_ptr<Context> context)
   : Context_(std::move(context))
 {
-  this->Pipeline_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_ea_render),
-    std::vector<BindingType>{ BindingType::StorageImage, BindingType::StorageBuffer,
-      BindingType::StorageBuffer, BindingType::StorageBuffer, BindingType::StorageBuffer },
-    0, "emission-absorption");
+}
+
+const ComputePipeline& EmissionAbsorptionPass::PipelineFor(bool factor)
+{
+  auto& pipeline = factor ? this->FactorPipeline_ : this->Pipeline_;
+  if (!pipeline)
+  {
+    pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_ea_render),
+      std::vector<BindingType>{ BindingType::StorageImage, BindingType::StorageBuffer, BindingType::StorageBuffer,
+        BindingType::StorageBuffer, BindingType::StorageBuffer, BindingType::StorageImage },
+      0, factor ? "emission-absorption (gradient opacity)" : "emission-absorption", { factor ? 1u : 0u });
+  }
+  return *pipeline;
 }
 
 EmissionAbsorptionPass::~EmissionAbsorptionPass() = default;
@@ -65,11 +74,13 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
   {
     this->Depth_->Upload(depth.data(), pixels * sizeof(float));
   }
-  DescriptorSet set(*this->Pipeline_);
+  const ComputePipeline& pipeline = this->PipelineFor(volume.Factor() != nullptr);
+  DescriptorSet set(pipeline);
   set.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, *this->Params_).Bind(3, *this->Depth_).Bind(4, *this->Out_);
+  set.Bind(5, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   Batch batch(this->Context_);
   batch.BeginTimer("render");
-  batch.Dispatch(*this->Pipeline_, set, nullptr, 0, (w + 7) / 8, (h + 7) / 8, 1);
+  batch.Dispatch(pipeline, set, nullptr, 0, (w + 7) / 8, (h + 7) / 8, 1);
   batch.EndTimer();
   batch.Submit();
   this->LastSeconds_ = batch.Seconds("render");

@@ -1,5 +1,6 @@
 // vsEmissionAbsorptionPass.h — emission-absorption ray casting of a DeviceVolume
-// into premultiplied RGBA (float), stopped at the opaque depth of each pixel.
+// into premultiplied RGBA (float), stopped at the opaque depth of each pixel. A volume with an
+// extinction factor (the gradient opacity) scales the composite's extinction by it.
 #ifndef vsEmissionAbsorptionPass_h
 #define vsEmissionAbsorptionPass_h
 
@@ -32,8 +33,11 @@ public:
   double LastSeconds() const { return this->LastSeconds_; }
 
 private:
+  /** The pipeline with or without the extinction factor (made on first use). */
+  const ComputePipeline& PipelineFor(bool factor);
+
   std::shared_ptr<Context> Context_;
-  std::shared_ptr<ComputePipeline> Pipeline_;
+  std::shared_ptr<ComputePipeline> Pipeline_, FactorPipeline_;
   std::unique_ptr<Buffer> Params_, Depth_, Out_;
   double LastSeconds_ = 0.0;
 };

@@ -169,7 +169,34 @@ void MajorantGrid::UpdateRanges(const DeviceVolume& volume, const float* hostSca
     this->Bricks_ = bricks;
   }
   this->Majorants_.clear();
+  this->FactorRanges_.clear();
+  this->Dims_ = dims;
   ++this->RangeUpdates_;
+}
+
+void MajorantGrid::SetFactor(const float* factor)
+{
+  this->FactorRanges_.clear();
+  if (!factor)
+  {
+    return;
+  }
+  if (!this->Image_)
+  {
+    throw InputError("the majorants' factor needs the brick ranges first (UpdateRanges)");
+  }
+  // The factor's range per brick over the scalars' footprint (the factor is finite everywhere).
+  const std::vector<float> r = HostRanges(factor, this->Dims_, this->Bricks_, this->BrickSize_);
+  const size_t count = r.size() / 4;
+  this->FactorRanges_.assign(2 * count, 0.0f);
+  for (size_t b = 0; b < count; ++b)
+  {
+    const float lo = std::min(r[4 * b], r[4 * b + 1]), hi = std::max(r[4 * b], r[4 * b + 1]);
+    // A trilinear interpolant of the factor may round a few ulps past its corners (three mixes
+    // of float): widen by 1e-6 of the value, which keeps 0 at 0 (empty bricks stay empty).
+    this->FactorRanges_[2 * b] = std::max(0.0f, lo * (1.0f - 1e-6f));
+    this->FactorRanges_[2 * b + 1] = hi * (1.0f + 1e-6f);
+  }
 }
 
 void MajorantGrid::UpdateMajorants(const TransferFunctionSamples& tf)
@@ -189,6 +216,13 @@ void MajorantGrid::UpdateMajorants(const TransferFunctionSamples& tf)
     {
       this->Majorants_[i] = tf.MaxExtinction(lo, hi);
       this->Controls_[i] = gap ? 0.0f : std::min(tf.MinExtinction(lo, hi), this->Majorants_[i]);
+      if (!this->FactorRanges_.empty())
+      {
+        // Float products round monotonically: sigma <= max sigma and g <= max g give
+        // fl(sigma g) <= fl(max sigma max g), and the same below for the control.
+        this->Majorants_[i] *= this->FactorRanges_[2 * i + 1];
+        this->Controls_[i] = std::min(this->Controls_[i] * this->FactorRanges_[2 * i], this->Majorants_[i]);
+      }
     }
   }
   this->Image_->Upload(this->Majorants_.data(), count * sizeof(float));

@@ -13,6 +13,11 @@
 // Two steps so each change does only the work it needs: the scalar range of every
 // brick (a device pass over the voxels, on a data change) and the majorants from
 // those ranges and the transfer function (host, on a transfer-function change).
+//
+// With an extinction factor per voxel (the gradient opacity, vsDeviceVolume.h SetFactor), a
+// sample's extinction is sigma_t(s) x g, g interpolated from the same footprint of voxels as s:
+// the brick majorant is then the brick's max sigma_t x its max g (and the control min x min),
+// each widened by a few ulps for the rounding of the interpolation (SetFactor).
 #ifndef vsMajorantGrid_h
 #define vsMajorantGrid_h
 
@@ -39,6 +44,11 @@ public:
    *  the volume, or, given the scalars the volume was made from (x fastest), the same ranges on the
    *  host, which is ~10x faster than lavapipe's pass and lets the first frame skip it. */
   void UpdateRanges(const DeviceVolume& volume, const float* hostScalars = nullptr);
+  /** The extinction factor per voxel (the volume's dims, as given to UpdateRanges), or none
+   *  (nullptr): its range per brick over the same footprint as the scalars'. Call before
+   *  UpdateMajorants, after UpdateRanges (which drops the factor: new data, new factor). */
+  void SetFactor(const float* factor);
+  bool HasFactor() const { return !this->FactorRanges_.empty(); }
   /** Recomputes the majorants from the ranges (after the transfer function changed) and uploads them. */
   void UpdateMajorants(const TransferFunctionSamples& tf);
 
@@ -76,6 +86,8 @@ private:
   uint32_t BrickSize_;
   std::array<uint32_t, 3> Bricks_{ { 0, 0, 0 } };
   std::vector<float> Ranges_; // min, max, non-finite flag, 0 per brick
+  std::vector<float> FactorRanges_; // min, max of the factor per brick (empty: no factor)
+  std::array<uint32_t, 3> Dims_{ { 0, 0, 0 } };
   std::vector<float> Majorants_, Controls_;
   std::unique_ptr<Image3D> Image_, TrackingImage_;
   std::vector<float> EmptyDistances_;

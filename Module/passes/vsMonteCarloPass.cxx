@@ -67,9 +67,10 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   const bool defensive = Defensive(params);
   // Hidden cropping regions have no extinction, below any brick's control: no control there.
   const uint32_t control = cropping ? 0u : params.crop.y & (shared::VS_CONTROL_SHADOW | shared::VS_CONTROL_CAMERA);
+  const uint32_t factor = params.crop.w != 0u ? 1u : 0u; // the gradient opacity's factor volume
   const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping,
     table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u, quads ? 1u : 0u, control,
-    params.crop.z == shared::VS_SAMPLER_SOBOL ? 1u : 0u };
+    params.crop.z == shared::VS_SAMPLER_SOBOL ? 1u : 0u, factor };
   auto& slot = this->Pipelines_[specialization];
   auto& pipeline = slot[format];
   if (!pipeline)
@@ -78,7 +79,7 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
     std::vector<B> bindings{ B::StorageImage, B::UniformTexelBuffer, B::StorageImage, B::StorageImage, B::StorageBuffer,
       B::UniformTexelBuffer, B::UniformTexelBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer,
       B::StorageBuffer, B::StorageBuffer, B::UniformTexelBuffer, B::StorageImage, B::StorageBuffer,
-      B::StorageImage };
+      B::StorageImage, B::StorageImage };
     static const char* formats[] = { "r8 visibility", "r16 visibility", "r32f visibility",
       "r8 visibility, counting reads" };
     const std::string name = std::string("monte carlo (") + formats[format] + ", " + StrategyName(strategy) + ", " +
@@ -89,7 +90,7 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
       (this->EmptySpaceSkipping_ ? "" : ", no empty-space skipping") + (quads ? ", 8-bit quads" : "") +
       ((control & shared::VS_CONTROL_SHADOW) ? ", residual ratio tracking" : "") +
       ((control & shared::VS_CONTROL_CAMERA) ? ", decomposition tracking" : "") +
-      (params.crop.z == shared::VS_SAMPLER_SOBOL ? ", Sobol" : "") + ")";
+      (params.crop.z == shared::VS_SAMPLER_SOBOL ? ", Sobol" : "") + (factor ? ", gradient opacity" : "") + ")";
     if (format == 3)
     {
       pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_mc_render_count), bindings, sizeof(uint32_t), name,
@@ -207,6 +208,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   params.viewport.z = this->Samples_;
   const bool quads = this->VolumeQuads_ && volume.Quads() && uint32_t(params.tracking.w + 0.5f) == 0u;
   params.dims.w = quads ? volume.QuadOffset() : 0.0f;
+  params.crop.w = volume.Factor() ? 1u : 0u; // the kernel's VS_SPEC_FACTOR
   this->LastUsedQuads_ = quads;
   if (!this->Params_)
   {
@@ -275,6 +277,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     this->NoQuads_ = std::make_unique<Image3D>(this->Context_, 1, 1, 1, vk::Format::eR32Uint, "no volume quads");
   }
   set.Bind(15, quads ? *volume.Quads() : *this->NoQuads_);
+  set.Bind(16, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   if (this->CountLookups_)
   {
     if (!this->Lookups_)

@@ -316,13 +316,16 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
 void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctionTable& tf,
   const MajorantGrid& majorants, Buffer& globals, const Progress& progress)
 {
-  if (!this->March_)
+  // The full-resolution march reads the extinction factor (the gradient opacity) where there is one.
+  const uint32_t extinctionFactor = volume.Factor() ? 1u : 0u;
+  if (!this->March_ || this->MarchFactor_ != extinctionFactor)
   {
     using B = BindingType;
     this->March_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_march),
       std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
-        B::StorageBuffer, B::StorageBuffer },
-      sizeof(ChunkPush), "sweep march");
+        B::StorageBuffer, B::StorageBuffer, B::StorageImage },
+      sizeof(ChunkPush), extinctionFactor ? "sweep march (gradient opacity)" : "sweep march", { 0u, extinctionFactor });
+    this->MarchFactor_ = extinctionFactor;
   }
   // The filter and the projection are specialised for the most kernel rays a box (and the linear
   // read beside it) covers along a and along b in this plan: their tap loops then unroll.
@@ -439,6 +442,7 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
   else
   {
     march.Bind(0, volume.Image()).Bind(2, majorants.Image());
+    march.Bind(7, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   }
   march.Bind(1, tf.Lut()).Bind(3, globals).Bind(4, dirs).Bind(5, state).Bind(6, stack);
   DescriptorSet project(*this->Project_);
@@ -513,7 +517,7 @@ bool VisibilityGrid::PoolKey::operator==(const PoolKey& o) const
   return this->Volume == o.Volume && this->TF == o.TF && this->Majorants == o.Majorants &&
     this->RangeUpdates == o.RangeUpdates && this->MajorantUpdates == o.MajorantUpdates && this->TFHash == o.TFHash &&
     this->MajorantHash == o.MajorantHash && this->Dims == o.Dims && this->Range == o.Range &&
-    this->NonFinite == o.NonFinite && this->Factor == o.Factor && this->Max == o.Max && this->CropFlags == o.CropFlags &&
+    this->NonFinite == o.NonFinite && this->ExtinctionFactor == o.ExtinctionFactor && this->Factor == o.Factor && this->Max == o.Max && this->CropFlags == o.CropFlags &&
     this->CropLo == o.CropLo && this->CropHi == o.CropHi;
 }
 
@@ -532,6 +536,7 @@ double VisibilityGrid::EnsurePooled(
   key.Dims = volume.Dims();
   key.Range = volume.Range();
   key.NonFinite = volume.NonFiniteCount();
+  key.ExtinctionFactor = volume.Factor() ? volume.FactorSerial() : 0;
   key.Factor = this->Parameters_.PoolingFactor();
   key.Max = this->Parameters_.MaxPooling;
   key.CropFlags = this->Geometry_.CropFlags;
@@ -549,10 +554,12 @@ double VisibilityGrid::EnsurePooled(
     // Specialised for the factor, the kind of pooling and whether cropping masks voxels.
     using B = BindingType;
     const uint32_t cropped = key.CropFlags ? 1u : 0u;
+    const uint32_t scaled = key.ExtinctionFactor ? 1u : 0u;
     this->Pool_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_pool),
-      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage }, sizeof(PoolPush),
-      "sweep pool (P " + std::to_string(factor) + (key.Max ? ", max" : ", mean") + (cropped ? ", cropped)" : ")"),
-      { factor, key.Max ? 1u : 0u, cropped });
+      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageImage }, sizeof(PoolPush),
+      "sweep pool (P " + std::to_string(factor) + (key.Max ? ", max" : ", mean") + (cropped ? ", cropped" : "") +
+        (scaled ? ", gradient opacity)" : ")"),
+      { factor, key.Max ? 1u : 0u, cropped, scaled });
     this->Occupancy_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_pool_occupancy),
       std::vector<B>{ B::StorageImage, B::StorageImage }, sizeof(OccupancyPush), "sweep pool occupancy");
   }
@@ -572,6 +579,7 @@ double VisibilityGrid::EnsurePooled(
     uint32_t(bricks.z), vk::Format::eR32Sfloat, "pooled extinction occupancy");
   DescriptorSet poolSet(*this->Pool_);
   poolSet.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, *this->Pooled_);
+  poolSet.Bind(3, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   DescriptorSet occupancySet(*this->Occupancy_);
   occupancySet.Bind(0, *this->Pooled_).Bind(1, *this->PooledOccupancy_);
   auto t = tf.Params();
@@ -598,15 +606,20 @@ double VisibilityGrid::EnsurePooled(
 void VisibilityGrid::RunBruteForce(const DeviceVolume& volume, const TransferFunctionTable& tf,
   const MajorantGrid& majorants, Buffer& globals, const std::vector<uint32_t>& directions, const Progress& progress)
 {
-  if (!this->Brute_)
+  const uint32_t extinctionFactor = volume.Factor() ? 1u : 0u;
+  if (!this->Brute_ || this->BruteFactor_ != extinctionFactor)
   {
     using B = BindingType;
     this->Brute_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_visibility_bruteforce),
-      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageImage },
-      sizeof(SlicePush), "visibility brute force");
+      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageImage,
+        B::StorageImage },
+      sizeof(SlicePush), extinctionFactor ? "visibility brute force (gradient opacity)" : "visibility brute force",
+      { 0u, extinctionFactor });
+    this->BruteFactor_ = extinctionFactor;
   }
   DescriptorSet set(*this->Brute_);
   set.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, majorants.Image()).Bind(3, globals).Bind(4, *this->Image_);
+  set.Bind(5, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   const auto& c = this->Plan_.Cells;
   const uint32_t cells = c[0] * c[1] * c[2];
   const uint32_t maxGroups = this->Context_->Info().MaxComputeWorkGroupCount[0];

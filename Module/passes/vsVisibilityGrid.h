@@ -121,6 +121,7 @@ private:
     std::array<uint32_t, 3> Dims{ { 0, 0, 0 } };
     std::array<float, 2> Range{ { 0.0f, 0.0f } };
     uint64_t NonFinite = 0;
+    uint64_t ExtinctionFactor = 0; // the volume's FactorSerial (the gradient opacity; 0: none)
     uint32_t Factor = 0;
     bool Max = false;
     uint32_t CropFlags = 0; // the cropping regions the voxels were masked with
@@ -130,6 +131,7 @@ private:
 
   std::shared_ptr<ComputePipeline> March_, MarchPooled_, Filter_, Project_, Brute_, Pool_, Occupancy_;
   uint32_t MarchPooledNearest_ = ~0u; // the specialization MarchPooled_ was made for
+  uint32_t MarchFactor_ = ~0u, BruteFactor_ = ~0u; // March_'s and Brute_'s (the extinction factor)
   std::unique_ptr<Image3D> Pooled_, PooledOccupancy_;
   PoolKey PoolKey_;
   uint32_t PoolBrick_ = 1;

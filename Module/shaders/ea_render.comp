@@ -7,6 +7,9 @@
  * every segment, early termination, rays stopped at the opaque depth.
  * The blend modes MIP, MinIP, average and additive are projections, not light transport: with
  * P.counts.z one of them, the ray is projected instead (project(), as vtkGPUVolumeRayCastMapper).
+ * With VS_EA_FACTOR, the composite's extinction is scaled by the volume's factor (the gradient
+ * opacity, uFactor, interpolated as the scalar), as vtkGPUVolumeRayCastMapper applies gradient
+ * opacity in composite blending only (not in the projections).
  * Output: premultiplied RGBA per pixel, rows bottom-up (OpenGL order).
  */
 #include "rng.h"
@@ -18,6 +21,9 @@ layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
 layout(std430, binding = 2) readonly buffer Params { VsFrameParams P; };
 layout(std430, binding = 3) readonly buffer Depth { float uDepth[]; };
 layout(std430, binding = 4) writeonly buffer Result { vec4 uOut[]; };
+layout(binding = 5, r32f) uniform readonly image3D uFactor; /* read only with VS_EA_FACTOR */
+layout(constant_id = 0) const uint VS_EA_FACTOR = 0u;
+#define VS_FACTOR_IMAGE
 
 #include "volume_access.glsl"
 
@@ -118,7 +124,10 @@ void main()
     {
       float b = min(a + stepSize, t.y);
       float ts = a + jitter * (b - a);
-      vec4 c = vs_classify(vs_sample(oi + ts * di, dims, P.counts.y), P.tf);
+      vec3 x = oi + ts * di;
+      vec4 c = vs_classify(vs_sample(x, dims, P.counts.y), P.tf);
+      if (VS_EA_FACTOR == 1u)
+        c.w *= vs_sample_factor(x, dims, P.counts.y);
       float A = 1.0 - exp(-c.w * (b - a));
       color += (1.0 - alpha) * A * c.rgb;
       alpha += (1.0 - alpha) * A;

@@ -54,7 +54,9 @@ layout(constant_id = 9) const uint VS_SPEC_QUADS = 0u;     /* 1: trilinear sampl
 layout(constant_id = 11) const uint VS_SPEC_SAMPLER = 0u;   /* VS_SAMPLER_* (render_params.h), = params.crop.z */
 const bool VS_SPEC_SOBOL = VS_SPEC_SAMPLER == VS_SAMPLER_SOBOL;
 layout(constant_id = 10) const uint VS_SPEC_CONTROL = 0u;   /* VS_CONTROL_* bits (render_params.h): the trackers
-                                                              split the extinction into the brick's control (binding 16) and the rest */
+                                                              split the extinction into the brick's control (uBricks.y) and the rest */
+layout(constant_id = 12) const uint VS_SPEC_FACTOR = 0u;   /* 1: the extinction is scaled by the volume's factor
+                                                              (the gradient opacity, binding 16; = params.crop.w) */
 layout(constant_id = 6) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
                                                              table (binding 12), stochastic cell only */
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
@@ -79,6 +81,9 @@ layout(binding = 12) uniform usamplerBuffer uTable; /* r32ui */
 /* An integer-coded volume's quads: texel (x, y, z) packs the 8-bit codes of voxels (x, y), (x + 1, y),
  * (x, y + 1), (x + 1, y + 1) of slice z; the scalar is code + P.dims.w. */
 layout(binding = 15, r32ui) uniform readonly uimage3D uQuads;
+/* The extinction factor per voxel (vsDeviceVolume.h; read only with VS_SPEC_FACTOR). */
+layout(binding = 16, r32f) uniform readonly image3D uFactor;
+#define VS_FACTOR_IMAGE
 layout(push_constant) uniform Push { uint target; } pc;
 
 /* The instrumented variant (mc_render_count.comp) counts what a sample reads:
@@ -260,13 +265,24 @@ float segment_max_extinction(vec3 o, vec3 d, float ta, float tb, ivec3 lo, vec4 
   return vs_max_extinction(smin, smax, gTF);
 }
 
+/* The cell walk's bound with the extinction factor: segment_max_extinction times the largest factor
+ * of the cell's corners (refine_majorant sets gCellFactor; both are upper bounds and the float
+ * product rounds monotonically, so the product bounds sigma_t(s) x g of every sample). */
+float gCellFactor = 1.0;
+
+float segment_majorant(vec3 o, vec3 d, float ta, float tb, ivec3 lo, vec4 c0, vec4 c1)
+{
+  float m = segment_max_extinction(o, d, ta, tb, lo, c0, c1);
+  return VS_SPEC_FACTOR != 0u ? m * gCellFactor : m;
+}
+
 /* One step of refine_majorant's bisection in log length, while the bracket is wider than 1%. */
 void bisect_step(vec3 o, vec3 d, float t, ivec3 lo, vec4 c0, vec4 c1, inout float hLo, inout float hHi, inout float mLo)
 {
   if (!(hHi > 1.01 * hLo))
     return;
   float hMid = sqrt(hLo * hHi);
-  float mMid = segment_max_extinction(o, d, t, t + hMid, lo, c0, c1);
+  float mMid = segment_majorant(o, d, t, t + hMid, lo, c0, c1);
   if (mMid * hMid <= gRefineDepth)
   {
     hLo = hMid;
@@ -306,13 +322,15 @@ float refine_majorant(vec3 o, vec3 d, float t, inout float tNext, float mu)
     tNext = t + hMax;
     return 0.0;
   }
-  float m = segment_max_extinction(o, d, t, t + hMax, lo, c0, c1);
+  if (VS_SPEC_FACTOR != 0u)
+    gCellFactor = vs_cell_max_factor(lo, hi);
+  float m = segment_majorant(o, d, t, t + hMax, lo, c0, c1);
   float h = hMax;
   if (m * h > gRefineDepth)
   {
     /* m(h) h grows with h: bisect for the longest h that keeps it below the depth. */
     float hLo = hMin, hHi = hMax;
-    float mLo = segment_max_extinction(o, d, t, t + hLo, lo, c0, c1);
+    float mLo = segment_majorant(o, d, t, t + hLo, lo, c0, c1);
     for (int k = 0; k < 12 && hHi > 1.01 * hLo; ++k)
       bisect_step(o, d, t, lo, c0, c1, hLo, hHi, mLo);
     h = hLo;
@@ -387,6 +405,15 @@ float kernel_sample(vec3 p)
   if (VS_SPEC_INTERPOLATION == VS_INTERPOLATION_NEAREST)
     return vs_sample_nearest(p, gDims);
   return VS_SPEC_QUADS != 0u ? quad_trilinear(p) : vs_sample_scalar(p, gDims);
+}
+
+/* The extinction factor at index-space point p (1 without one: the pipelines without gradient
+ * opacity read nothing more and compute the same bits, x * 1.0 being x). */
+float kernel_factor(vec3 p)
+{
+  if (VS_SPEC_FACTOR == 0u)
+    return 1.0;
+  return vs_sample_factor(p, gDims, VS_SPEC_INTERPOLATION);
 }
 
 /* The ray interval inside the (cropped) box and the kept side of every clip plane (vs_clip_planes'
@@ -547,8 +574,9 @@ bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, 
         if (dt >= hEnd)
           break;
         VS_COUNT(0);
-        float s = kernel_sample(o + (t + dt) * d);
-        if (u.y * mr < vs_classify_extinction(s, gTF) - c || ++steps >= cap)
+        vec3 x = o + (t + dt) * d;
+        float s = kernel_sample(x);
+        if (u.y * mr < vs_classify_extinction(s, gTF) * kernel_factor(x) - c || ++steps >= cap)
         {
           tHit = t + dt;
           sHit = s;
@@ -615,7 +643,8 @@ float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap,
         if (dt >= h)
           break;
         VS_COUNT(0);
-        float sigma = vs_classify_extinction(kernel_sample(o + (t + dt) * d), gTF);
+        vec3 x = o + (t + dt) * d;
+        float sigma = vs_classify_extinction(kernel_sample(x), gTF) * kernel_factor(x);
         T *= max(0.0, 1.0 - (sigma - c) / mr);
         if (++steps >= cap)
         {
@@ -675,7 +704,9 @@ void camera_reservoir(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint 
         if (dt >= h)
           break;
         VS_COUNT(0);
-        vec4 c = vs_classify(kernel_sample(o + (t + dt) * d), gTF);
+        vec3 x = o + (t + dt) * d;
+        vec4 c = vs_classify(kernel_sample(x), gTF);
+        c.w *= kernel_factor(x);
         vec3 ws = T * c.rgb * (c.w / mu);
         float si = dot(ws, vec3(0.2126, 0.7152, 0.0722));
         if (si > 0.0)

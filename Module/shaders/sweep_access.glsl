@@ -1,7 +1,9 @@
 /*
  * sweep_access.glsl — extinction along rays for the sweeps and the brute force
  * (GLSL only). The including shader declares a buffer holding `VsSweepGlobals G` and, without
- * VS_SWEEP_POOLED, uVolume, uTF and uMajorant, before including this file, and calls
+ * VS_SWEEP_POOLED, uVolume, uTF, uMajorant and uFactor (with VS_FACTOR_IMAGE defined: the
+ * extinction factor per voxel, the gradient opacity, read when the specialization constant
+ * VS_SWEEP_FACTOR is 1), before including this file, and calls
  * vs_load_sweep_globals() first in main(): the per-sample code then reads the
  * globals from registers, not from the buffer (measured: lavapipe does not hoist them).
  *
@@ -100,7 +102,10 @@ float vs_brick_majorant(vec3 q)
   return imageLoad(uPoolOccupancy, b).r;
 }
 #else
-/* Extinction at index-space point p: post-classified, zero where a clip plane removes it. */
+layout(constant_id = 1) const uint VS_SWEEP_FACTOR = 0u; /* 1: the extinction is scaled by uFactor */
+
+/* Extinction at index-space point p: post-classified, times the extinction factor (the gradient
+ * opacity) where there is one, zero where a clip plane removes it: what the renderer tracks. */
 float vs_extinction(vec3 p)
 {
   for (uint i = 0u; i < gClipCount; ++i)
@@ -108,7 +113,10 @@ float vs_extinction(vec3 p)
     if (dot(G.clipPlanes[i].xyz, p) + G.clipPlanes[i].w < 0.0)
       return 0.0;
   }
-  return vs_classify(vs_sample(p, gDims, gInterpolation), gTF).w;
+  float e = vs_classify(vs_sample(p, gDims, gInterpolation), gTF).w;
+  if (VS_SWEEP_FACTOR == 1u)
+    e *= vs_sample_factor(p, gDims, gInterpolation);
+  return e;
 }
 
 /* The majorant of the brick holding p (0 = empty brick: no sample needed). */

@@ -25,6 +25,8 @@ layout(binding = 2, r32f) uniform readonly image3D uPoolOccupancy;
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
 layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
 layout(binding = 2, r32f) uniform readonly image3D uMajorant;
+layout(binding = 7, r32f) uniform readonly image3D uFactor; /* read only with VS_SWEEP_FACTOR (sweep_access.glsl) */
+#define VS_FACTOR_IMAGE
 #endif
 layout(std430, binding = 3) readonly buffer Globals { VsSweepGlobals G; };
 layout(std430, binding = 4) readonly buffer Directions { VsSweepDirection uDir[]; };

@@ -7,16 +7,21 @@
  * so the mean keeps a ray's optical depth through a block; only the detail inside a
  * block is lost (the grid shapes the renderer's pdf: that costs variance, not bias).
  * Clip planes are not applied here (the march clips each ray's interval instead).
- * P, max pooling and cropping are specialization constants: the block loops unroll, and
+ * With VS_POOL_FACTOR, sigma_t at a voxel is scaled by the voxel's extinction factor (the gradient
+ * opacity, uFactor): the texel pools sigma_t(s) x g at the voxels, the same product the renderer
+ * interpolates between them (exact at the voxels; the pooling's loss of detail as above).
+ * P, max pooling, cropping and the factor are specialization constants: the block loops unroll, and
  * what is not used is compiled out (lavapipe runs both sides of a branch).
  */
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(constant_id = 0) const int VS_POOL_P = 2;
 layout(constant_id = 1) const uint VS_POOL_MAX = 0u;
 layout(constant_id = 2) const uint VS_POOL_CROP = 0u;
+layout(constant_id = 3) const uint VS_POOL_FACTOR = 0u;
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
 layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
 layout(binding = 2, r32f) uniform writeonly image3D uPooled;
+layout(binding = 3, r32f) uniform readonly image3D uFactor; /* read only with VS_POOL_FACTOR */
 layout(push_constant) uniform Push
 {
   ivec4 dims;   /* voxels per axis */
@@ -48,6 +53,8 @@ void main()
         ivec3 v = lo + ivec3(x, y, z);
         ivec3 c = min(v, last);
         float e = vs_classify(imageLoad(uVolume, c).r, pc.tf).w;
+        if (VS_POOL_FACTOR == 1u)
+          e *= imageLoad(uFactor, c).r;
         if (VS_POOL_CROP == 1u)
           e = vs_cropped_out(vec3(c)) ? 0.0 : e;
         sum += all(lessThanEqual(v, last)) ? e : 0.0;

@@ -16,6 +16,8 @@ layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
 layout(binding = 2, r32f) uniform readonly image3D uMajorant;
 layout(std430, binding = 3) readonly buffer Globals { VsSweepGlobals G; };
 layout(binding = 4) uniform writeonly image3D uVisibility;
+layout(binding = 5, r32f) uniform readonly image3D uFactor; /* read only with VS_SWEEP_FACTOR (sweep_access.glsl) */
+#define VS_FACTOR_IMAGE
 layout(push_constant) uniform Push { uint firstCell; uint firstDirection; } pc;
 
 #include "sweep_access.glsl"

@@ -10,6 +10,9 @@
  * tracking step, and its null-collision tests need only the extinction, one float of four).
  * Non-finite voxels are stored as NaN; any interpolated NaN classifies to zero
  * extinction and zero albedo (NaN/Inf voxels are empty space).
+ * With VS_FACTOR_IMAGE defined, the includer also declares the extinction factor per voxel (the
+ * gradient opacity, vsDeviceVolume.h), read by vs_sample_factor:
+ *   layout(binding = ..., r32f) uniform readonly image3D uFactor;
  */
 #include "interpolation.h"
 #include "ray_box.glsl"
@@ -76,6 +79,37 @@ float vs_sample(vec3 p, ivec3 dims, uint interpolation)
     return uintBitsToFloat(0x7fc00000u); /* NaN: empty space */
   return interpolation == VS_INTERPOLATION_NEAREST ? vs_sample_nearest(p, dims) : vs_sample_scalar(p, dims);
 }
+
+#ifdef VS_FACTOR_IMAGE
+/* The extinction factor at continuous index p, interpolated as the scalar is (vs_sample_scalar's
+ * trilinear weights, or the nearest voxel), clamped to the volume. */
+float vs_sample_factor(vec3 p, ivec3 dims, uint interpolation)
+{
+  vec3 q = clamp(p, vec3(0.0), vec3(dims - 1));
+  if (interpolation == VS_INTERPOLATION_NEAREST)
+    return imageLoad(uFactor, min(ivec3(floor(q + 0.5)), dims - 1)).r;
+  ivec3 i0 = ivec3(floor(q));
+  ivec3 i1 = min(i0 + 1, dims - 1);
+  vec3 f = q - vec3(i0);
+  float c00 = mix(imageLoad(uFactor, ivec3(i0.x, i0.y, i0.z)).r, imageLoad(uFactor, ivec3(i1.x, i0.y, i0.z)).r, f.x);
+  float c10 = mix(imageLoad(uFactor, ivec3(i0.x, i1.y, i0.z)).r, imageLoad(uFactor, ivec3(i1.x, i1.y, i0.z)).r, f.x);
+  float c01 = mix(imageLoad(uFactor, ivec3(i0.x, i0.y, i1.z)).r, imageLoad(uFactor, ivec3(i1.x, i0.y, i1.z)).r, f.x);
+  float c11 = mix(imageLoad(uFactor, ivec3(i0.x, i1.y, i1.z)).r, imageLoad(uFactor, ivec3(i1.x, i1.y, i1.z)).r, f.x);
+  return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
+}
+
+/* The largest factor a sample in the voxel cell from lo to hi (corners) can read: the largest
+ * corner (a trilinear interpolant lies between its corners, a nearest sample reads one), widened
+ * by 1e-6 for the rounding of the interpolation (as the bricks' bounds, vsMajorantGrid.h). */
+float vs_cell_max_factor(ivec3 lo, ivec3 hi)
+{
+  float m = max(max(max(imageLoad(uFactor, ivec3(lo.x, lo.y, lo.z)).r, imageLoad(uFactor, ivec3(hi.x, lo.y, lo.z)).r),
+                  max(imageLoad(uFactor, ivec3(lo.x, hi.y, lo.z)).r, imageLoad(uFactor, ivec3(hi.x, hi.y, lo.z)).r)),
+    max(max(imageLoad(uFactor, ivec3(lo.x, lo.y, hi.z)).r, imageLoad(uFactor, ivec3(hi.x, lo.y, hi.z)).r),
+      max(imageLoad(uFactor, ivec3(lo.x, hi.y, hi.z)).r, imageLoad(uFactor, ivec3(hi.x, hi.y, hi.z)).r)));
+  return m * (1.0 + 1e-6);
+}
+#endif
 
 /* Float f of the transfer-function table (entry f / 4, channel f % 4; the range-max levels follow). */
 float vs_tf_float(int f)

@@ -57,6 +57,21 @@ struct VisibilityScene
     this->Majorants->UpdateMajorants(samples);
   }
 
+  /** Scales the extinction by factor(x, y, z) per voxel (the gradient opacity's factor volume,
+   *  vsDeviceVolume.h SetFactor), with the majorants that bound it. */
+  void ScaleExtinction(const std::function<float(int, int, int)>& factor)
+  {
+    const auto dims = this->Volume->Dims();
+    std::vector<float> g(size_t(dims[0]) * dims[1] * dims[2]);
+    for (uint32_t z = 0; z < dims[2]; ++z)
+      for (uint32_t y = 0; y < dims[1]; ++y)
+        for (uint32_t x = 0; x < dims[0]; ++x)
+          g[(size_t(z) * dims[1] + y) * dims[0] + x] = factor(int(x), int(y), int(z));
+    this->Volume->SetFactor(g.data());
+    this->Majorants->SetFactor(g.data());
+    this->Majorants->UpdateMajorants(this->TF->Samples());
+  }
+
   std::vector<float> Grid(vs::VisibilityGrid& grid, const vs::VisibilityGridParameters& p,
     const std::vector<glm::dvec4>& planes = {})
   {

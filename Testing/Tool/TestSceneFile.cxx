@@ -29,7 +29,8 @@ json FullScene()
     "transfer_function": {
       "opacity": [[0, 0.0], [60, 0.0], [120, 0.8]],
       "color": [[0, 1, 1, 1], [255, 0.9, 0.7, 0.6]],
-      "unit_distance": 1.5, "density_scale": 2.0, "interpolation": "nearest"
+      "unit_distance": 1.5, "density_scale": 2.0, "interpolation": "nearest",
+      "gradient_opacity": [[0, 0.0], [12.5, 1.0]]
     },
     "environment": {"sun": {"direction": [1, 0, 1], "radius_deg": 3, "radiance": [100, 90, 80], "sky": [0.1, 0.2, 0.3]},
                     "intensity": 0.5, "visible_background": false, "background": [0.1, 0.1, 0.1],
@@ -85,6 +86,8 @@ TEST(SceneFile, ParsesEverySection)
   EXPECT_EQ(s.TransferFunction.Color[1][3], 0.6);
   EXPECT_EQ(s.TransferFunction.UnitDistance, 1.5);
   EXPECT_TRUE(s.TransferFunction.Nearest);
+  ASSERT_EQ(s.TransferFunction.GradientOpacity.size(), 2u);
+  EXPECT_EQ(s.TransferFunction.GradientOpacity[1][0], 12.5);
   EXPECT_EQ(s.Environment.Type, Scene::EnvironmentSection::Kind::Sun);
   EXPECT_EQ(s.Environment.SunRadiusDeg, 3.0);
   EXPECT_FALSE(s.Environment.VisibleBackground);
@@ -117,6 +120,7 @@ TEST(SceneFile, DefaultsOfOptionalSections)
   EXPECT_EQ(s.Volume.File, "/data/v.vti");
   EXPECT_EQ(s.Volume.Grid, "density");
   EXPECT_TRUE(s.TransferFunction.Color.empty());
+  EXPECT_TRUE(s.TransferFunction.GradientOpacity.empty()) << "no gradient opacity unless given";
   EXPECT_EQ(s.Environment.Type, Scene::EnvironmentSection::Kind::Constant);
   EXPECT_EQ(s.Camera.ViewUp, (vstool::Vec3{ 0, 0, 1 }));
   EXPECT_EQ(s.Camera.ViewAngle, 30.0);
@@ -515,6 +519,15 @@ TEST(SceneFile, UnsortedTransferFunctions)
     "transfer_function.opacity[2][0]: scalar 40 does not follow 80 (points must be sorted");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["color"] = { { 5, 1, 1, 1 }, { 5, 0, 0, 0 } }; }),
     "transfer_function.color[1][0]: scalar 5 does not follow 5");
+  EXPECT_ERROR_STARTS(
+    ErrorAfter([](json& j) { j["transfer_function"]["gradient_opacity"] = { { 2, 0 }, { 1, 1 } }; }),
+    "transfer_function.gradient_opacity[1][0]: gradient magnitude 1 does not follow 2");
+  EXPECT_ERROR_STARTS(
+    ErrorAfter([](json& j) { j["transfer_function"]["gradient_opacity"] = { { -1, 0 }, { 1, 1 } }; }),
+    "transfer_function.gradient_opacity[0][0]: ");
+  EXPECT_ERROR_STARTS(
+    ErrorAfter([](json& j) { j["transfer_function"]["gradient_opacity"] = { { 0, 0 }, { 1, 1.5 } }; }),
+    "transfer_function.gradient_opacity[1][1]: ");
 }
 
 TEST(SceneFile, WrongArrayLengths)

@@ -61,7 +61,9 @@ struct VsRenderParams
   vec4 cropLo;       /* the cropping regions (vsVolumeGeometry.h): index-space planes, xyz */
   vec4 cropHi;
   uvec4 crop;        /* x: the regions' flags (0 = none: the box is all); y: VS_CONTROL_* bits (ignored with
-                        cropping regions: hidden regions have no extinction); z: the sampler (VS_SAMPLER_*); w: unused */
+                        cropping regions: hidden regions have no extinction); z: the sampler (VS_SAMPLER_*);
+                        w: 1 = the extinction is scaled by the volume's factor (the gradient opacity;
+                        MonteCarloPass sets it from the DeviceVolume) */
   vec4 mixture;      /* x: TwoStep's defensive weight alpha, the probability of an Environment sample
                         (strategies.h vs_sample_defensive_*; 0 = plain TwoStep); y, z, w: unused */
 };
