@@ -1027,6 +1027,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     meanSquare /= std::max<double>(1.0, double(mean.size() / 4));
     // The cost per sample without the direction table's build, which (like the sweeps) is the
     // grid's update, made once per grid state, not per sample.
+    I.Selector.SetGridComplete(I.Grid && I.Grid->IsComplete());
     I.Selector.Record(estimator, spp, I.LastRenderSeconds, uint64_t(w) * h, double(pass->Samples()), pass->SquareSum(),
       meanSquare);
   }
@@ -1161,6 +1162,7 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
   // Auto stops filling in while TwoStep, measured with half of the light's directions swept, loses
   // to Environment sampling at equal time; lazy updates and invalidations still happen.
   r.FillIn = !autoStrategy || I.Selector.GridWorthSweeping();
+  r.FillUnswept = this->FillUnsweptDirections;
   if (!I.Grid)
   {
     I.Grid = std::make_unique<vs::VisibilityGridUpdater>(I.Context);
@@ -1467,6 +1469,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SweepFrameFraction: " << this->SweepFrameFraction << "\n";
   os << indent << "AutoProbeFraction: " << this->AutoProbeFraction << "\n";
   os << indent << "LightWeightedDirections: " << (this->LightWeightedDirections ? "On" : "Off") << "\n";
+  os << indent << "FillUnsweptDirections: " << (this->FillUnsweptDirections ? "On" : "Off") << "\n";
   os << indent << "PendingDirections: " << this->GetPendingDirections() << "\n";
   os << indent << "CellMode: " << this->GetCellModeAsString() << "\n";
   os << indent << "ShadowRays: " << this->ShadowRays << " per scatter point\n";

@@ -392,6 +392,13 @@ public:
   vtkSetMacro(LightWeightedDirections, bool);
   vtkGetMacro(LightWeightedDirections, bool);
   vtkBooleanMacro(LightWeightedDirections, bool);
+  /** While the grid fills in, its directions not swept yet read, in every cell, the visibility of
+   *  the nearest swept direction instead of 1 (fully visible). Either is unbiased (the grid only
+   *  shapes the pdf); at 1, an unswept sky beside a swept sun that a cell sees shadowed makes
+   *  TwoStep sample the sun too rarely at lit points of that cell. Default on. */
+  vtkSetMacro(FillUnsweptDirections, bool);
+  vtkGetMacro(FillUnsweptDirections, bool);
+  vtkBooleanMacro(FillUnsweptDirections, bool);
   vtkGetMacro(SweepFrameFraction, double);
   int GetPendingDirections();
   ///@}
@@ -525,6 +532,7 @@ protected:
   bool ProgressiveVisibility = true;
   double SweepFrameFraction = 0.25;
   bool LightWeightedDirections = true;
+  bool FillUnsweptDirections = true;
   double AutoProbeFraction = 0.05;
   int CellMode = StochasticCell;
   int ShadowRays = 1;

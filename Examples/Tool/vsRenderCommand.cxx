@@ -506,6 +506,10 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   {
     mapper->SetLightWeightedDirections(*v.LightWeightedDirections);
   }
+  if (v.FillUnswept)
+  {
+    mapper->SetFillUnsweptDirections(*v.FillUnswept);
+  }
   if (v.SweepFrameFraction)
   {
     mapper->SetSweepFrameFraction(*v.SweepFrameFraction);

@@ -616,7 +616,7 @@ Scene::VisibilitySection ParseVisibility(const json& v)
   CheckKeys(v, path,
     { "direction_resolution", "voxels_per_cell", "kernel_resolution", "filtering", "filter_angle_fraction", "epsilon",
       "cell_mode", "skip_unlit_directions", "progressive", "sweep_frame_fraction",
-      "light_weighted_directions", "extinction_pooling" });
+      "light_weighted_directions", "fill_unswept", "extinction_pooling" });
   Scene::VisibilitySection s;
   if (v.contains("direction_resolution"))
   {
@@ -650,6 +650,10 @@ Scene::VisibilitySection ParseVisibility(const json& v)
   if (v.contains("light_weighted_directions"))
   {
     s.LightWeightedDirections = Boolean(v["light_weighted_directions"], "visibility.light_weighted_directions");
+  }
+  if (v.contains("fill_unswept"))
+  {
+    s.FillUnswept = Boolean(v["fill_unswept"], "visibility.fill_unswept");
   }
   if (v.contains("progressive"))
   {
@@ -859,10 +863,11 @@ bool Scene::RenderSection::operator==(const RenderSection& o) const
 bool Scene::VisibilitySection::operator==(const VisibilitySection& o) const
 {
   return std::tie(DirectionResolution, VoxelsPerCell, KernelResolution, Filtering, FilterAngleFraction, Epsilon,
-           CellMode, SkipUnlitDirections, Progressive, SweepFrameFraction, LightWeightedDirections, ExtinctionPooling) ==
+           CellMode, SkipUnlitDirections, Progressive, SweepFrameFraction, LightWeightedDirections, FillUnswept,
+           ExtinctionPooling) ==
     std::tie(o.DirectionResolution, o.VoxelsPerCell, o.KernelResolution, o.Filtering, o.FilterAngleFraction, o.Epsilon,
       o.CellMode, o.SkipUnlitDirections, o.Progressive, o.SweepFrameFraction, o.LightWeightedDirections,
-      o.ExtinctionPooling);
+      o.FillUnswept, o.ExtinctionPooling);
 }
 
 bool Scene::ClipPlane::operator==(const ClipPlane& o) const
@@ -1083,6 +1088,8 @@ json ToJson(const Scene& s)
     vis["progressive"] = *v.Progressive;
   if (v.LightWeightedDirections)
     vis["light_weighted_directions"] = *v.LightWeightedDirections;
+  if (v.FillUnswept)
+    vis["fill_unswept"] = *v.FillUnswept;
   if (v.SweepFrameFraction)
     vis["sweep_frame_fraction"] = *v.SweepFrameFraction;
   if (!vis.empty())

@@ -18,7 +18,8 @@
 //    "static"), "directions_per_frame" (default 4) and "static_interval" (default 16).
 //  - "visibility": {"direction_resolution", "voxels_per_cell", "kernel_resolution",
 //    "filtering", "filter_angle_fraction", "epsilon", "cell_mode", "skip_unlit_directions",
-//    "progressive", "sweep_frame_fraction", "light_weighted_directions"},
+//    "progressive", "sweep_frame_fraction", "light_weighted_directions", "fill_unswept",
+//    "extinction_pooling"},
 //    each optional.
 //  - "clip_planes": [{"origin": [..], "normal": [..]}, ...].
 #ifndef vsSceneFile_h
@@ -124,6 +125,7 @@ struct Scene
     std::optional<bool> Progressive;         // default true: the grid fills in between frames
     std::optional<double> SweepFrameFraction; // default 0.25: sweep time per frame / render time
     std::optional<bool> LightWeightedDirections; // default true: sweep towards each texel's light
+    std::optional<bool> FillUnswept; // default true: unswept directions read the nearest swept one
     bool operator==(const VisibilitySection& o) const;
   };
   struct ClipPlane

@@ -111,7 +111,7 @@ void StrategySelector::EndEpoch(double meanSquare)
     // in (measured on mri_sunrise: Auto swept 21% of a 16 s budget for a grid it then did not use).
     if (measured[GridEstimator])
     {
-      this->GridWorth_ = ratio > 1.0;
+      this->GridWorth_ = ratio > 1.0 || (!this->GridComplete_ && ratio > PartialGridTolerance);
       this->GridVerdict_ = true;
     }
   }

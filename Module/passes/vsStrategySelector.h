@@ -49,8 +49,14 @@ public:
 
   /** Whether sweeping more directions is worth it: false while TwoStep, measured with at least
    *  half of the light's directions swept, is less efficient than Environment sampling
-   *  (re-evaluated at every epoch that measured TwoStep). */
+   *  (re-evaluated at every epoch that measured TwoStep). While the grid is incomplete, TwoStep
+   *  within PartialGridTolerance of Environment sampling is worth completing: its unswept
+   *  directions copy swept ones (FillUnswept), so a partial grid measures at best about as good as
+   *  Environment sampling, and only the complete grid shows what the grid gains. */
   bool GridWorthSweeping() const { return this->GridWorth_; }
+  /** Whether the grid TwoStep is measured with is complete (the default: assumed complete). */
+  void SetGridComplete(bool complete) { this->GridComplete_ = complete; }
+  static constexpr double PartialGridTolerance = 0.9;
 
   /** Measured per-sample variance and device seconds per sample of an estimator (0 = unknown). */
   double Variance(Estimator e) const { return this->Stats_[e].Variance; }
@@ -84,6 +90,7 @@ private:
   bool Comparing_ = false;    // both estimators measured in this epoch (the first epochs alternate)
   bool GridWorth_ = true;
   bool GridVerdict_ = false;  // GridWorth_ was decided for this grid
+  bool GridComplete_ = true;
   uint32_t Frame_ = 0, EpochFrame_ = 0, Decisions_ = 0;
   uint64_t Pixels_ = 0;
   double MeanSquare_ = 0.0;

@@ -11,6 +11,9 @@
 #include "vsTransferFunctionTable.h"
 #include "shared/interpolation.h"
 
+#include "vs_spirv_grid_fill_r16.h"
+#include "vs_spirv_grid_fill_r32f.h"
+#include "vs_spirv_grid_fill_r8.h"
 #include "vs_spirv_sweep_filter.h"
 #include "vs_spirv_sweep_march.h"
 #include "vs_spirv_sweep_march_pooled.h"
@@ -33,6 +36,13 @@ namespace vs
 {
 namespace
 {
+/** grid_fill.glsl's push constants. */
+struct FillPush
+{
+  glm::uvec4 cells; // cells per axis, w: D
+  uint32_t copies;
+};
+
 vk::Format ToVk(VisibilityGridParameters::Format f)
 {
   switch (f)
@@ -183,6 +193,64 @@ void VisibilityGrid::Clear(float value)
   }
   this->Image_->Clear(std::clamp(value, 0.0f, 1.0f));
   this->ContentSerial_ = NewSerial();
+}
+
+double VisibilityGrid::CopyDirections(const std::vector<std::pair<uint32_t, uint32_t>>& copies)
+{
+  if (!this->Image_)
+  {
+    throw InputError("the visibility grid has no image to fill");
+  }
+  if (copies.empty())
+  {
+    return 0.0;
+  }
+  const uint32_t side = this->Plan_.Side;
+  std::vector<uint32_t> pairs;
+  for (const auto& [to, from] : copies)
+  {
+    if (to >= side * side || from >= side * side)
+    {
+      throw InputError("direction " + std::to_string(std::max(to, from)) + " is not one of the grid's " +
+        std::to_string(side * side));
+    }
+    pairs.insert(pairs.end(), { to, from });
+  }
+  std::shared_ptr<ComputePipeline> fill; // of the grid's format (shared: compiled once per process)
+  {
+    using B = BindingType;
+    const std::vector<B> bindings{ B::StorageImage, B::StorageBuffer };
+    switch (this->Parameters_.StorageFormat)
+    {
+      case VisibilityGridParameters::Format::Unorm8:
+        fill = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_grid_fill_r8), bindings, sizeof(FillPush),
+          "grid fill (r8)");
+        break;
+      case VisibilityGridParameters::Format::Unorm16:
+        fill = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_grid_fill_r16), bindings, sizeof(FillPush),
+          "grid fill (r16)");
+        break;
+      default:
+        fill = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_grid_fill_r32f), bindings, sizeof(FillPush),
+          "grid fill (r32f)");
+        break;
+    }
+  }
+  Buffer list(this->Context_, pairs.size() * sizeof(uint32_t), "grid fill copies");
+  list.Upload(pairs.data(), pairs.size() * sizeof(uint32_t));
+  DescriptorSet set(*fill);
+  set.Bind(0, *this->Image_).Bind(1, list);
+  const auto& c = this->Plan_.Cells;
+  FillPush push{ glm::uvec4(c[0], c[1], c[2], side), uint32_t(copies.size()) };
+  const uint64_t cells = uint64_t(c[0]) * c[1] * c[2];
+  Batch cmd(this->Context_);
+  cmd.BeginTimer("fill");
+  cmd.Dispatch(*fill, set, &push, sizeof(push), uint32_t((cells + 63) / 64));
+  cmd.Barrier();
+  cmd.EndTimer();
+  cmd.Submit();
+  this->ContentSerial_ = NewSerial();
+  return cmd.Seconds("fill");
 }
 
 void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionTable& tf,

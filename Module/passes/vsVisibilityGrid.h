@@ -18,6 +18,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vs
@@ -57,6 +58,9 @@ public:
     float clearValue = 0.0f);
   /** Sets every entry of an allocated grid to `value` (in [0, 1]). */
   void Clear(float value);
+  /** In every cell, direction `first` takes the value of direction `second` of the same cell, for
+   *  each pair (the `second`s must not be among the `first`s). Returns its device seconds. */
+  double CopyDirections(const std::vector<std::pair<uint32_t, uint32_t>>& copies);
 
   /** Throws DeviceLimitError when the grid for this geometry and these parameters cannot exist. */
   static void CheckFits(Context& context, const VolumeGeometry& geometry, const VisibilityGridParameters& p);

@@ -3,6 +3,7 @@
 #include "vsContext.h"
 #include "vsError.h"
 #include "vsImage.h"
+#include "shared/octahedral.h"
 #include "shared/update_order.h"
 
 #include <algorithm>
@@ -74,6 +75,47 @@ std::vector<uint32_t> VisibilityGridUpdater::FillOrder(
     return rank[a] < rank[b];
   });
   return order;
+}
+
+std::vector<std::pair<uint32_t, uint32_t>> VisibilityGridUpdater::NearestSwept(
+  uint32_t side, const std::vector<uint8_t>& swept, const std::vector<uint8_t>& targets)
+{
+  const uint32_t count = side * side;
+  std::vector<glm::vec3> centre(count);
+  std::vector<uint32_t> sources;
+  for (uint32_t n = 0; n < count; ++n)
+  {
+    centre[n] = shared::vs_texel_dir(glm::uvec2(n % side, n / side), side);
+    if (n < swept.size() && swept[n])
+    {
+      sources.push_back(n);
+    }
+  }
+  std::vector<std::pair<uint32_t, uint32_t>> pairs;
+  if (sources.empty())
+  {
+    return pairs;
+  }
+  for (uint32_t n = 0; n < count; ++n)
+  {
+    if ((n < swept.size() && swept[n]) || (!targets.empty() && !(n < targets.size() && targets[n])))
+    {
+      continue;
+    }
+    uint32_t best = sources.front();
+    float bestDot = -2.0f;
+    for (uint32_t m : sources)
+    {
+      const float c = glm::dot(centre[n], centre[m]);
+      if (c > bestDot)
+      {
+        bestDot = c;
+        best = m;
+      }
+    }
+    pairs.emplace_back(n, best);
+  }
+  return pairs;
 }
 
 std::vector<double> VisibilityGridUpdater::Signature(const GridUpdateRequest& r)
@@ -161,6 +203,7 @@ GridUpdateResult VisibilityGridUpdater::Update(const DeviceVolume& volume, const
       this->Grid_->Clear(1.0f);
     }
     this->Swept_.assign(count, 0);
+    this->Filled_ = 0;
     this->Signature_ = signature;
     this->Scheduler_.OnFullUpdate();
     this->Allowance_ = 0.0;
@@ -211,6 +254,14 @@ GridUpdateResult VisibilityGridUpdater::Update(const DeviceVolume& volume, const
     now.insert(now.end(), pending.begin(), pending.begin() + std::ptrdiff_t(n));
   }
   GridUpdateResult swept = this->Sweep(volume, tf, majorants, request, now, progress);
+  if (request.FillUnswept && swept.DirectionsSwept > 0 && this->PendingDirections() > 0)
+  {
+    // The still unswept directions take their nearest swept neighbour's visibility in every cell
+    // (overwritten when they are swept). Its cost counts as the sweeps'.
+    const auto pairs = NearestSwept(side, this->Swept_, request.Required);
+    swept.Seconds += this->Grid_->CopyDirections(pairs);
+    this->Filled_ += pairs.size();
+  }
   if (request.Progressive && request.BudgetSeconds > 0.0)
   {
     this->Allowance_ -= swept.Seconds; // may go negative: a debt paid by later grants

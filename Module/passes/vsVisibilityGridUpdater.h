@@ -51,6 +51,10 @@ struct GridUpdateRequest
   /** Sweep pending directions at all (false: only lazy updates after data changes; the grid keeps
    *  visibility 1 where it was never swept). */
   bool FillIn = true;
+  /** While a new grid fills in, its required directions not swept yet read, in every cell, the
+   *  visibility of the nearest swept direction (FillUnswept) instead of 1: a grid whose swept sun is
+   *  shadowed in a cell then does not say the unswept sky beside it is fully visible there. */
+  bool FillUnswept = true;
 };
 
 struct GridUpdateResult
@@ -103,6 +107,14 @@ public:
   static std::vector<uint32_t> FillOrder(
     uint32_t side, const std::vector<uint32_t>& candidates, const std::vector<float>& importance);
 
+  /** For each direction of `targets` not in `swept` (D x D flags), the swept direction nearest to it
+   *  on the sphere (texel centres; ties to the lower index): the pairs (target, source). Empty when
+   *  nothing is swept. */
+  static std::vector<std::pair<uint32_t, uint32_t>> NearestSwept(
+    uint32_t side, const std::vector<uint8_t>& swept, const std::vector<uint8_t>& targets);
+  /** Unswept directions filled from swept ones since the last full update (FillUnswept). */
+  uint64_t FilledDirections() const { return this->Filled_; }
+
 private:
   GridUpdateResult Sweep(const DeviceVolume& volume, const TransferFunctionTable& tf, const MajorantGrid& majorants,
     const GridUpdateRequest& request, std::vector<uint32_t> directions, const VisibilityGrid::Progress& progress);
@@ -119,6 +131,7 @@ private:
   uint64_t Generation_ = 0;
   double SecondsPerDirection_ = 0.0;
   double Allowance_ = 0.0;        // progressive: sweep seconds granted and not yet spent
+  uint64_t Filled_ = 0;
 };
 }
 

@@ -11,6 +11,7 @@
 #include "vsStrategySelector.h"
 #include "vsVisibilityGridUpdater.h"
 
+#include "shared/octahedral.h"
 #include "shared/update_order.h"
 
 #include <gtest/gtest.h>
@@ -77,6 +78,7 @@ TEST(VisibilityGridUpdater, ProgressiveFillInStartsVisibleAndEndsEqualToAFullSwe
   importance[7] = 50.0f; // the "sun"
   VisibilityGridUpdater updater(s.Context);
   GridUpdateRequest r = Request(s, importance);
+  r.FillUnswept = false; // unswept directions keep visibility 1 (FillUnswept: the next test)
 
   // First update: a new grid, nothing swept, every entry visibility 1.
   auto first = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
@@ -114,6 +116,71 @@ TEST(VisibilityGridUpdater, ProgressiveFillInStartsVisibleAndEndsEqualToAFullSwe
   vs::VisibilityGrid full(s.Context);
   const auto reference = s.Grid(full, r.Parameters);
   EXPECT_EQ(updater.Grid()->Download(), reference) << "filled in progressively = swept at once";
+}
+
+TEST(VisibilityGridUpdater, NearestSweptIsTheClosestSweptDirectionOnTheSphere)
+{
+  const uint32_t side = 4;
+  std::vector<uint8_t> swept(16, 0);
+  EXPECT_TRUE(VisibilityGridUpdater::NearestSwept(side, swept, {}).empty()) << "nothing swept: nothing to copy";
+  swept[5] = swept[10] = 1;
+  std::vector<uint8_t> targets(16, 1);
+  targets[0] = 0; // not required: not filled
+  const auto pairs = VisibilityGridUpdater::NearestSwept(side, swept, targets);
+  ASSERT_EQ(pairs.size(), 13u);
+  for (const auto& [to, from] : pairs)
+  {
+    EXPECT_NE(to, 0u);
+    EXPECT_TRUE(from == 5u || from == 10u);
+    const glm::vec3 d = vs::shared::vs_texel_dir(glm::uvec2(to % side, to / side), side);
+    const float chosen = glm::dot(d, vs::shared::vs_texel_dir(glm::uvec2(from % side, from / side), side));
+    for (uint32_t m : { 5u, 10u })
+      EXPECT_GE(chosen, glm::dot(d, vs::shared::vs_texel_dir(glm::uvec2(m % side, m / side), side)))
+        << "direction " << to << " copies " << from << ", but " << m << " is closer";
+  }
+}
+
+TEST(VisibilityGridUpdater, UnsweptDirectionsReadTheNearestSweptOneUntilSwept)
+{
+  VisibilityScene s = Slab();
+  std::vector<float> importance(16, 1.0f);
+  importance[7] = 50.0f;
+  importance[2] = 40.0f;
+  VisibilityGridUpdater updater(s.Context);
+  GridUpdateRequest r = Request(s, importance); // FillUnswept is on by default
+  ASSERT_TRUE(r.FillUnswept);
+  updater.Update(*s.Volume, *s.TF, *s.Majorants, r); // the new grid, nothing swept: 1 everywhere
+  for (float v : updater.Grid()->Download())
+    ASSERT_EQ(v, 1.0f);
+  updater.Update(*s.Volume, *s.TF, *s.Majorants, r); // direction 7 only
+  {
+    const auto g = updater.Grid()->Download();
+    size_t shadowed = 0;
+    for (size_t cell = 0; cell < g.size() / 16; ++cell)
+    {
+      const float sun = g[cell * 16 + 7];
+      shadowed += sun < 0.5f;
+      for (uint32_t n = 0; n < 16; ++n)
+        ASSERT_EQ(g[cell * 16 + n], sun) << "cell " << cell << ": direction " << n << " reads the one swept";
+    }
+    EXPECT_GT(shadowed, 0u) << "the swept direction sees the slab somewhere";
+    EXPECT_EQ(updater.FilledDirections(), 15u);
+  }
+  updater.Update(*s.Volume, *s.TF, *s.Majorants, r); // and direction 2
+  {
+    const auto g = updater.Grid()->Download();
+    const auto pairs = VisibilityGridUpdater::NearestSwept(4, { 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0 }, {});
+    ASSERT_EQ(pairs.size(), 14u);
+    for (size_t cell = 0; cell < g.size() / 16; ++cell)
+      for (const auto& [to, from] : pairs)
+        ASSERT_EQ(g[cell * 16 + to], g[cell * 16 + from]);
+  }
+  // Completed, the grid is the one swept at once: every filled value was overwritten.
+  r.BudgetSeconds = 1e6;
+  updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
+  ASSERT_TRUE(updater.IsComplete());
+  vs::VisibilityGrid full(s.Context);
+  EXPECT_EQ(updater.Grid()->Download(), s.Grid(full, r.Parameters));
 }
 
 TEST(VisibilityGridUpdater, NonProgressiveSweepsEverythingAndChangesInvalidate)
@@ -206,6 +273,22 @@ TEST(StrategySelector, PrefersTheMoreEfficientEstimatorAndKeepsExploring)
     GridFramesOfLast64(s, 1.0, 1.5, 1.0, 1.1);
     EXPECT_EQ(s.Preferred(), StrategySelector::EnvironmentEstimator);
     EXPECT_FALSE(s.GridWorthSweeping()) << "no gain per sample: stop sweeping";
+  }
+  {
+    // A partial grid nearly as good as Environment sampling (ratio 0.95) is worth completing; the
+    // same measured on the complete grid is not; a partial grid clearly worse (0.85) is not either.
+    StrategySelector partial;
+    partial.SetGridComplete(false);
+    GridFramesOfLast64(partial, 1.0, 1.0, 1.0, 1.0 / 0.95);
+    EXPECT_EQ(partial.Preferred(), StrategySelector::EnvironmentEstimator);
+    EXPECT_TRUE(partial.GridWorthSweeping());
+    StrategySelector complete;
+    GridFramesOfLast64(complete, 1.0, 1.0, 1.0, 1.0 / 0.95);
+    EXPECT_FALSE(complete.GridWorthSweeping());
+    StrategySelector worse;
+    worse.SetGridComplete(false);
+    GridFramesOfLast64(worse, 1.0, 1.0, 1.0, 1.0 / 0.85);
+    EXPECT_FALSE(worse.GridWorthSweeping());
   }
   {
     StrategySelector s;

@@ -43,7 +43,8 @@ json FullScene()
                "sampler": "independent"},
     "visibility": {"direction_resolution": 16, "voxels_per_cell": 8, "kernel_resolution": 64, "filtering": false,
                    "filter_angle_fraction": 0.25, "epsilon": 0.02, "cell_mode": "trilinear",
-                   "skip_unlit_directions": false},
+                   "skip_unlit_directions": false, "progressive": false, "sweep_frame_fraction": 0.5,
+                   "light_weighted_directions": false, "fill_unswept": false, "extinction_pooling": 2},
     "clip_planes": [{"origin": [90, 108, 90], "normal": [1, 0, 0]}, {"origin": [0, 0, 0], "normal": [0, 0, -1]}]
   })");
 }
@@ -105,6 +106,11 @@ TEST(SceneFile, ParsesEverySection)
   EXPECT_EQ(s.Visibility.DirectionResolution.value(), 16);
   EXPECT_EQ(s.Visibility.CellMode.value(), "trilinear");
   EXPECT_FALSE(s.Visibility.SkipUnlitDirections.value());
+  EXPECT_FALSE(s.Visibility.Progressive.value());
+  EXPECT_EQ(s.Visibility.SweepFrameFraction.value(), 0.5);
+  EXPECT_FALSE(s.Visibility.LightWeightedDirections.value());
+  EXPECT_FALSE(s.Visibility.FillUnswept.value());
+  EXPECT_EQ(s.Visibility.ExtinctionPooling.value(), 2);
   ASSERT_EQ(s.ClipPlanes.size(), 2u);
   EXPECT_EQ(s.ClipPlanes[1].Normal[2], -1.0);
 }
