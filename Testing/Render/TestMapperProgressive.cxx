@@ -109,6 +109,11 @@ void TestFirstFrameDoesNotWait()
   s.Frame();
   Check(s.Mapper->GetDirectionsUpdatedLastFrame() == 0, "the first frame sweeps nothing");
   Check(s.Mapper->GetDirectionsUpdatedTotal() == 0, "no sweep before the first image");
+  // TwoStep over a grid of one value per cell is Environment sampling: rendered as such, no table.
+  Check(s.Mapper->GetEffectiveStrategy() == vtkVisibilitySweepVolumeMapper::Environment,
+    std::string("TwoStep's first frame (grid at visibility 1) samples the environment, got ") +
+      s.Mapper->GetEffectiveStrategyAsString());
+  Check(s.Mapper->GetDirectionTableBuildCount() == 0, "no direction table for a grid at visibility 1");
   const int pending = s.Mapper->GetPendingDirections();
   Check(pending > 0 && pending <= 64, "the grid's directions are pending after the first frame: " + std::to_string(pending));
   const int resets = s.Mapper->GetAccumulationResetCount();
@@ -120,7 +125,14 @@ void TestFirstFrameDoesNotWait()
     ++frames;
     Check(s.Mapper->GetDirectionsUpdatedLastFrame() == 1, "one direction per frame at budget 0, frame " + std::to_string(frames));
     Check(s.Mapper->GetPendingDirections() == before - 1, "the pending count falls by the directions swept");
+    // One swept direction, copied into the others (FillUnsweptDirections): still one value per cell.
+    const bool flat = s.Mapper->GetDirectionsUpdatedTotal() <= 1;
+    Check(s.Mapper->GetEffectiveStrategy() ==
+        (flat ? vtkVisibilitySweepVolumeMapper::Environment : vtkVisibilitySweepVolumeMapper::TwoStep),
+      "frame " + std::to_string(frames) + " with " + std::to_string(s.Mapper->GetDirectionsUpdatedTotal()) +
+        " directions swept renders as " + s.Mapper->GetEffectiveStrategyAsString());
   }
+  Check(s.Mapper->GetDirectionTableBuildCount() > 0, "TwoStep builds its table once the grid is not flat");
   Check(frames == pending + 1, "the grid is complete after one frame per pending direction");
   Check(s.Mapper->GetAccumulationResetCount() == resets, "filling in never restarts accumulation");
   Check(s.Mapper->GetAccumulatedSamples() == frames, "every frame's sample was kept");
