@@ -1530,6 +1530,8 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EnvironmentUploadCount: " << this->EnvironmentUploadCount << "\n";
   os << indent << "MajorantUpdateCount: " << this->GetMajorantUpdateCount() << "\n";
   os << indent << "LastSweepSeconds: " << this->LastSweepSeconds << "\n";
+  os << indent << "DirectionTableBuildCount: " << this->DirectionTableBuildCount << "\n";
+  os << indent << "LastDirectionTableSeconds: " << this->LastDirectionTableSeconds << "\n";
   os << indent << "LastUpdateSeconds: " << this->LastUpdateSeconds << "\n";
   os << indent << "LastFrameSweepSeconds: " << this->LastFrameSweepSeconds << "\n";
   os << indent << "LastError: " << (this->Impl->LastError.empty() ? "(none)" : this->Impl->LastError) << "\n";
