@@ -229,6 +229,19 @@ int TestMapperVtkSettings(int, char*[])
     Check(print.str().find(line) != std::string::npos, std::string("PrintSelf prints '") + line + "'");
   }
 
+  // Label gradient opacities (a label-map mask VisSweep has no input for) warn once per change too.
+  {
+    vtkNew<vtkVolumeProperty> labelled;
+    labelled->SetScalarOpacity(opacity);
+    labelled->SetColor(color);
+    labelled->SetLabelGradientOpacity(1, gradient);
+    volume->SetProperty(labelled);
+    RenderTimes(win, 3);
+    Check(CountContaining(recorder->Warnings, "label gradient opacities") == 1,
+      "label gradient opacities warn once over 3 renders");
+    volume->SetProperty(property);
+  }
+
   // ReleaseGraphicsResources frees the device resources; the mapper renders again afterwards.
   RenderTimes(win, 4);
   Check(m->IsConverged(), "converged before the release");
