@@ -1460,7 +1460,7 @@ void vtkOpenVDBVolumeReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
-  os << indent << "FileNames: " << this->Internal->FileNames.size() << "\n";
+  os << indent << "NumberOfFileNames: " << this->Internal->FileNames.size() << "\n";
   for (const std::string& f : this->Internal->FileNames)
   {
     os << indent.GetNextIndent() << f << "\n";
@@ -1474,7 +1474,7 @@ void vtkOpenVDBVolumeReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UnionBounds: " << (this->UnionBounds ? "On" : "Off") << "\n";
   os << indent << "MaximumNumberOfPoints: " << this->MaximumNumberOfPoints << "\n";
   os << indent << "NumberOfTimeSteps: " << this->Internal->Frames.size() << "\n";
-  os << indent << "Grids: " << this->Internal->Grids.size() << "\n";
+  os << indent << "NumberOfGrids: " << this->Internal->Grids.size() << "\n";
   for (const GridSummary& s : this->Internal->Grids)
   {
     os << indent.GetNextIndent() << s.Name << " (" << s.Type << ", " << s.Count

@@ -62,6 +62,9 @@ void vtkVisSweepDevice::PrintSelf(ostream& os, vtkIndent indent)
   if (this->IsAvailable())
   {
     os << indent << "Device: " << this->Name << "\n";
+    os << indent << "MaxImageDimension3D: " << this->GetMaxImageDimension3D() << "\n";
+    os << indent << "MemoryHeapBytes: " << this->GetMemoryHeapBytes() << "\n";
+    os << indent << "ValidationMessageCount: " << this->GetValidationMessageCount() << "\n";
   }
   else
   {

@@ -205,10 +205,12 @@ void vtkVisibilityGridFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StepSize: " << this->StepSize << "\n";
   os << indent << "Filtering: " << this->Filtering << "\n";
   os << indent << "FilterAngleFraction: " << this->FilterAngleFraction << "\n";
-  os << indent << "Method: " << (this->Method == Sweep ? "Sweep" : "BruteForce") << "\n";
+  os << indent << "Method: " << this->GetMethodAsString() << "\n";
   os << indent << "BruteForceSamples: " << this->BruteForceSamples << "\n";
-  os << indent << "StorageFormat: " << this->StorageFormat << "\n";
+  os << indent << "StorageFormat: " << this->GetStorageFormatAsString() << "\n";
   os << indent << "DensityScale: " << this->DensityScale << "\n";
   os << indent << "VolumeProperty: " << this->VolumeProperty << "\n";
   os << indent << "ClippingPlanes: " << this->ClippingPlanes << "\n";
+  os << indent << "NumberOfComputedDirections: " << this->GetNumberOfComputedDirections() << "\n";
+  os << indent << "LastDeviceSeconds: " << this->LastDeviceSeconds << "\n";
 }

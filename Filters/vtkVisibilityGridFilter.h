@@ -100,6 +100,7 @@ public:
   vtkGetMacro(Method, int);
   void SetMethodToSweep() { this->SetMethod(Sweep); }
   void SetMethodToBruteForce() { this->SetMethod(BruteForce); }
+  const char* GetMethodAsString() { return this->Method == BruteForce ? "BruteForce" : "Sweep"; }
   ///@}
   ///@{
   /** BruteForce: rays per cell and direction (random points of the cell and directions of the texel). */
@@ -110,6 +111,13 @@ public:
   /** Device storage of the grid before it is read back (the output is float). Default Unorm8. */
   vtkSetClampMacro(StorageFormat, int, Unorm8, Float32);
   vtkGetMacro(StorageFormat, int);
+  void SetStorageFormatToUnorm8() { this->SetStorageFormat(Unorm8); }
+  void SetStorageFormatToUnorm16() { this->SetStorageFormat(Unorm16); }
+  void SetStorageFormatToFloat32() { this->SetStorageFormat(Float32); }
+  const char* GetStorageFormatAsString()
+  {
+    return this->StorageFormat == Float32 ? "Float32" : this->StorageFormat == Unorm16 ? "Unorm16" : "Unorm8";
+  }
   ///@}
   ///@{
   /** Multiplies the extinction. Default 1. */

@@ -36,7 +36,7 @@ const char* BlendModeName(int mode)
 }
 
 std::vector<std::string> PropertyChecks::Ignored(
-  vtkVolumeMapper* mapper, vtkVolumeProperty* property, vtkRenderer* renderer, bool monteCarlo)
+  vtkVolumeMapper* mapper, vtkVolumeProperty* property, vtkRenderer* renderer, bool monteCarlo, bool projection)
 {
   std::vector<std::string> ignored;
   if (property)
@@ -48,13 +48,18 @@ std::vector<std::string> PropertyChecks::Ignored(
       ignored.push_back("the vtkVolumeProperty's label gradient opacities (SetLabelGradientOpacity) are ignored: "
                         "VisSweep has no label-map mask input; the gradient opacity of the scalars is honoured");
     }
-    if (property->GetShade(0))
+    // Shading is honoured by the emission-absorption composite (Phong, ea_render.comp).
+    if (property->GetShade(0) && projection)
     {
-      ignored.push_back(monteCarlo
-          ? "vtkVolumeProperty Shade is on, but the Monte Carlo mode lights the volume by single scattering of the "
-            "environment, which replaces Phong shading: Ambient, Diffuse, Specular and SpecularPower are ignored"
-          : "vtkVolumeProperty Shade is on, but the emission-absorption mode does not shade: Ambient, Diffuse, "
-            "Specular and SpecularPower are ignored");
+      ignored.push_back("vtkVolumeProperty Shade is on, but a projection blend mode (MIP, MinIP, average, additive) "
+                        "is not shaded, as in vtkGPUVolumeRayCastMapper: Ambient, Diffuse, Specular and "
+                        "SpecularPower are ignored");
+    }
+    else if (property->GetShade(0) && monteCarlo)
+    {
+      ignored.push_back("vtkVolumeProperty Shade is on, but the Monte Carlo mode lights the volume by single "
+                        "scattering of the environment, which replaces Phong shading: Ambient, Diffuse, Specular and "
+                        "SpecularPower are ignored (the emission-absorption mode shades)");
     }
   }
   // Composite is light transport (or emission-absorption); MIP, MinIP, average and additive are

@@ -19,9 +19,10 @@ class PropertyChecks
 {
 public:
   /** The settings the next render ignores, one sentence each (empty: all honoured).
-   *  monteCarlo: the render mode (some settings differ between the modes). */
-  static std::vector<std::string> Ignored(
-    vtkVolumeMapper* mapper, vtkVolumeProperty* property, vtkRenderer* renderer, bool monteCarlo);
+   *  monteCarlo: the Monte Carlo light transport renders (composite blend in Monte Carlo mode);
+   *  projection: a projection blend mode (MIP, MinIP, average, additive) renders. */
+  static std::vector<std::string> Ignored(vtkVolumeMapper* mapper, vtkVolumeProperty* property,
+    vtkRenderer* renderer, bool monteCarlo, bool projection);
 
   /** VTK's cropping region flags in words ("VTK_CROP_FENCE", ...; other values in hex). */
   static std::string CroppingFlagsName(int flags);

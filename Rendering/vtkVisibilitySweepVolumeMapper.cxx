@@ -404,7 +404,7 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
   // path renders them whatever the RenderMode.
   const bool projection = IsProjection(this->BlendMode);
   for (const auto& w : I.Checks.NewWarnings(vs::PropertyChecks::Ignored(
-         this, vol ? vol->GetProperty() : nullptr, ren, this->RenderMode == MonteCarlo && !projection)))
+         this, vol ? vol->GetProperty() : nullptr, ren, this->RenderMode == MonteCarlo && !projection, projection)))
   {
     vtkWarningMacro(<< w);
   }
@@ -679,11 +679,23 @@ std::vector<float> vtkVisibilitySweepVolumeMapper::EmissionAbsorptionImage(vtkRe
     const double unit = vol && vol->GetProperty() ? vol->GetProperty()->GetScalarOpacityUnitDistance(0) : 1.0;
     p.projection = glm::vec4(float(lo), float(hi), float(std::max(unit, 1e-30)), 0.0f);
   }
+  // The property's shading (Phong with VTK's headlight, two-sided) in the composite; the
+  // projections are not shaded, as in vtkGPUVolumeRayCastMapper.
+  vtkVolumeProperty* property = vol ? vol->GetProperty() : nullptr;
+  const bool shade = property && property->GetShade(0) && !IsProjection(this->BlendMode);
+  if (shade)
+  {
+    p.shading = glm::vec4(float(property->GetAmbient(0)), float(property->GetDiffuse(0)),
+      float(property->GetSpecular(0)), float(property->GetSpecularPower(0)));
+    double dop[3];
+    ren->GetActiveCamera()->GetDirectionOfProjection(dop);
+    p.light = glm::vec4(float(-dop[0]), float(-dop[1]), float(-dop[2]), 1.0f);
+  }
   if (!I.EA)
   {
     I.EA = std::make_unique<vs::EmissionAbsorptionPass>(I.Context);
   }
-  std::vector<float> rgba = I.EA->Render(I.Scene->Volume(), I.Scene->TF(), p, depth);
+  std::vector<float> rgba = I.EA->Render(I.Scene->Volume(), I.Scene->TF(), p, depth, shade);
   this->LastDeviceSeconds = I.EA->LastSeconds();
   return rgba;
 }
@@ -1546,6 +1558,8 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EnvironmentUploadCount: " << this->EnvironmentUploadCount << "\n";
   os << indent << "MajorantUpdateCount: " << this->GetMajorantUpdateCount() << "\n";
   os << indent << "LastSweepSeconds: " << this->LastSweepSeconds << "\n";
+  os << indent << "DirectionTableBuildCount: " << this->DirectionTableBuildCount << "\n";
+  os << indent << "LastDirectionTableSeconds: " << this->LastDirectionTableSeconds << "\n";
   os << indent << "LastUpdateSeconds: " << this->LastUpdateSeconds << "\n";
   os << indent << "LastFrameSweepSeconds: " << this->LastFrameSweepSeconds << "\n";
   os << indent << "LastError: " << (this->Impl->LastError.empty() ? "(none)" : this->Impl->LastError) << "\n";

@@ -31,15 +31,17 @@ EmissionAbsorptionPass::EmissionAbsorptionPass(std::shared_ptr<Context> context)
 {
 }
 
-const ComputePipeline& EmissionAbsorptionPass::PipelineFor(bool factor)
+const ComputePipeline& EmissionAbsorptionPass::PipelineFor(bool factor, bool shade)
 {
-  auto& pipeline = factor ? this->FactorPipeline_ : this->Pipeline_;
+  auto& pipeline = this->Pipelines_[factor ? 1 : 0][shade ? 1 : 0];
   if (!pipeline)
   {
+    std::string name = "emission-absorption";
+    name += factor ? (shade ? " (gradient opacity, shaded)" : " (gradient opacity)") : (shade ? " (shaded)" : "");
     pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_ea_render),
       std::vector<BindingType>{ BindingType::StorageImage, BindingType::StorageBuffer, BindingType::StorageBuffer,
         BindingType::StorageBuffer, BindingType::StorageBuffer, BindingType::StorageImage },
-      0, factor ? "emission-absorption (gradient opacity)" : "emission-absorption", { factor ? 1u : 0u });
+      0, name, { factor ? 1u : 0u, shade ? 1u : 0u });
   }
   return *pipeline;
 }
@@ -47,7 +49,8 @@ const ComputePipeline& EmissionAbsorptionPass::PipelineFor(bool factor)
 EmissionAbsorptionPass::~EmissionAbsorptionPass() = default;
 
 std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
-  const TransferFunctionTable& tf, const shared::VsFrameParams& params, const std::vector<float>& depth)
+  const TransferFunctionTable& tf, const shared::VsFrameParams& params, const std::vector<float>& depth,
+  bool shade)
 {
   const uint32_t w = params.viewport.x, h = params.viewport.y;
   if (w == 0 || h == 0)
@@ -74,7 +77,7 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
   {
     this->Depth_->Upload(depth.data(), pixels * sizeof(float));
   }
-  const ComputePipeline& pipeline = this->PipelineFor(volume.Factor() != nullptr);
+  const ComputePipeline& pipeline = this->PipelineFor(volume.Factor() != nullptr, shade);
   DescriptorSet set(pipeline);
   set.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, *this->Params_).Bind(3, *this->Depth_).Bind(4, *this->Out_);
   set.Bind(5, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor

@@ -25,19 +25,20 @@ public:
   ~EmissionAbsorptionPass();
 
   /** Renders params.viewport.x by .y pixels. `depth` has one window depth in [0,1] per pixel
-   *  (1 = nothing opaque); empty means no opaque geometry. Returns RGBA, rows bottom-up. */
+   *  (1 = nothing opaque); empty means no opaque geometry. `shade`: Phong-shade the composite with
+   *  params.shading and params.light. Returns RGBA, rows bottom-up. */
   std::vector<float> Render(const DeviceVolume& volume, const TransferFunctionTable& tf,
-    const shared::VsFrameParams& params, const std::vector<float>& depth);
+    const shared::VsFrameParams& params, const std::vector<float>& depth, bool shade = false);
 
   /** Device seconds of the last Render (0 without timestamp support). */
   double LastSeconds() const { return this->LastSeconds_; }
 
 private:
-  /** The pipeline with or without the extinction factor (made on first use). */
-  const ComputePipeline& PipelineFor(bool factor);
+  /** The pipeline with or without the extinction factor and shading (made on first use). */
+  const ComputePipeline& PipelineFor(bool factor, bool shade);
 
   std::shared_ptr<Context> Context_;
-  std::shared_ptr<ComputePipeline> Pipeline_, FactorPipeline_;
+  std::shared_ptr<ComputePipeline> Pipelines_[2][2]; // [factor][shade]
   std::unique_ptr<Buffer> Params_, Depth_, Out_;
   double LastSeconds_ = 0.0;
 };

@@ -10,6 +10,10 @@
  * With VS_EA_FACTOR, the composite's extinction is scaled by the volume's factor (the gradient
  * opacity, uFactor, interpolated as the scalar), as vtkGPUVolumeRayCastMapper applies gradient
  * opacity in composite blending only (not in the projections).
+ * With VS_EA_SHADE, the composite's colour is Phong-shaded as vtkGPUVolumeRayCastMapper shades it
+ * (the vtkVolumeProperty's ShadeOn): ambient x albedo + intensity x (diffuse |n.l| albedo +
+ * specular |n.h|^power), n the normalised gradient of the scalar (central differences, in world
+ * units), l the headlight, two-sided; where the gradient vanishes, ambient only.
  * Output: premultiplied RGBA per pixel, rows bottom-up (OpenGL order).
  */
 #include "rng.h"
@@ -23,6 +27,7 @@ layout(std430, binding = 3) readonly buffer Depth { float uDepth[]; };
 layout(std430, binding = 4) writeonly buffer Result { vec4 uOut[]; };
 layout(binding = 5, r32f) uniform readonly image3D uFactor; /* read only with VS_EA_FACTOR */
 layout(constant_id = 0) const uint VS_EA_FACTOR = 0u;
+layout(constant_id = 1) const uint VS_EA_SHADE = 0u;
 #define VS_FACTOR_IMAGE
 
 #include "volume_access.glsl"
@@ -77,6 +82,31 @@ vec4 project(vec3 oi, vec3 di, vec2 t, float stepSize, uint blend, float jitter)
   return vec4(vec3(clamp(sum, 0.0, 1.0)), 1.0);
 }
 
+/* Phong shading at index-space point x of a sample of colour albedo (VS_EA_SHADE). */
+vec3 shade(vec3 x, vec3 albedo, ivec3 dims, vec3 toEye)
+{
+  uint interpolation = P.counts.y;
+  vec3 g = 0.5 * vec3(vs_sample(x + vec3(1.0, 0.0, 0.0), dims, interpolation) -
+                        vs_sample(x - vec3(1.0, 0.0, 0.0), dims, interpolation),
+                      vs_sample(x + vec3(0.0, 1.0, 0.0), dims, interpolation) -
+                        vs_sample(x - vec3(0.0, 1.0, 0.0), dims, interpolation),
+                      vs_sample(x + vec3(0.0, 0.0, 1.0), dims, interpolation) -
+                        vs_sample(x - vec3(0.0, 0.0, 1.0), dims, interpolation));
+  /* d s / d world = transpose(d index / d world) x d s / d index */
+  vec3 gw = transpose(mat3(P.worldToIndex)) * g;
+  float len = length(gw);
+  vec3 color = P.shading.x * albedo;
+  if (len > 0.0 && !isnan(len) && !isinf(len))
+  {
+    vec3 n = -gw / len;
+    vec3 l = P.light.xyz;
+    vec3 h = normalize(l + toEye);
+    float nl = abs(dot(n, l)), nh = abs(dot(n, h));
+    color += P.light.w * (P.shading.y * nl * albedo + P.shading.z * pow(nh, P.shading.w) * vec3(1.0));
+  }
+  return color;
+}
+
 void main()
 {
   uvec2 pix = gl_GlobalInvocationID.xy;
@@ -128,6 +158,8 @@ void main()
       vec4 c = vs_classify(vs_sample(x, dims, P.counts.y), P.tf);
       if (VS_EA_FACTOR == 1u)
         c.w *= vs_sample_factor(x, dims, P.counts.y);
+      if (VS_EA_SHADE == 1u)
+        c.rgb = shade(x, c.rgb, dims, -d);
       float A = 1.0 - exp(-c.w * (b - a));
       color += (1.0 - alpha) * A * c.rgb;
       alpha += (1.0 - alpha) * A;

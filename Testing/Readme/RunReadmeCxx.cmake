@@ -2,7 +2,9 @@
 # CMakeLists.txt and app.cxx of "### C++", configures them against the build tree
 # (VisSweep_DIR=<build>/, MODE=build) or an install prefix (CMAKE_PREFIX_PATH, MODE=install),
 # builds the app and runs it in a fresh folder holding only a link to Data/.
-# Arguments: README, MODE, PACKAGE (the build dir or the prefix), WORK, DATA, CH2, GENERATOR.
+# Arguments: README, MODE, PACKAGE (the build dir or the prefix), WORK, DATA, CH2, GENERATOR, and
+# optionally EXTRA_CONFIGURE (one more -D for the app's configure: scripts/paraview-check.sh gives
+# the VTK_DIR of ParaView's VTK).
 include("${CMAKE_CURRENT_LIST_DIR}/ReadmeSnippet.cmake")
 readme_snippet("${README}" "C++" "cmake" cmakelists)
 readme_snippet("${README}" "C++" "cpp" app)
@@ -15,7 +17,7 @@ else ()
   set(where "-DCMAKE_PREFIX_PATH=${PACKAGE}")
 endif ()
 execute_process(COMMAND "${CMAKE_COMMAND}" -S "${WORK}/src" -B "${WORK}/build" -G "${GENERATOR}"
-    -DCMAKE_BUILD_TYPE=Release ${where}
+    -DCMAKE_BUILD_TYPE=Release ${where} ${EXTRA_CONFIGURE}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if (NOT rc EQUAL 0)
   message(FATAL_ERROR "configuring the README's C++ app (${where}) failed: ${out}\n${err}")

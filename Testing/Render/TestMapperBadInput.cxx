@@ -91,7 +91,20 @@ int TestMapperBadInput(int, char*[])
   noScalars->SetDimensions(8, 8, 8);
   ok &= Case("no scalars", noScalars, good, "no point scalars");
 
-  ok &= Case("three components", Image(8, 8, 8, 3), good, "3 components");
+  // 2-4 components (issue 14 allows "a precise error for what is left"): the error names the
+  // count, what is not rendered (independent components with their own transfer functions,
+  // dependent RGBA / luminance-alpha) and the way around it. Each part is asserted.
+  for (int components : { 2, 3, 4 })
+  {
+    const std::string name = std::to_string(components) + " components";
+    for (const std::string& part : { name + "; only single-component scalars are supported",
+           std::string("independent components with their own transfer functions"),
+           std::string("dependent RGBA / luminance-alpha data are rendered yet"),
+           std::string("extract one component, e.g. with vtkImageExtractComponents") })
+    {
+      ok &= Case(name.c_str(), Image(8, 8, 8, components), good, part);
+    }
+  }
 
   auto empty = vtkSmartPointer<vtkImageData>::New();
   empty->SetExtent(0, -1, 0, -1, 0, -1);

@@ -101,14 +101,14 @@ int TestMapperVtkSettings(int, char*[])
   Check(recorder->Warnings.empty(), "nearest and linear interpolation warn nothing");
   property->SetInterpolationTypeToLinear();
 
-  // Shading, blend modes and depth peeling for volumes: once per change each.
+  // Shading (in Monte Carlo mode), blend modes and depth peeling for volumes: once per change each.
   property->ShadeOn();
   RenderTimes(win, 3);
   Check(CountContaining(recorder->Warnings, "Shade is on") == 1, "ShadeOn warns once");
   m->SetRenderModeToEmissionAbsorption();
   RenderTimes(win, 2);
-  Check(CountContaining(recorder->Warnings, "emission-absorption mode does not shade") == 1,
-    "ShadeOn in emission-absorption mode warns once, in its own words");
+  Check(CountContaining(recorder->Warnings, "Shade is on") == 1,
+    "ShadeOn in emission-absorption mode is honoured (TestMapperShading): no new warning");
   m->SetRenderModeToMonteCarlo();
   property->ShadeOff();
 
@@ -227,6 +227,19 @@ int TestMapperVtkSettings(int, char*[])
          "Environment: none connected: a constant white sky of radiance 1 (the default)" })
   {
     Check(print.str().find(line) != std::string::npos, std::string("PrintSelf prints '") + line + "'");
+  }
+
+  // Label gradient opacities (a label-map mask VisSweep has no input for) warn once per change too.
+  {
+    vtkNew<vtkVolumeProperty> labelled;
+    labelled->SetScalarOpacity(opacity);
+    labelled->SetColor(color);
+    labelled->SetLabelGradientOpacity(1, gradient);
+    volume->SetProperty(labelled);
+    RenderTimes(win, 3);
+    Check(CountContaining(recorder->Warnings, "label gradient opacities") == 1,
+      "label gradient opacities warn once over 3 renders");
+    volume->SetProperty(property);
   }
 
   // ReleaseGraphicsResources frees the device resources; the mapper renders again afterwards.

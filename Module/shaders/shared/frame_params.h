@@ -30,6 +30,10 @@ struct VsFrameParams
   vec4 cropLo;       /* the cropping regions (vsVolumeGeometry.h): index-space planes, xyz */
   vec4 cropHi;
   uvec4 crop;        /* x: the regions' flags (0 = none: the box is all), y, z, w: unused */
+  vec4 shading;      /* Phong shading of the emission-absorption composite (ea_render.comp with
+                        VS_EA_SHADE): x ambient, y diffuse, z specular, w specular power */
+  vec4 light;        /* xyz: world direction towards the light (VTK's headlight: against the view
+                        direction), w: its intensity */
 };
 
 /* Blend modes, VTK's vtkVolumeMapper::BlendModes values. Composite is emission-absorption; the
