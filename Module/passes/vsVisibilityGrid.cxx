@@ -43,6 +43,32 @@ struct FillPush
   uint32_t copies;
 };
 
+/** One shader's SPIR-V, compiled once per storage format of the grid (VS_VIS_FORMAT). */
+struct PerFormatSpirv
+{
+  const uint32_t* Code[3]; // r8, r16, r32f
+  size_t Bytes[3];
+};
+#define VS_SPIRV_PER_FORMAT(name)                                                                          \
+  PerFormatSpirv                                                                                         \
+  {                                                                                                      \
+    { name##_r8, name##_r16, name##_r32f }, { sizeof(name##_r8), sizeof(name##_r16), sizeof(name##_r32f) } \
+  }
+
+/** The pipeline of `spirv` for the grid's storage format, named "<name> (<format><detail>)". */
+std::shared_ptr<ComputePipeline> FormatPipeline(const std::shared_ptr<Context>& context,
+  VisibilityGridParameters::Format format, const PerFormatSpirv& spirv, const std::vector<BindingType>& bindings,
+  uint32_t pushBytes, const std::string& name, const std::string& detail,
+  const std::vector<uint32_t>& specialization = {})
+{
+  const int i = format == VisibilityGridParameters::Format::Unorm8 ? 0
+    : format == VisibilityGridParameters::Format::Unorm16          ? 1
+                                                                    : 2;
+  static const char* const formats[3] = { "r8", "r16", "r32f" };
+  return SharedPipeline(context, spirv.Code[i], spirv.Bytes[i], bindings, pushBytes,
+    name + " (" + formats[i] + detail + ")", specialization);
+}
+
 vk::Format ToVk(VisibilityGridParameters::Format f)
 {
   switch (f)
@@ -216,26 +242,9 @@ double VisibilityGrid::CopyDirections(const std::vector<std::pair<uint32_t, uint
     }
     pairs.insert(pairs.end(), { to, from });
   }
-  std::shared_ptr<ComputePipeline> fill; // of the grid's format (shared: compiled once per process)
-  {
-    using B = BindingType;
-    const std::vector<B> bindings{ B::StorageImage, B::StorageBuffer };
-    switch (this->Parameters_.StorageFormat)
-    {
-      case VisibilityGridParameters::Format::Unorm8:
-        fill = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_grid_fill_r8), bindings, sizeof(FillPush),
-          "grid fill (r8)");
-        break;
-      case VisibilityGridParameters::Format::Unorm16:
-        fill = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_grid_fill_r16), bindings, sizeof(FillPush),
-          "grid fill (r16)");
-        break;
-      default:
-        fill = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_grid_fill_r32f), bindings, sizeof(FillPush),
-          "grid fill (r32f)");
-        break;
-    }
-  }
+  const std::shared_ptr<ComputePipeline> fill = FormatPipeline(this->Context_, this->Parameters_.StorageFormat,
+    VS_SPIRV_PER_FORMAT(vs_spirv_grid_fill), { BindingType::StorageImage, BindingType::StorageBuffer },
+    sizeof(FillPush), "grid fill", "");
   Buffer list(this->Context_, pairs.size() * sizeof(uint32_t), "grid fill copies");
   list.Upload(pairs.data(), pairs.size() * sizeof(uint32_t));
   DescriptorSet set(*fill);
@@ -424,22 +433,9 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
       "sweep filter (" + std::to_string(tapsA) + " taps)", { tapsA });
     // The projection stores into an image of known format (faster on lavapipe than format-less stores).
     const std::vector<B> bindings{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageImage };
-    const std::string taps = std::to_string(tapsB) + " taps)";
-    switch (this->Parameters_.StorageFormat)
-    {
-      case VisibilityGridParameters::Format::Unorm8:
-        this->Project_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_project_r8), bindings,
-          sizeof(ChunkPush), "sweep project (r8, " + taps, { tapsB });
-        break;
-      case VisibilityGridParameters::Format::Unorm16:
-        this->Project_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_project_r16), bindings,
-          sizeof(ChunkPush), "sweep project (r16, " + taps, { tapsB });
-        break;
-      default:
-        this->Project_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_project_r32f), bindings,
-          sizeof(ChunkPush), "sweep project (r32f, " + taps, { tapsB });
-        break;
-    }
+    this->Project_ = FormatPipeline(this->Context_, this->Parameters_.StorageFormat,
+      VS_SPIRV_PER_FORMAT(vs_spirv_sweep_project), bindings, sizeof(ChunkPush), "sweep project",
+      ", " + std::to_string(tapsB) + " taps", { tapsB });
   }
   const uint32_t nearest = this->Parameters_.NearestInterpolation ? 1u : 0u;
   if (!this->MarchPooled_ || this->MarchPooledNearest_ != nearest)
