@@ -870,7 +870,11 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   vs::StrategySelector::Estimator estimator = vs::StrategySelector::EnvironmentEstimator;
   if (autoStrategy && !emptyVolume)
   {
-    const bool ready = grid && !flatGrid && I.Grid->SweptImportance() >= 0.5;
+    // TwoStep is measured as soon as the grid is not flat: its probes are bounded in samples
+    // (StrategySelector::SamplesFor), and its verdict on the partial grid decides how fast the
+    // grid fills in (waiting for half of the light's importance swept at AutoProbeFraction left
+    // mri_courtyard's grid unmeasured for 13 s of a 16 s budget).
+    const bool ready = grid && !flatGrid;
     // A tile (not a frame of the view) leaves the selector alone: TwoStep once it has measured better.
     estimator = interactive ? vs::StrategySelector::EnvironmentEstimator
       : tiled ? (ready && I.Selector.GridEfficiencyRatio() > 1.0 ? vs::StrategySelector::GridEstimator
@@ -995,9 +999,13 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   // A tile: as many samples as the view holds (it is that view, magnified), at least a frame's.
   const uint32_t tileSpp = uint32_t(std::min(this->MaximumSamples,
     std::max(this->SamplesPerFrame, int(this->AccumulatedSamplesOf(autoStrategy)))));
-  const uint32_t spp = interactive ? 1u
-    : tiled                        ? tileSpp
-                                   : std::min<uint32_t>(uint32_t(this->SamplesPerFrame), remaining);
+  const uint32_t frameSpp = interactive ? 1u
+    : tiled                             ? tileSpp
+                                        : std::min<uint32_t>(uint32_t(this->SamplesPerFrame), remaining);
+  // Auto: a frame that probes the estimator not preferred adds a bounded share of the samples.
+  const uint32_t spp = autoStrategy && !interactive && !tiled && !emptyVolume
+    ? I.Selector.SamplesFor(estimator, frameSpp, double(accumulated))
+    : frameSpp;
   if (spp > 0)
   {
     p.sampling.x = uint32_t(effective);
@@ -1053,6 +1061,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     // The cost per sample without the direction table's build, which (like the sweeps) is the
     // grid's update, made once per grid state, not per sample.
     I.Selector.SetGridComplete(I.Grid && I.Grid->IsComplete());
+    I.Selector.SetGridJudgeable(I.Grid && (I.Grid->IsComplete() || I.Grid->SweptImportance() >= 0.5));
     I.Selector.Record(estimator, spp, I.LastRenderSeconds, uint64_t(w) * h, double(pass->Samples()), pass->SquareSum(),
       meanSquare);
   }

@@ -1,6 +1,7 @@
 #include "vsStrategySelector.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace vs
 {
@@ -61,6 +62,16 @@ StrategySelector::Estimator StrategySelector::Choose(bool gridReady)
   return this->Frame_ % interval == interval - 1 ? other : this->Preferred_;
 }
 
+uint32_t StrategySelector::SamplesFor(Estimator estimator, uint32_t requested, double accumulated) const
+{
+  if (estimator == this->Preferred_ || requested == 0)
+  {
+    return requested;
+  }
+  const double share = std::floor(ProbeShare * std::max(0.0, accumulated));
+  return uint32_t(std::clamp(share, 1.0, double(requested)));
+}
+
 void StrategySelector::Record(Estimator estimator, uint32_t spp, double deviceSeconds, uint64_t pixels,
   double totalSamples, double sumOfSquares, double meanSquare)
 {
@@ -111,7 +122,8 @@ void StrategySelector::EndEpoch(double meanSquare)
     // in (measured on mri_sunrise: Auto swept 21% of a 16 s budget for a grid it then did not use).
     if (measured[GridEstimator])
     {
-      this->GridWorth_ = ratio > 1.0 || (!this->GridComplete_ && ratio > PartialGridTolerance);
+      this->GridWorth_ = ratio > 1.0 || !this->GridJudgeable_ ||
+        (!this->GridComplete_ && ratio > PartialGridTolerance);
       this->GridVerdict_ = true;
     }
   }

@@ -41,21 +41,34 @@ public:
    *  TwoStep to be worth measuring. */
   Estimator Choose(bool gridReady);
 
+  /** The samples per pixel a frame of `estimator` may add when `requested` were asked for and
+   *  `accumulated` are in both accumulators: all of them for the preferred estimator; at most
+   *  ProbeShare of `accumulated` (at least one) for an estimator being probed (the grid before
+   *  the first verdict, then whichever lost). A probe's samples cost their extra variance, so
+   *  probing is bounded in samples, not frames: with 64-sample frames, probing by frames gave
+   *  TwoStep 128 of blind_sunrise's 500 samples in a 16 s budget, a grid that then lost. */
+  uint32_t SamplesFor(Estimator estimator, uint32_t requested, double accumulated) const;
+  static constexpr double ProbeShare = 1.0 / 32.0;
+
   /** After a frame of `estimator`: its samples per pixel, device seconds, and the accumulator's
    *  totals: samples so far and the sum over pixels of the sum of squares (rgb mean) so far;
    *  meanSquare: the mean over pixels of the squared mean image (rgb mean) now; pixels: count. */
   void Record(Estimator estimator, uint32_t spp, double deviceSeconds, uint64_t pixels, double totalSamples,
     double sumOfSquares, double meanSquare);
 
-  /** Whether sweeping more directions is worth it: false while TwoStep, measured with at least
-   *  half of the light's directions swept, is less efficient than Environment sampling
-   *  (re-evaluated at every epoch that measured TwoStep). While the grid is incomplete, TwoStep
-   *  within PartialGridTolerance of Environment sampling is worth completing: its unswept
-   *  directions copy swept ones (FillUnswept), so a partial grid measures at best about as good as
+  /** Whether sweeping more directions is worth it: false while TwoStep, measured on a grid that
+   *  can be judged (SetGridJudgeable), is less efficient than Environment sampling (re-evaluated
+   *  at every epoch that measured TwoStep). While the grid is incomplete, TwoStep within
+   *  PartialGridTolerance of Environment sampling is worth completing: its unswept directions
+   *  copy swept ones (FillUnswept), so a partial grid measures at best about as good as
    *  Environment sampling, and only the complete grid shows what the grid gains. */
   bool GridWorthSweeping() const { return this->GridWorth_; }
   /** Whether the grid TwoStep is measured with is complete (the default: assumed complete). */
   void SetGridComplete(bool complete) { this->GridComplete_ = complete; }
+  /** Whether the grid TwoStep is measured with holds enough of the light to judge it by (the
+   *  default): the renderer says so from half of the light's importance swept. TwoStep is
+   *  measured earlier (on any grid that is not flat), but a loss there does not stop the fill-in. */
+  void SetGridJudgeable(bool judgeable) { this->GridJudgeable_ = judgeable; }
   static constexpr double PartialGridTolerance = 0.9;
 
   /** Measured per-sample variance and device seconds per sample of an estimator (0 = unknown). */
@@ -91,6 +104,7 @@ private:
   bool GridWorth_ = true;
   bool GridVerdict_ = false;  // GridWorth_ was decided for this grid
   bool GridComplete_ = true;
+  bool GridJudgeable_ = true;
   uint32_t Frame_ = 0, EpochFrame_ = 0, Decisions_ = 0;
   uint64_t Pixels_ = 0;
   double MeanSquare_ = 0.0;

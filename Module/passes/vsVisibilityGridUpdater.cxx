@@ -203,6 +203,7 @@ GridUpdateResult VisibilityGridUpdater::Update(const DeviceVolume& volume, const
       this->Grid_->Clear(1.0f);
     }
     this->Swept_.assign(count, 0);
+    this->FillSource_.assign(count, NoFillSource);
     this->Filled_ = 0;
     this->Signature_ = signature;
     this->Scheduler_.OnFullUpdate();
@@ -257,9 +258,26 @@ GridUpdateResult VisibilityGridUpdater::Update(const DeviceVolume& volume, const
   if (request.FillUnswept && swept.DirectionsSwept > 0 && this->PendingDirections() > 0)
   {
     // The still unswept directions take their nearest swept neighbour's visibility in every cell
-    // (overwritten when they are swept). Its cost counts as the sweeps'.
-    const auto pairs = NearestSwept(side, this->Swept_, request.Required);
+    // (overwritten when they are swept). Its cost counts as the sweeps'. Only what changed is
+    // copied: a direction whose nearest swept one is new, or was swept again in this call. (Copying
+    // every unswept direction at every progressive sweep cost ch2's 116k cells 0.1 s of device time
+    // per call against the 0.01 s sweep of its direction.)
+    std::vector<uint8_t> sweptNow(count, 0);
+    for (uint32_t n : now)
+    {
+      sweptNow[n] = 1;
+    }
+    auto pairs = NearestSwept(side, this->Swept_, request.Required);
+    pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
+                  [&](const std::pair<uint32_t, uint32_t>& p) {
+                    return this->FillSource_[p.first] == p.second && !sweptNow[p.second];
+                  }),
+      pairs.end());
     swept.Seconds += this->Grid_->CopyDirections(pairs);
+    for (const auto& [to, from] : pairs)
+    {
+      this->FillSource_[to] = from;
+    }
     this->Filled_ += pairs.size();
   }
   if (request.Progressive && request.BudgetSeconds > 0.0)

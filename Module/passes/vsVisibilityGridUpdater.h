@@ -112,7 +112,9 @@ public:
    *  nothing is swept. */
   static std::vector<std::pair<uint32_t, uint32_t>> NearestSwept(
     uint32_t side, const std::vector<uint8_t>& swept, const std::vector<uint8_t>& targets);
-  /** Unswept directions filled from swept ones since the last full update (FillUnswept). */
+  /** Copies of a swept direction into an unswept one since the last full update (FillUnswept):
+   *  each fill copies only the unswept directions whose nearest swept direction changed or was
+   *  swept again. */
   uint64_t FilledDirections() const { return this->Filled_; }
 
 private:
@@ -132,6 +134,8 @@ private:
   double SecondsPerDirection_ = 0.0;
   double Allowance_ = 0.0;        // progressive: sweep seconds granted and not yet spent
   uint64_t Filled_ = 0;
+  static constexpr uint32_t NoFillSource = 0xffffffffu;
+  std::vector<uint32_t> FillSource_; // per unswept direction: the swept one it holds a copy of
 };
 }
 

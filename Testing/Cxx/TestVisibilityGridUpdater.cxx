@@ -174,6 +174,11 @@ TEST(VisibilityGridUpdater, UnsweptDirectionsReadTheNearestSweptOneUntilSwept)
     for (size_t cell = 0; cell < g.size() / 16; ++cell)
       for (const auto& [to, from] : pairs)
         ASSERT_EQ(g[cell * 16 + to], g[cell * 16 + from]);
+    // Only the directions now nearest to the new one were copied again.
+    const auto moved = std::count_if(pairs.begin(), pairs.end(), [](const auto& p) { return p.second == 2u; });
+    EXPECT_GT(moved, 0);
+    EXPECT_LT(moved, 14);
+    EXPECT_EQ(updater.FilledDirections(), 15u + uint64_t(moved));
   }
   // Completed, the grid is the one swept at once: every filled value was overwritten.
   r.BudgetSeconds = 1e6;
@@ -295,4 +300,66 @@ TEST(StrategySelector, PrefersTheMoreEfficientEstimatorAndKeepsExploring)
     EXPECT_EQ(GridFramesOfLast64(s, 1.0, 0.1, 1.0, 1.0, false), 0) << "no grid yet: Environment only";
     EXPECT_EQ(s.Decisions(), 0u);
   }
+}
+
+TEST(StrategySelector, ProbesAreBoundedInSamplesNotFrames)
+{
+  StrategySelector s;
+  // Before any verdict Environment sampling is preferred: the grid is probed with at most
+  // ProbeShare of the samples so far, at least one; the preferred estimator gets what was asked.
+  EXPECT_EQ(s.SamplesFor(StrategySelector::GridEstimator, 64, 0.0), 1u);
+  EXPECT_EQ(s.SamplesFor(StrategySelector::GridEstimator, 64, 320.0), 10u);
+  EXPECT_EQ(s.SamplesFor(StrategySelector::GridEstimator, 4, 3200.0), 4u);
+  EXPECT_EQ(s.SamplesFor(StrategySelector::EnvironmentEstimator, 64, 320.0), 64u);
+  EXPECT_EQ(s.SamplesFor(StrategySelector::EnvironmentEstimator, 0, 320.0), 0u);
+
+  // 64-sample frames of a grid estimator that loses (efficiency 1/1.17). Probing by frames gave
+  // it half of the first epoch's frames: 256 of the first 16 frames' 1024 samples (a 16 s budget
+  // of blind_sunrise in `bench convergence`), then a whole frame in every 16 or 64.
+  const double m2 = 0.25, pixels = 100;
+  double n[2] = { 0, 0 }, sq[2] = { 0, 0 };
+  for (int frame = 0; frame < 256; ++frame)
+  {
+    if (frame == 16)
+    {
+      EXPECT_GT(n[StrategySelector::GridEstimator], 0.0);
+      EXPECT_LT(n[StrategySelector::GridEstimator] / (n[0] + n[1]), StrategySelector::ProbeShare);
+    }
+    const auto e = s.Choose(true);
+    const uint32_t spp = s.SamplesFor(e, 64, n[0] + n[1]);
+    const double v = e == StrategySelector::GridEstimator ? 0.9 : 1.0;
+    const double t = e == StrategySelector::GridEstimator ? 1.3 : 1.0;
+    n[e] += spp;
+    sq[e] += pixels * spp * (v + m2);
+    s.Record(e, spp, t * pixels * spp, uint64_t(pixels), n[e], sq[e], m2);
+  }
+  EXPECT_EQ(s.Preferred(), StrategySelector::EnvironmentEstimator);
+  EXPECT_GT(n[StrategySelector::GridEstimator], 0.0);
+  // Later, a probe in every SettledExplorationInterval frames, each of at most a whole frame.
+  EXPECT_LT(n[StrategySelector::GridEstimator] / (n[0] + n[1]),
+    1.0 / StrategySelector::SettledExplorationInterval + StrategySelector::ProbeShare / 4);
+  EXPECT_NEAR(s.GridEfficiencyRatio(), 1.0 / 1.17, 1e-6) << "small probes measure the same";
+
+  // Once the grid wins, Environment sampling is the one probed.
+  StrategySelector g;
+  GridFramesOfLast64(g, 1.0, 0.3, 1.0, 1.2);
+  ASSERT_EQ(g.Preferred(), StrategySelector::GridEstimator);
+  EXPECT_EQ(g.SamplesFor(StrategySelector::GridEstimator, 64, 640.0), 64u);
+  EXPECT_EQ(g.SamplesFor(StrategySelector::EnvironmentEstimator, 64, 640.0), 20u);
+}
+
+TEST(StrategySelector, AGridTooEarlyToJudgeKeepsFillingIn)
+{
+  // TwoStep is probed on a partial grid before half of the light is swept: even clearly worse
+  // there (efficiency 0.5), the fill-in goes on; judged on a grid that can be, the loss stops it.
+  StrategySelector early;
+  early.SetGridComplete(false);
+  early.SetGridJudgeable(false);
+  GridFramesOfLast64(early, 1.0, 1.0, 1.0, 2.0);
+  EXPECT_EQ(early.Preferred(), StrategySelector::EnvironmentEstimator);
+  EXPECT_TRUE(early.GridWorthSweeping());
+  StrategySelector judged;
+  judged.SetGridComplete(false);
+  GridFramesOfLast64(judged, 1.0, 1.0, 1.0, 2.0);
+  EXPECT_FALSE(judged.GridWorthSweeping());
 }
