@@ -86,7 +86,29 @@ struct vtkVisibilitySweepVolumeMapper::Internals
       }
     }
   }
-  ~Internals() { this->JoinPrewarm(); }
+  /** Auto: TwoStep's pipeline, made on another thread once the grid has swept a direction, so the
+   *  first TwoStep frame does not wait for its creation (a TwoStep frame that comes first waits in
+   *  the context's pipeline cache). */
+  std::future<void> GridPrewarm;
+  bool GridPrewarmStarted = false;
+  void JoinGridPrewarm()
+  {
+    if (this->GridPrewarm.valid())
+    {
+      try
+      {
+        this->GridPrewarm.get();
+      }
+      catch (...)
+      {
+      }
+    }
+  }
+  ~Internals()
+  {
+    this->JoinPrewarm();
+    this->JoinGridPrewarm();
+  }
   std::unique_ptr<vs::MonteCarloPass> Tile;   // the tiles of a tiled render (the views' accumulators stay)
   vs::PeelingDeferral Peeling; // inside VTK's depth peeling of volumes: draw at the frame's end instead
   std::unique_ptr<vs::VisibilityGridUpdater> Grid;
@@ -338,6 +360,7 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
     this->GetVisibilityGrid(); // completes a grid still filling in, then downloads it
   }
   I.JoinPrewarm();
+  I.JoinGridPrewarm();
   I.Environment.reset();
   I.EnvironmentSource.reset();
   I.Grid.reset();
@@ -930,6 +953,19 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   }
 
   I.JoinPrewarm();
+  if (autoStrategy && grid && !I.GridPrewarmStarted && I.Grid->SweptDirections() > 0)
+  {
+    I.GridPrewarmStarted = true;
+    vs::shared::VsRenderParams q = p;
+    q.sampling.x = uint32_t(TwoStep);
+    const bool cellWalk = vs::MonteCarloPass::NeedsCellWalk(I.Scene->Majorants(), q);
+    const bool quads = I.MC && I.MC->LastUsedVolumeQuads();
+    const bool table = this->DirectionTable;
+    I.GridPrewarm = std::async(std::launch::async, [context = I.Context, q, table, quads, cellWalk]() {
+      vs::MonteCarloPass pass(context);
+      pass.Prewarm(q, table, quads, cellWalk);
+    });
+  }
   vs::MonteCarloPass* pass = nullptr;
   if (interactive)
   {

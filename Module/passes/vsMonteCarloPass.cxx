@@ -109,9 +109,9 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   return *pipeline;
 }
 
-void MonteCarloPass::Prewarm(const shared::VsRenderParams& params, bool table, bool quads)
+void MonteCarloPass::Prewarm(const shared::VsRenderParams& params, bool table, bool quads, bool cellWalk)
 {
-  this->PipelineFor(nullptr, params, false, table && params.sampling.x > shared::VS_STRATEGY_ENVIRONMENT, quads);
+  this->PipelineFor(nullptr, params, cellWalk, table && params.sampling.x > shared::VS_STRATEGY_ENVIRONMENT, quads);
 }
 
 bool MonteCarloPass::Defensive(const shared::VsRenderParams& params)

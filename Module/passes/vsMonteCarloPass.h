@@ -43,12 +43,15 @@ public:
     const VisibilityGrid* grid, const DeviceEnvironment& environment, shared::VsRenderParams params,
     const std::vector<float>& depth);
 
-  /** Creates the pipeline a Render with these parameters would use (an r8 grid or none, no cell
-   *  walk), so that its creation (SPIR-V to the device's code: a large part of the first frame on
-   *  lavapipe) can run on another thread while the caller prepares the scene. The caller must not
-   *  use this pass on another thread meanwhile. Exceptions are the caller's to take or drop: the
-   *  Render that needs the pipeline reports the same error. */
-  void Prewarm(const shared::VsRenderParams& params, bool table, bool quads = false);
+  /** Creates the pipeline a Render with these parameters would use (an r8 grid or none; the cell
+   *  walk if `cellWalk`), so that its creation (SPIR-V to the device's code: a large part of the
+   *  first frame on lavapipe) can run on another thread while the caller prepares the scene. The
+   *  caller must not use this pass on another thread meanwhile. Exceptions are the caller's to take
+   *  or drop: the Render that needs the pipeline reports the same error. */
+  void Prewarm(const shared::VsRenderParams& params, bool table, bool quads = false, bool cellWalk = false);
+  /** Whether some majorant segment may reach the tracking's refinement depth (mc_render.glsl's
+   *  cell walk): the brick majorant times the longest world path through a brick, with a margin. */
+  static bool NeedsCellWalk(const MajorantGrid& majorants, const shared::VsRenderParams& params);
 
   /** Per pixel (rgb, alpha) means, rows bottom-up. */
   std::vector<float> Mean() const;
@@ -129,9 +132,6 @@ private:
     const VisibilityGrid* grid, const shared::VsRenderParams& params, bool refine, bool table, bool quads);
   /** Whether params ask for TwoStep's defensive mixture (render_params.h mixture.x > 0). */
   static bool Defensive(const shared::VsRenderParams& params);
-  /** Whether some majorant segment may reach the tracking's refinement depth (mc_render.glsl's
-   *  cell walk): the brick majorant times the longest world path through a brick, with a margin. */
-  static bool NeedsCellWalk(const MajorantGrid& majorants, const shared::VsRenderParams& params);
 
   std::shared_ptr<Context> Context_;
   // Per specialization (mc_render.glsl's constant_ids): r8, r16, r32f visibility; r8 counting reads.
