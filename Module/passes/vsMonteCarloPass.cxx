@@ -326,8 +326,9 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
       break;
     }
     // Every round completes at least one sample of every short pixel (mc_render.glsl's tracking
-    // cap); this bound only stops a kernel that breaks that promise.
-    if (round >= kMaxCatchUpRounds)
+    // cap), so a frame takes at most one round per sample (many shadow rays fit one sample per
+    // dispatch); this bound only stops a kernel that breaks that promise.
+    if (round >= std::max(kMaxCatchUpRounds, params.sampling.y))
     {
       throw Error("the render kernel left " + std::to_string(shortPixels) + " pixels short of " +
         std::to_string(goal) + " samples after " + std::to_string(round) +

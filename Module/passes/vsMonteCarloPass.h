@@ -94,7 +94,8 @@ public:
    *  keeps it below lavapipe's loop limiter) decides how many it completes; the rest follow in the
    *  next dispatches, so any value gives the same image. */
   static constexpr uint32_t kMaxSamplesPerDispatch = 4096;
-  /** Catch-up dispatches a Render may need at most before it reports a kernel error. */
+  /** Catch-up dispatches a Render may need at most (or one per sample of the frame, if more) before
+   *  it reports a kernel error. */
   static constexpr uint32_t kMaxCatchUpRounds = 256;
   /** Catch-up dispatches (after the planned ones) the last Render needed: pixels whose samples took
    *  more than the kernel's loop budget allowed in their dispatch. */

@@ -146,6 +146,7 @@ void set_ray(vec3 d)
   gRay.invLength = 1.0 / max(length(d), 1e-20);
 }
 uint gShadowRays;
+uint gShadowBudget; /* tracking steps the shadow rays of one sample share (main) */
 uint gTableBase; /* where the scatter cell's direction table starts (VS_SPEC_TABLE) */
 
 uint vs_table_value(uint i)
@@ -857,6 +858,7 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPer
     /* gShadowRays directions per scatter point (splitting): their mean is an unbiased estimate
      * of the in-scattered light at x, for the cost of one camera ray. */
     vec3 sum = vec3(0.0);
+    uint shadowLeft = gShadowBudget; /* the same in every lane here: it drops by the group's steps */
     for (uint k = 0u; k < gShadowRays; ++k)
     {
       float pdf;
@@ -870,11 +872,13 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPer
       {
         vec3 di = (gWorldToIndex * vec4(w, 0.0)).xyz;
         vec2 ts = ray_interval(x, di);
-        float T = ratio_track(x, di, 0.0, ts.y, rng, VS_TRACKING_CAP, steps);
+        float T = ratio_track(x, di, 0.0, ts.y, rng, min(VS_TRACKING_CAP, max(shadowLeft, 1u)), steps);
         sum += T * Le / pdf;
       }
       /* The lanes here run each shadow ray's loop as long as the longest of them. */
-      shadowCost += subgroupMax(steps) + scatterCostPerRay;
+      uint groupSteps = subgroupMax(steps);
+      shadowLeft -= min(shadowLeft, groupSteps);
+      shadowCost += groupSteps + scatterCostPerRay;
     }
     result.rgb += albedo * VS_INV_4PI * sum / float(gShadowRays);
   }
@@ -940,8 +944,13 @@ void main()
   uint scatterCost = scatter_cost(gStrategy, P.grid.w, P.sampling.w, VS_SPEC_CELL_MODE);
   /* Per shadow ray: its direction (the map is made once: counted in the first) and its clip planes. */
   uint perRay = 16u + 2u * P.sampling.w + 6u + 4u;
-  uint sampleMax = VS_TRACKING_CAP + 1u + scatterCost + gShadowRays * (VS_TRACKING_CAP + 1u + perRay) +
-    VS_START_COST + VS_SAMPLE_SLACK;
+  /* The shadow rays of a sample share the steps the budget leaves after the rest of its worst
+   * case, each ray at most VS_TRACKING_CAP: up to 6 rays keep that cap each (the budget holds them),
+   * more share it so that one sample always fits (64 rays: ~800 steps each if all need them; a ray
+   * that reaches its cap scores transmittance 0, as at VS_TRACKING_CAP). */
+  uint sampleFixed = VS_TRACKING_CAP + 1u + scatterCost + gShadowRays * (1u + perRay) + VS_START_COST + VS_SAMPLE_SLACK;
+  gShadowBudget = min(gShadowRays * VS_TRACKING_CAP, VS_LOOP_BUDGET - min(sampleFixed + gShadowRays, VS_LOOP_BUDGET));
+  uint sampleMax = sampleFixed + gShadowBudget;
   uint cost = 0u;
   while (subgroupAny(done < pc.target) && cost + sampleMax <= VS_LOOP_BUDGET)
   {

@@ -195,7 +195,7 @@ TEST(MonteCarlo, CellMajorantWalkIsUnbiased)
   }
 }
 
-// Splitting is unbiased: 4 shadow rays per scatter point agree with 1 within the standard errors
+// Splitting is unbiased: 4 and 64 shadow rays per scatter point agree with 1 within the standard errors
 // (the same z^2 sum as above), and lower the variance of a sample (same camera rays, more light
 // directions per scatter point).
 TEST(MonteCarlo, ShadowRaySplittingIsUnbiased)
@@ -216,6 +216,16 @@ TEST(MonteCarlo, ShadowRaySplittingIsUnbiased)
     EXPECT_GT(g.dof, 150) << kNames[strategy];
     EXPECT_LT(g.chi2, g.Bound()) << kNames[strategy];
     EXPECT_LT(g.varB, 0.9 * g.varA) << kNames[strategy] << ": 4 shadow rays should lower the variance of a sample";
+    // The most the mapper accepts (vtkVisibilitySweepVolumeMapper::SetShadowRays clamps to 64): the
+    // rays share the loop budget's tracking steps, so a sample still fits one dispatch (with each
+    // ray at the full tracking cap no sample fitted beyond 6 rays, and the render failed).
+    p.tracking.y = 64.0f;
+    p.viewport.w = 5u;
+    auto [c, vc] = scene.Render(p, 2);
+    const Agreement g64 = Compare(a, va, c, vc, n);
+    EXPECT_GT(g64.dof, 150) << kNames[strategy];
+    EXPECT_LT(g64.chi2, g64.Bound()) << kNames[strategy] << ": 64 shadow rays";
+    EXPECT_LT(g64.varB, g.varB) << kNames[strategy] << ": 64 shadow rays should lower the variance further";
   }
 }
 
