@@ -732,8 +732,10 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkVolumeProperty* property, v
     return; // the pipeline depends on the regions the geometry keeps: made when known
   }
   vs::shared::VsRenderParams p{};
-  // Auto's first frames sample the environment (its grid fills in first).
-  p.sampling.x = uint32_t(this->SamplingStrategy == Auto ? int(Environment) : this->SamplingStrategy);
+  // Auto's first frames sample the environment (its grid fills in first), and so does TwoStep's
+  // first progressive frame: its new grid is flat, where TwoStep is rendered as Environment sampling.
+  const bool flatFirst = this->SamplingStrategy == Auto || (this->SamplingStrategy == TwoStep && this->ProgressiveVisibility);
+  p.sampling.x = uint32_t(flatFirst ? int(Environment) : this->SamplingStrategy);
   p.sampling.z = uint32_t(this->CellMode);
   p.tracking.z = float(this->CameraEstimator);
   p.crop.y = uint32_t(this->ControlExtinction);
