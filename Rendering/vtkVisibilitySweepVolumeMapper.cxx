@@ -1253,6 +1253,10 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
     this->NoteSweeps(result.DirectionsSwept, result.Seconds,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
+  else if (result.Seconds > 0.0)
+  {
+    this->LastFrameSweepSeconds = result.Seconds; // a slab of the pooled extinction, no direction yet
+  }
 }
 
 // Counters and events of a render that swept visibility.

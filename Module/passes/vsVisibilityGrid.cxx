@@ -17,8 +17,6 @@
 #include "vs_spirv_sweep_filter.h"
 #include "vs_spirv_sweep_march.h"
 #include "vs_spirv_sweep_march_pooled.h"
-#include "vs_spirv_sweep_pool.h"
-#include "vs_spirv_sweep_pool_occupancy.h"
 #include "vs_spirv_sweep_project_r16.h"
 #include "vs_spirv_sweep_project_r32f.h"
 #include "vs_spirv_sweep_project_r8.h"
@@ -93,32 +91,7 @@ bool SameLayout(const VisibilityGridParameters& a, const VisibilityGridParameter
     a.NearestInterpolation == b.NearestInterpolation;
 }
 
-template <typename T>
-size_t HashOf(const std::vector<T>& v)
-{
-  return std::hash<std::string_view>()(
-    std::string_view(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T)));
-}
 
-// Pooled occupancy bricks: 8 voxels wide, as the majorant grid's (at least one pooled texel).
-uint32_t PoolBrickTexels(uint32_t factor)
-{
-  return std::max<uint32_t>(1, 8 / factor);
-}
-
-struct PoolPush
-{
-  glm::ivec4 dims;
-  glm::ivec4 pooled;
-  glm::vec4 tf;
-  glm::vec4 cropLo, cropHi;
-  glm::uvec4 crop;
-};
-struct OccupancyPush
-{
-  glm::ivec4 pooled;
-  glm::ivec4 bricks;
-};
 
 bool SameGeometry(const VolumeGeometry& a, const VolumeGeometry& b)
 {
@@ -359,7 +332,7 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
   const uint32_t factor = parameters.Algorithm == VisibilityGridParameters::Method::Sweep ? parameters.PoolingFactor() : 1u;
   if (factor > 1)
   {
-    const uint32_t brick = PoolBrickTexels(factor);
+    const uint32_t brick = PooledExtinction::BrickTexels(factor);
     glm::uvec3 pooled, poolBricks;
     for (int i = 0; i < 3; ++i)
     {
@@ -486,7 +459,11 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
   if (pooled)
   {
     const double cpu0 = ProcessCpuSeconds();
-    const double seconds = this->EnsurePooled(volume, tf, majorants);
+    if (!this->Pool_)
+    {
+      this->Pool_ = std::make_unique<PooledExtinction>(this->Context_);
+    }
+    const double seconds = this->Pool_->Ensure(volume, tf, majorants, this->PoolSettings());
     if (seconds > 0.0)
     {
       this->LastStageCpuSeconds_["pool"] += ProcessCpuSeconds() - cpu0;
@@ -501,7 +478,7 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
   DescriptorSet march(marchPipeline);
   if (pooled)
   {
-    march.Bind(0, *this->Pooled_).Bind(2, *this->PooledOccupancy_);
+    march.Bind(0, this->Pool_->Pooled()).Bind(2, this->Pool_->Occupancy());
   }
   else
   {
@@ -576,95 +553,38 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
   }
 }
 
-bool VisibilityGrid::PoolKey::operator==(const PoolKey& o) const
+PooledExtinction::Settings VisibilityGrid::PoolSettings() const
 {
-  return this->Volume == o.Volume && this->TF == o.TF && this->Majorants == o.Majorants &&
-    this->RangeUpdates == o.RangeUpdates && this->MajorantUpdates == o.MajorantUpdates && this->TFHash == o.TFHash &&
-    this->MajorantHash == o.MajorantHash && this->Dims == o.Dims && this->Range == o.Range &&
-    this->NonFinite == o.NonFinite && this->ExtinctionFactor == o.ExtinctionFactor && this->Factor == o.Factor && this->Max == o.Max && this->CropFlags == o.CropFlags &&
-    this->CropLo == o.CropLo && this->CropHi == o.CropHi;
+  PooledExtinction::Settings settings;
+  settings.Factor = this->Parameters_.PoolingFactor();
+  settings.Max = this->Parameters_.MaxPooling;
+  settings.CropFlags = this->Geometry_.CropFlags;
+  settings.CropLo = this->Geometry_.CropLo;
+  settings.CropHi = this->Geometry_.CropHi;
+  return settings;
 }
 
-double VisibilityGrid::EnsurePooled(
-  const DeviceVolume& volume, const TransferFunctionTable& tf, const MajorantGrid& majorants)
+uint64_t VisibilityGrid::PoolBuilds() const
 {
-  PoolKey key;
-  key.Volume = &volume;
-  key.TF = &tf;
-  key.Majorants = &majorants;
-  key.RangeUpdates = majorants.RangeUpdates();
-  key.MajorantUpdates = majorants.MajorantUpdates();
-  key.TFHash = HashOf(tf.Samples().Entries) ^ (std::hash<float>()(tf.Samples().ScalarMin) * 31u) ^
-    (std::hash<float>()(tf.Samples().ScalarMax) * 131u);
-  key.MajorantHash = HashOf(majorants.Majorants());
-  key.Dims = volume.Dims();
-  key.Range = volume.Range();
-  key.NonFinite = volume.NonFiniteCount();
-  key.ExtinctionFactor = volume.Factor() ? volume.FactorSerial() : 0;
-  key.Factor = this->Parameters_.PoolingFactor();
-  key.Max = this->Parameters_.MaxPooling;
-  key.CropFlags = this->Geometry_.CropFlags;
-  if (key.CropFlags)
-  {
-    key.CropLo = this->Geometry_.CropLo;
-    key.CropHi = this->Geometry_.CropHi;
-  }
-  if (this->Pooled_ && key == this->PoolKey_)
+  return this->Pool_ ? this->Pool_->Builds() : 0;
+}
+
+double VisibilityGrid::AdvancePool(const DeviceVolume& volume, const TransferFunctionTable& tf,
+  const MajorantGrid& majorants, double budgetSeconds, bool& ready)
+{
+  ready = true;
+  if (this->Parameters_.Algorithm != VisibilityGridParameters::Method::Sweep || this->Parameters_.PoolingFactor() <= 1)
   {
     return 0.0;
   }
-  const uint32_t factor = key.Factor;
+  if (!this->Pool_)
   {
-    // Specialised for the factor, the kind of pooling and whether cropping masks voxels.
-    using B = BindingType;
-    const uint32_t cropped = key.CropFlags ? 1u : 0u;
-    const uint32_t scaled = key.ExtinctionFactor ? 1u : 0u;
-    this->Pool_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_pool),
-      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageImage }, sizeof(PoolPush),
-      "sweep pool (P " + std::to_string(factor) + (key.Max ? ", max" : ", mean") + (cropped ? ", cropped" : "") +
-        (scaled ? ", gradient opacity)" : ")"),
-      { factor, key.Max ? 1u : 0u, cropped, scaled });
-    this->Occupancy_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_pool_occupancy),
-      std::vector<B>{ B::StorageImage, B::StorageImage }, sizeof(OccupancyPush), "sweep pool occupancy");
+    this->Pool_ = std::make_unique<PooledExtinction>(this->Context_);
   }
-  const uint32_t brick = PoolBrickTexels(factor);
-  glm::ivec3 pooled, bricks;
-  for (int i = 0; i < 3; ++i)
-  {
-    pooled[i] = int((key.Dims[i] + factor - 1) / factor);
-    bricks[i] = (pooled[i] + int(brick) - 1) / int(brick);
-  }
-  this->Pooled_.reset();
-  this->PooledOccupancy_.reset();
-  this->PoolKey_ = PoolKey();
-  this->Pooled_ = std::make_unique<Image3D>(this->Context_, uint32_t(pooled.x), uint32_t(pooled.y),
-    uint32_t(pooled.z), vk::Format::eR32Sfloat, "pooled extinction");
-  this->PooledOccupancy_ = std::make_unique<Image3D>(this->Context_, uint32_t(bricks.x), uint32_t(bricks.y),
-    uint32_t(bricks.z), vk::Format::eR32Sfloat, "pooled extinction occupancy");
-  DescriptorSet poolSet(*this->Pool_);
-  poolSet.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, *this->Pooled_);
-  poolSet.Bind(3, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
-  DescriptorSet occupancySet(*this->Occupancy_);
-  occupancySet.Bind(0, *this->Pooled_).Bind(1, *this->PooledOccupancy_);
-  auto t = tf.Params();
-  PoolPush pp{ glm::ivec4(int(key.Dims[0]), int(key.Dims[1]), int(key.Dims[2]), key.Max ? 1 : 0),
-    glm::ivec4(pooled, int(factor)), glm::vec4(t[0], t[1], t[2], t[3]), glm::vec4(key.CropLo, 0.0f),
-    glm::vec4(key.CropHi, 0.0f), glm::uvec4(key.CropFlags, 0u, 0u, 0u) };
-  OccupancyPush op{ glm::ivec4(pooled, 0), glm::ivec4(bricks, int(brick)) };
-  Batch cmd(this->Context_);
-  cmd.BeginTimer("pool");
-  cmd.Dispatch(*this->Pool_, poolSet, &pp, sizeof(pp), uint32_t(pooled.x + 3) / 4, uint32_t(pooled.y + 3) / 4,
-    uint32_t(pooled.z + 3) / 4);
-  cmd.Barrier();
-  cmd.Dispatch(*this->Occupancy_, occupancySet, &op, sizeof(op), uint32_t(bricks.x + 3) / 4,
-    uint32_t(bricks.y + 3) / 4, uint32_t(bricks.z + 3) / 4);
-  cmd.Barrier();
-  cmd.EndTimer();
-  cmd.Submit();
-  this->LastDispatches_ += cmd.DispatchCount();
-  this->PoolKey_ = key;
-  ++this->PoolBuilds_;
-  return std::max(cmd.Seconds("pool"), 1e-9);
+  const PooledExtinction::Settings settings = this->PoolSettings();
+  const double seconds = this->Pool_->Advance(volume, tf, majorants, settings, budgetSeconds);
+  ready = this->Pool_->IsCurrent(volume, tf, majorants, settings);
+  return seconds;
 }
 
 void VisibilityGrid::RunBruteForce(const DeviceVolume& volume, const TransferFunctionTable& tf,

@@ -10,6 +10,7 @@
 #define vsVisibilityGrid_h
 
 #include "vissweepCoreModule.h"
+#include "vsPooledExtinction.h"
 #include "vsSweepPlan.h"
 #include "vsVolumeGeometry.h"
 
@@ -90,7 +91,13 @@ public:
   /** Host wall-clock seconds of the last Compute (planning, buffers, submits, waits). */
   double LastWallSeconds() const { return this->LastWallSeconds_; }
   /** Times the pooled extinction volume was built (it is cached across Compute calls). */
-  uint64_t PoolBuilds() const { return this->PoolBuilds_; }
+  uint64_t PoolBuilds() const;
+  /** Progressive grids: builds the pooled extinction volume this grid's sweeps will march (when its
+   *  parameters pool and it is not current) for about budgetSeconds of device time, so that no
+   *  frame waits for the whole build; returns the device seconds spent. True in `ready` once it
+   *  is current (Compute then does not build it). */
+  double AdvancePool(const DeviceVolume& volume, const TransferFunctionTable& tf, const MajorantGrid& majorants,
+    double budgetSeconds, bool& ready);
   /** Changes whenever the grid's values may have changed (a new image, Clear, Compute): a
    *  process-wide serial (vsSerial.h), so caches of derived data can tell old values from new. */
   uint64_t ContentSerial() const { return this->ContentSerial_; }
@@ -109,37 +116,13 @@ private:
   SweepPlan Plan_;
   VolumeGeometry Geometry_;
   std::unique_ptr<Image3D> Image_;
-  /** Builds the pooled extinction volume and its occupancy unless the cached one is for this
-   *  volume, transfer function and pooling; returns its device seconds (0 when cached). */
-  double EnsurePooled(const DeviceVolume& volume, const TransferFunctionTable& tf, const MajorantGrid& majorants);
+  /** The pooling of this grid's parameters and geometry. */
+  PooledExtinction::Settings PoolSettings() const;
 
-  /** What the pooled volume was built from. A DeviceVolume's data cannot change after upload, so
-   *  new data is a new object (or, reusing an address, new majorant ranges: counted and hashed). */
-  struct PoolKey
-  {
-    const void* Volume = nullptr;
-    const void* TF = nullptr;
-    const void* Majorants = nullptr;
-    uint64_t RangeUpdates = 0, MajorantUpdates = 0;
-    size_t TFHash = 0, MajorantHash = 0;
-    std::array<uint32_t, 3> Dims{ { 0, 0, 0 } };
-    std::array<float, 2> Range{ { 0.0f, 0.0f } };
-    uint64_t NonFinite = 0;
-    uint64_t ExtinctionFactor = 0; // the volume's FactorSerial (the gradient opacity; 0: none)
-    uint32_t Factor = 0;
-    bool Max = false;
-    uint32_t CropFlags = 0; // the cropping regions the voxels were masked with
-    glm::vec3 CropLo{ 0.0f }, CropHi{ 0.0f };
-    bool operator==(const PoolKey& o) const;
-  };
-
-  std::shared_ptr<ComputePipeline> March_, MarchPooled_, Filter_, Project_, Brute_, Pool_, Occupancy_;
+  std::shared_ptr<ComputePipeline> March_, MarchPooled_, Filter_, Project_, Brute_;
   uint32_t MarchPooledNearest_ = ~0u; // the specialization MarchPooled_ was made for
   uint32_t MarchFactor_ = ~0u, BruteFactor_ = ~0u; // March_'s and Brute_'s (the extinction factor)
-  std::unique_ptr<Image3D> Pooled_, PooledOccupancy_;
-  PoolKey PoolKey_;
-  uint32_t PoolBrick_ = 1;
-  uint64_t PoolBuilds_ = 0;
+  std::unique_ptr<PooledExtinction> Pool_;          // the pooled extinction the sweeps march (cached)
   double LastSeconds_ = 0.0;
   double LastWallSeconds_ = 0.0;
   bool Profiling_ = false;

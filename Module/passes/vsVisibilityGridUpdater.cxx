@@ -7,6 +7,7 @@
 #include "shared/update_order.h"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 namespace vs
@@ -232,6 +233,7 @@ GridUpdateResult VisibilityGridUpdater::Update(const DeviceVolume& volume, const
   pending = FillOrder(side, pending, request.Importance);
 
   std::vector<uint32_t> now = lazy;
+  double poolSeconds = 0.0; // progressive: the part of the pooled extinction built in this call
   if (request.FillIn && !request.Progressive)
   {
     now.insert(now.end(), pending.begin(), pending.end());
@@ -245,10 +247,25 @@ GridUpdateResult VisibilityGridUpdater::Update(const DeviceVolume& volume, const
     // cost more than granted leaves a debt). Before the first sweep the cost is taken to be
     // PriorSecondsPerDirection; a budget of 0 sweeps one direction per call.
     const double per = this->SecondsPerDirection_ > 0.0 ? this->SecondsPerDirection_ : PriorSecondsPerDirection;
-    size_t n = 1;
-    if (request.BudgetSeconds > 0.0)
+    const bool budgeted = request.BudgetSeconds > 0.0;
+    if (budgeted)
     {
       this->Allowance_ += request.BudgetSeconds;
+    }
+    // The pooled extinction the sweeps march comes first, slab by slab within the allowance (at
+    // least a slab per call; whole with a budget of 0, one unit of work per call): built whole
+    // inside the first sweep it stalled that frame, about 0.5 s on the 0.5 mm MRI, and its cost
+    // made the first direction look that expensive.
+    bool poolReady = true;
+    poolSeconds = this->Grid_->AdvancePool(volume, tf, majorants,
+      budgeted ? this->Allowance_ : std::numeric_limits<double>::infinity(), poolReady);
+    if (budgeted)
+    {
+      this->Allowance_ -= poolSeconds;
+    }
+    size_t n = poolReady ? 1 : 0;
+    if (poolReady && budgeted)
+    {
       n = this->Allowance_ > 0.0 ? std::min(pending.size(), size_t(this->Allowance_ / per)) : 0;
     }
     n = std::min(n, pending.size());
@@ -284,6 +301,7 @@ GridUpdateResult VisibilityGridUpdater::Update(const DeviceVolume& volume, const
   {
     this->Allowance_ -= swept.Seconds; // may go negative: a debt paid by later grants
   }
+  swept.Seconds += poolSeconds;
   swept.NewGrid = result.NewGrid;
   return swept;
 }

@@ -29,14 +29,14 @@ layout(push_constant) uniform Push
   vec4 tf;      /* LUT parameters */
   vec4 cropLo;  /* the cropping regions (vsVolumeGeometry.h): hidden voxels pool as 0 */
   vec4 cropHi;
-  uvec4 crop;   /* x: flags */
+  uvec4 crop;   /* x: flags; y: the first pooled slice of this dispatch (slab by slab builds) */
 } pc;
 
 #include "volume_access.glsl"
 
 void main()
 {
-  ivec3 j = ivec3(gl_GlobalInvocationID);
+  ivec3 j = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, int(pc.crop.y));
   if (any(greaterThanEqual(j, pc.pooled.xyz)))
     return;
   ivec3 lo = j * VS_POOL_P;

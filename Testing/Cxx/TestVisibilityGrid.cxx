@@ -751,3 +751,62 @@ TEST(VisibilityGrid, OccupiedBoxKeepsTheShadowOfAnIsolatedBlock)
     EXPECT_LT(sumSweep / sumBrute, pooling == 1 ? 1.03 : 1.25);
   }
 }
+
+// The pooled extinction built slab by slab within a budget (progressive grids: no frame waits for
+// the whole build) is the one built at once, bit for bit, and so is the grid swept over it; the
+// slabs take several calls, at least one slab each, and the volume is not current until the last.
+TEST(VisibilityGrid, PooledVolumeBuiltInSlabsIsTheWholeBuild)
+{
+  VisibilityScene scene({ { 25, 25, 40 } }, Blob, 0.4);
+  vs::PooledExtinction::Settings settings;
+  settings.Factor = 2; // 20 pooled slices: 5 slabs
+  vs::PooledExtinction whole(scene.Context);
+  EXPECT_GT(whole.Ensure(*scene.Volume, *scene.TF, *scene.Majorants, settings), 0.0);
+  EXPECT_TRUE(whole.IsCurrent(*scene.Volume, *scene.TF, *scene.Majorants, settings));
+  EXPECT_EQ(whole.Ensure(*scene.Volume, *scene.TF, *scene.Majorants, settings), 0.0) << "cached";
+
+  vs::PooledExtinction slabs(scene.Context);
+  int calls = 0;
+  while (!slabs.IsCurrent(*scene.Volume, *scene.TF, *scene.Majorants, settings))
+  {
+    ASSERT_LT(calls, 100);
+    EXPECT_GT(slabs.Advance(*scene.Volume, *scene.TF, *scene.Majorants, settings, 1e-12), 0.0);
+    ++calls;
+  }
+  EXPECT_EQ(calls, 5) << "one slab of " << vs::PooledExtinction::SlabSlices << " pooled slices per call";
+  EXPECT_EQ(slabs.Builds(), 1u);
+  const auto download = [](const vs::Image3D& image) {
+    std::vector<float> v(image.Bytes() / sizeof(float));
+    image.Download(v.data(), image.Bytes());
+    return v;
+  };
+  EXPECT_EQ(download(slabs.Pooled()), download(whole.Pooled()));
+  EXPECT_EQ(download(slabs.Occupancy()), download(whole.Occupancy()));
+
+  // New inputs restart a build: a denser transfer function is not current until rebuilt.
+  auto samples = vs::TransferFunctionSamples::FromFunctions(0.0f, 1.0f, 1025,
+    [](double s) { return 1.0 - std::exp(-s * 1.5); }, [](double, double c[3]) { c[0] = c[1] = c[2] = 1.0; }, 1.0,
+    1.0);
+  vs::TransferFunctionTable denser(scene.Context, samples);
+  scene.Majorants->UpdateMajorants(samples);
+  EXPECT_FALSE(slabs.IsCurrent(*scene.Volume, denser, *scene.Majorants, settings));
+
+  // The grid: slabs through AdvancePool, then a sweep that finds the pool current.
+  scene.Majorants->UpdateMajorants(scene.TF->Samples());
+  VisibilityGridParameters p;
+  p.StorageFormat = VisibilityGridParameters::Format::Float32;
+  p.ExtinctionPooling = 2;
+  vs::VisibilityGrid reference(scene.Context);
+  const std::vector<float> all = scene.Grid(reference, p);
+  vs::VisibilityGrid grid(scene.Context);
+  grid.Allocate(scene.Geometry, p);
+  bool ready = false;
+  for (int i = 0; i < 100 && !ready; ++i)
+  {
+    grid.AdvancePool(*scene.Volume, *scene.TF, *scene.Majorants, 1e-12, ready);
+  }
+  ASSERT_TRUE(ready);
+  EXPECT_EQ(grid.PoolBuilds(), 1u);
+  EXPECT_EQ(scene.Grid(grid, p), all);
+  EXPECT_EQ(grid.PoolBuilds(), 1u) << "the sweep used the pool built in slabs";
+}

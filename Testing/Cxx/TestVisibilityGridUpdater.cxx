@@ -363,3 +363,29 @@ TEST(StrategySelector, AGridTooEarlyToJudgeKeepsFillingIn)
   GridFramesOfLast64(judged, 1.0, 1.0, 1.0, 2.0);
   EXPECT_FALSE(judged.GridWorthSweeping());
 }
+
+// A progressive grid builds the pooled extinction its sweeps march slab by slab within the
+// sweeps' budget before sweeping (built whole in the first sweep, it stalled that frame); the
+// grid it completes is the one swept at once.
+TEST(VisibilityGridUpdater, ProgressiveGridsPoolTheVolumeInSlabsFirst)
+{
+  VisibilityScene s = Slab(); // 16^3 voxels pooled by 2: 8 pooled slices, two slabs
+  ASSERT_EQ(GridUpdateRequest().Parameters.PoolingFactor(), 2u);
+  VisibilityGridUpdater updater(s.Context);
+  GridUpdateRequest r = Request(s, std::vector<float>(16, 1.0f));
+  r.BudgetSeconds = 1e-12; // at least a slab per call, no direction while the pool is incomplete
+  EXPECT_TRUE(updater.Update(*s.Volume, *s.TF, *s.Majorants, r).NewGrid);
+  const auto first = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
+  EXPECT_EQ(first.DirectionsSwept, 0u);
+  EXPECT_GT(first.Seconds, 0.0) << "the first slab's time counts as the sweeps'";
+  EXPECT_EQ(updater.Grid()->PoolBuilds(), 0u);
+  const auto second = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
+  EXPECT_EQ(second.DirectionsSwept, 0u) << "the pool's cost left no allowance for a direction";
+  EXPECT_EQ(updater.Grid()->PoolBuilds(), 1u);
+  r.BudgetSeconds = 1e6;
+  updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
+  ASSERT_TRUE(updater.IsComplete());
+  EXPECT_EQ(updater.Grid()->PoolBuilds(), 1u);
+  vs::VisibilityGrid full(s.Context);
+  EXPECT_EQ(updater.Grid()->Download(), s.Grid(full, r.Parameters));
+}
