@@ -72,38 +72,27 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::shared_ptr<vs::DirectionTable> Table;   // the grid strategies' direction table, shared by the passes
   std::future<void> Prewarm;                   // the first frame's render pipeline, made while the scene uploads
   bool PrewarmStarted = false;
-  /** Waits for the prewarm (its errors are the render's to report: it makes the pipeline again). */
-  void JoinPrewarm()
-  {
-    if (this->Prewarm.valid())
-    {
-      try
-      {
-        this->Prewarm.get();
-      }
-      catch (...)
-      {
-      }
-    }
-  }
   /** Auto: TwoStep's pipeline, made on another thread once the grid has swept a direction, so the
    *  first TwoStep frame does not wait for its creation (a TwoStep frame that comes first waits in
    *  the context's pipeline cache). */
   std::future<void> GridPrewarm;
   bool GridPrewarmStarted = false;
-  void JoinGridPrewarm()
+  /** Waits for a prewarm (its errors are the render's to report: it makes the pipeline again). */
+  static void Join(std::future<void>& prewarm)
   {
-    if (this->GridPrewarm.valid())
+    if (prewarm.valid())
     {
       try
       {
-        this->GridPrewarm.get();
+        prewarm.get();
       }
       catch (...)
       {
       }
     }
   }
+  void JoinPrewarm() { Join(this->Prewarm); }
+  void JoinGridPrewarm() { Join(this->GridPrewarm); }
   ~Internals()
   {
     this->JoinPrewarm();
