@@ -949,6 +949,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     I.GridPrewarmStarted = true;
     vs::shared::VsRenderParams q = p;
     q.sampling.x = uint32_t(TwoStep);
+    q.crop.w = I.Scene->Volume().Factor() ? 1u : 0u; // as MonteCarloPass::Render sets it
     const bool cellWalk = vs::MonteCarloPass::NeedsCellWalk(I.Scene->Majorants(), q);
     const bool quads = I.MC && I.MC->LastUsedVolumeQuads();
     const bool table = this->DirectionTable;
