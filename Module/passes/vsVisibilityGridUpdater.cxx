@@ -244,9 +244,11 @@ GridUpdateResult VisibilityGridUpdater::Update(const DeviceVolume& volume, const
     // The budgets of the calls accumulate into an allowance, and directions are swept while the
     // allowance covers their estimated cost: over many frames the sweeps take the budget's share
     // of the time, even when one direction costs more than one frame's budget (a sweep that
-    // cost more than granted leaves a debt). Before the first sweep the cost is taken to be
-    // PriorSecondsPerDirection; a budget of 0 sweeps one direction per call.
-    const double per = this->SecondsPerDirection_ > 0.0 ? this->SecondsPerDirection_ : PriorSecondsPerDirection;
+    // cost more than granted leaves a debt). The first direction is swept as soon as the pooled
+    // extinction is built, whatever the allowance: its cost is unknown until then (an assumed
+    // 0.1 s held the first sweep of ch2, ~0.01 s, back for 2 s at Auto's 5% share); a budget of 0
+    // sweeps one direction per call.
+    const double per = this->SecondsPerDirection_;
     const bool budgeted = request.BudgetSeconds > 0.0;
     if (budgeted)
     {
@@ -264,7 +266,7 @@ GridUpdateResult VisibilityGridUpdater::Update(const DeviceVolume& volume, const
       this->Allowance_ -= poolSeconds;
     }
     size_t n = poolReady ? 1 : 0;
-    if (poolReady && budgeted)
+    if (poolReady && budgeted && per > 0.0)
     {
       n = this->Allowance_ > 0.0 ? std::min(pending.size(), size_t(this->Allowance_ / per)) : 0;
     }

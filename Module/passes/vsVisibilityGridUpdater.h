@@ -45,8 +45,9 @@ struct GridUpdateRequest
   /** Fill a new grid progressively (see above) or sweep every needed direction at once. */
   bool Progressive = true;
   /** Progressive: the device seconds granted to the sweeps by this call. Grants accumulate, and a
-   *  direction is swept once they cover its estimated cost (PriorSecondsPerDirection before the
-   *  first sweep; a sweep costing more leaves a debt); 0 = one direction per call. */
+   *  direction is swept once they cover its estimated cost (the first direction as soon as the
+   *  pooled extinction is built, which measures that cost; a sweep costing more than granted
+   *  leaves a debt); 0 = one direction per call. */
   double BudgetSeconds = 0.0;
   /** Sweep pending directions at all (false: only lazy updates after data changes; the grid keeps
    *  visibility 1 where it was never swept). */
@@ -100,10 +101,6 @@ public:
 
   /** Fill-in order: the directions of `candidates` by decreasing importance, ties in the
    *  bit-reversed Morton order of update_order.h (well spread over the sphere). */
-  /** The cost assumed for a direction before any was swept (seconds; the first sweep of a
-   *  process also creates the sweep pipelines). */
-  static constexpr double PriorSecondsPerDirection = 0.1;
-
   static std::vector<uint32_t> FillOrder(
     uint32_t side, const std::vector<uint32_t>& candidates, const std::vector<float>& importance);
 

@@ -380,8 +380,11 @@ TEST(VisibilityGridUpdater, ProgressiveGridsPoolTheVolumeInSlabsFirst)
   EXPECT_GT(first.Seconds, 0.0) << "the first slab's time counts as the sweeps'";
   EXPECT_EQ(updater.Grid()->PoolBuilds(), 0u);
   const auto second = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
-  EXPECT_EQ(second.DirectionsSwept, 0u) << "the pool's cost left no allowance for a direction";
   EXPECT_EQ(updater.Grid()->PoolBuilds(), 1u);
+  EXPECT_EQ(second.DirectionsSwept, 1u) << "the first direction once the pool is built: it measures a direction's cost";
+  EXPECT_GT(updater.SecondsPerDirection(), 0.0);
+  EXPECT_EQ(updater.Update(*s.Volume, *s.TF, *s.Majorants, r).DirectionsSwept, 0u)
+    << "then the debt: no allowance for the next";
   r.BudgetSeconds = 1e6;
   updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
   ASSERT_TRUE(updater.IsComplete());
