@@ -1,11 +1,11 @@
 // The visible environment behind everything (issue 14): with EnvironmentVisible on (the default) a
 // VisSweep volume painted the environment with its own image over what the renderer drew before it,
 // so a translucent actor beside it and a VisSweep volume drawn before it (EnvironmentVisible off)
-// were covered. Now the environment is the renderer's background: after the first frame both are
-// seen as with the documented opt-in (a vtkEnvironmentMapBackground skybox added by the user, the
-// mappers' EnvironmentVisible off): the translucent sphere and the earlier volume match it within
-// 3/255, the whole window within 3/255 on average. GetRadiance() stays the full radiance: its alpha
-// is 1 wherever the environment is seen.
+// were covered, and so was a vtkGPUVolumeRayCastMapper volume. Now the environment is the renderer's
+// background: after the first frame all three are seen as with the documented opt-in (a
+// vtkEnvironmentMapBackground skybox added by the user, the mappers' EnvironmentVisible off): the
+// translucent sphere and the earlier volumes match it within 3/255, the whole window within 3/255 on
+// average. GetRadiance() stays the full radiance: its alpha is 1 wherever the environment is seen.
 #include "vsRenderTestUtilities.h"
 #include "vtkEnvironmentMapBackground.h"
 #include "vtkEnvironmentMapSource.h"
@@ -27,6 +27,9 @@
 #include "vtkSphereSource.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+#ifdef VISSWEEP_TEST_GPU_VOLUME
+#include "vtkGPUVolumeRayCastMapper.h"
+#endif
 
 #include <cmath>
 #include <iostream>
@@ -76,7 +79,7 @@ vtkVisibilitySweepVolumeMapper* MapperOf(vtkVolume* v)
 struct Scene
 {
   vtkNew<vtkEnvironmentMapSource> Light;
-  vtkSmartPointer<vtkVolume> Before, Shows;
+  vtkSmartPointer<vtkVolume> Before, Shows, Vtk;
   vtkNew<vtkActor> Sphere;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkRenderWindow> Window;
@@ -95,6 +98,26 @@ struct Scene
     this->Shows = BallVolume(data, this->Light->GetOutputPort(), 0.9, 0.15, 0.1, 24.0, 3);
     MapperOf(this->Before)->EnvironmentVisibleOff();
     this->Renderer->AddVolume(this->Before);
+#ifdef VISSWEEP_TEST_GPU_VOLUME
+    // VTK's own ray caster: a yellow ball at x = 48, drawn before the volume that shows the environment.
+    vtkNew<vtkGPUVolumeRayCastMapper> gpu;
+    gpu->SetInputData(data);
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->AddPoint(0.0, 0.0);
+    opacity->AddPoint(1.0, 0.9);
+    vtkNew<vtkColorTransferFunction> color;
+    color->AddRGBPoint(0.0, 1.0, 0.9, 0.0);
+    color->AddRGBPoint(1.0, 1.0, 0.9, 0.0);
+    vtkNew<vtkVolumeProperty> property;
+    property->SetScalarOpacity(opacity);
+    property->SetColor(color);
+    property->SetInterpolationTypeToLinear();
+    this->Vtk = vtkSmartPointer<vtkVolume>::New();
+    this->Vtk->SetMapper(gpu);
+    this->Vtk->SetProperty(property);
+    this->Vtk->SetPosition(-24.0, 0.0, 0.0);
+    this->Renderer->AddVolume(this->Vtk);
+#endif
     this->Renderer->AddVolume(this->Shows);
     vtkNew<vtkSphereSource> sphere;
     sphere->SetCenter(21.5, 9.5, 24.0);
@@ -117,8 +140,8 @@ struct Scene
     this->Window->SetSize(W, H);
     this->Window->AddRenderer(this->Renderer);
     vtkCamera* camera = this->Renderer->GetActiveCamera();
-    camera->SetFocalPoint(21.5, 9.5, 14.0);
-    camera->SetPosition(21.5, -100.0, 14.0);
+    camera->SetFocalPoint(9.5, 9.5, 14.0);
+    camera->SetPosition(9.5, -120.0, 14.0);
     camera->SetViewUp(0.0, 0.0, 1.0);
     camera->SetViewAngle(30.0);
     camera->SetClippingRange(50.0, 200.0);
@@ -165,10 +188,11 @@ int TestMapperEnvironmentBehind(int, char*[])
   vtkSmartPointer<vtkImageData> data = vstest::Ball(20);
   Scene scene(data, false), reference(data, true);
   const std::vector<int> a = scene.Pixels(3), b = reference.Pixels(3);
-  int sphere[2], before[2], shows[2];
+  int sphere[2], before[2], shows[2], vtk[2];
   scene.Display(21.5, 9.5, 24.0, sphere);
   scene.Display(9.5, 9.5, 9.5, before);
   scene.Display(33.5, 9.5, 9.5, shows);
+  scene.Display(-14.5, 9.5, 9.5, vtk);
   auto print = [](const char* what, const std::vector<int>& p, const std::vector<int>& q) {
     std::cout << what << ": " << p[0] << " " << p[1] << " " << p[2] << " (opt-in skybox " << q[0] << " " << q[1] << " "
               << q[2] << ")\n";
@@ -180,6 +204,13 @@ int TestMapperEnvironmentBehind(int, char*[])
   std::cout << "window against the opt-in skybox: mean " << mean << "/255\n";
   Check(MaxDifference(At(a, sphere), At(b, sphere)) <= 3, "the translucent sphere is seen over the environment");
   Check(MaxDifference(At(a, before), At(b, before)) <= 3, "the volume drawn before is seen");
+#ifdef VISSWEEP_TEST_GPU_VOLUME
+  print("vtkGPUVolumeRayCastMapper volume", At(a, vtk), At(b, vtk));
+  Check(MaxDifference(At(a, vtk), At(b, vtk)) <= 3, "VTK's own volume is seen");
+#else
+  (void)vtk;
+  std::cout << "this VTK has no RenderingVolumeOpenGL2: vtkGPUVolumeRayCastMapper not tried\n";
+#endif
   Check(mean < 3.0, "the window is that of the opt-in skybox");
 
   // The radiance is the full radiance, the environment seen through the volume included.
