@@ -110,6 +110,9 @@ void StartFrame(vtkRenderer* ren, Entry& e)
   {
     ren->RemoveActor(e.Sky);
   }
+  // Nothing left behind: the skybox, its texture and the hold on the environment's pipeline go.
+  e.Sky = nullptr;
+  e.Image = nullptr;
   e.InFrame = own;
 }
 

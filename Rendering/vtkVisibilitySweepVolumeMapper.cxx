@@ -1237,8 +1237,9 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       // what is behind: drawn with the coverage a as C = F(L) - (1 - a) B, B the environment's
       // display colour, so that over the skybox (which shows B) the pixel is F(L) as in the opaque
       // image, and what VTK drew in front of the skybox shows through with the transmittance 1 - a.
-      // C >= 0 up to noise: the display transform is concave with F(0) = 0, so F(L) >= F(T L_env) >=
-      // T F(L_env). Where no sample met the volume (a = 0) the pixel is what is behind it.
+      // C is clamped at 0; it is rarely below: F(L) >= F(T L_env), and the display transform (sRGB
+      // over the filmic curve) is nearly concave with F(0) = 0, so F(T L_env) >= T F(L_env) but for
+      // noise. Where no sample met the volume (a = 0) the pixel is what is behind it.
       const float a = std::clamp(mean[i + 3], 0.0f, 1.0f);
       for (int c = 0; c < 3; ++c)
       {
