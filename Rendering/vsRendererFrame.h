@@ -4,7 +4,9 @@
 // (issue 14). Only the first VisSweep volume drawn in a renderer's frame claims the environment;
 // the volumes drawn after it in the same frame are transparent where they are empty and composite
 // over it. A frame starts at the renderer's StartEvent (vtkRenderer::Render: every window render,
-// every tile of a vtkWindowToImageFilter and every selection pass).
+// every tile of a vtkWindowToImageFilter and every selection pass). With the environment as the
+// renderer's background (vsEnvironmentBackground.h) nobody paints it and claims decide only the
+// frames without a skybox yet (a renderer's first) and volumes with EnvironmentAsBackground off.
 #ifndef vsRendererFrame_h
 #define vsRendererFrame_h
 

@@ -50,6 +50,22 @@ int vtkEnvironmentMapBackground::RequestInformation(
   return 1;
 }
 
+// The whole map, whatever extent of the lat-long image is asked for: vtkImageAlgorithm's default
+// asked the input for the output's extent (the image's width x height), outside the map's whole
+// extent, an error that also made the map's source execute again, and a mapper sharing that source
+// then re-upload the environment and restart its accumulation.
+int vtkEnvironmentMapBackground::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  vtkInformation* in = inputVector[0]->GetNumberOfInformationObjects() > 0 ? inputVector[0]->GetInformationObject(0) : nullptr;
+  if (in && in->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+      in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+  }
+  return 1;
+}
+
 int vtkEnvironmentMapBackground::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {

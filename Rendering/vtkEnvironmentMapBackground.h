@@ -2,10 +2,9 @@
  * @class   vtkEnvironmentMapBackground
  * @brief   The visible environment as a vtkSkybox, drawn behind everything the VTK way.
  *
- * With EnvironmentVisible on, a vtkVisibilitySweepVolumeMapper draws the environment itself, fused
- * with its volume: that image covers what the renderer drew before it (translucent actors, other
- * volumes). For a scene that mixes a VisSweep volume with translucent geometry or other volume
- * mappers, turn EnvironmentVisible off on the mappers and show the environment as the renderer's
+ * A vtkVisibilitySweepVolumeMapper with EnvironmentVisible and EnvironmentAsBackground on (the
+ * defaults) makes one of these itself and adds its skybox to the renderer, behind everything. A
+ * skybox of your own (e.g. a wider image, or with EnvironmentAsBackground off) is taken as the
  * background instead: this filter turns an environment map (the output of vtkEnvironmentMapReader
  * or vtkEnvironmentMapSource, the mapper's input port 1; none = the mapper's default constant white
  * sky of radiance 1) into the 8-bit lat-long image of a vtkSkybox in Sphere projection, through the
@@ -15,11 +14,11 @@
  *   background->SetInputConnection(reader->GetOutputPort());
  *   background->CopyDisplaySettings(mapper);
  *   vtkNew<vtkSkybox> sky; background->ConfigureSkybox(sky); renderer->AddActor(sky);
- *   mapper->EnvironmentVisibleOff();
  *
  * The skybox is drawn first and at the far plane: opaque and translucent actors and every volume sit
- * in front of it. Partly covered pixels of the volume are its tone-mapped radiance over the
- * tone-mapped environment (with EnvironmentVisible the two are tone mapped together), and the
+ * in front of it. With the mapper's EnvironmentVisible on, a partly covered pixel with only the
+ * environment behind it is the volume's radiance and the environment seen through it tone mapped
+ * together; with it off, the volume's tone-mapped radiance over the tone-mapped environment. The
  * background is bilinear in the lat-long image rather than in the octahedral map.
  */
 #ifndef vtkEnvironmentMapBackground_h
@@ -71,6 +70,7 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Width = 1024;

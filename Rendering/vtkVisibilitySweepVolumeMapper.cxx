@@ -4,6 +4,7 @@
 #include "vsDeviceEnvironment.h"
 #include "vsDeviceVolume.h"
 #include "vsEmissionAbsorptionPass.h"
+#include "vsEnvironmentBackground.h"
 #include "vsEnvironmentMap.h"
 #include "vsLightDirections.h"
 #include "vsMajorantGrid.h"
@@ -19,6 +20,7 @@
 #include "vsVisibilityGrid.h"
 #include "vsVisibilityGridUpdater.h"
 #include "shared/interpolation.h"
+#include "shared/octahedral.h"
 #include "shared/update_order.h"
 #include "vsVisibilityImage.h"
 #include "vsDisplayTransform.h"
@@ -114,6 +116,12 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   double LastRenderSeconds = 0.0;     // device seconds of the last Monte Carlo frame (the sweep budget)
   std::vector<double> ImageSignature; // what the accumulated image was rendered for
   vtkSmartPointer<vtkImageData> Radiance;
+  // The pixels of Radiance that see the environment under the coverage alpha (background.w = 2):
+  // their "Alpha" (and variance) are set to what the opaque image had, so GetRadiance() is unchanged.
+  std::vector<uint8_t> EnvironmentPixels;
+  // The environment's display colour per pixel (rgb) behind the last composited view, and what for.
+  std::vector<float> BackgroundDisplay;
+  std::vector<double> BackgroundKey;
   vtkSmartPointer<vtkImageData> VisibilityImage;
   // One accumulator per renderer (two views of one volume): MC, MCGrid, Interactive, ImageSignature
   // and Selector above are the current view's; the other views' wait here (SwitchView).
@@ -277,6 +285,67 @@ glm::dmat4 ToGlm(vtkMatrix4x4* m)
     for (int c = 0; c < 4; ++c)
       g[c][r] = m->GetElement(r, c);
   return g;
+}
+
+// What an accumulator of n samples of alpha 1 (a pixel that sees the environment in the opaque
+// image) averages to, as MonteCarloPass::Mean() computes it (the sum is n exactly), and its
+// per-sample variance as MonteCarloPass::Variance() computes it: under the coverage alpha
+// (background.w = 2) GetRadiance() reports these, as the opaque image did.
+float OpaqueMean(uint32_t n)
+{
+  if (n == 0)
+  {
+    return 0.0f;
+  }
+  const float inv = 1.0f / float(n);
+  return float(n) * inv;
+}
+
+double OpaqueVariance(uint32_t n)
+{
+  if (n < 2)
+  {
+    return 0.0;
+  }
+  const double N = n, m = OpaqueMean(n);
+  return std::max(0.0, (double(float(n)) / N - m * m) * N / (N - 1.0));
+}
+
+// The environment's display colour (rgb in [0, 1]) through the centre of each pixel of a w x h
+// image under invViewProj: bilinear between octahedral texels, as the kernel shows the environment
+// (env_radiance_display) and vtkEnvironmentMapBackground draws it, through the display transform.
+std::vector<float> EnvironmentDisplay(
+  const vs::EnvironmentMap& map, const glm::mat4& invViewProj, uint32_t w, uint32_t h, float scale, bool toneMapping)
+{
+  std::vector<float> out(size_t(w) * h * 3);
+  const glm::dmat4 inv(invViewProj);
+  const uint32_t n = uint32_t(map.Size);
+  for (uint32_t y = 0; y < h; ++y)
+  {
+    for (uint32_t x = 0; x < w; ++x)
+    {
+      const glm::dvec2 ndc((x + 0.5) / w * 2.0 - 1.0, (y + 0.5) / h * 2.0 - 1.0);
+      const glm::dvec4 pn = inv * glm::dvec4(ndc, -1.0, 1.0), pf = inv * glm::dvec4(ndc, 1.0, 1.0);
+      const glm::dvec3 d = glm::dvec3(pf) / pf.w - glm::dvec3(pn) / pn.w;
+      glm::vec3 radiance(0.0f);
+      if (glm::length(d) > 0.0)
+      {
+        const glm::vec2 uv = vs::shared::vs_dir_to_octa(glm::vec3(glm::normalize(d)));
+        for (uint32_t c = 0; c < 4u; ++c)
+        {
+          float weight = 0.0f;
+          const glm::uvec2 t = vs::shared::vs_octa_bilinear_texel(uv, n, c, weight);
+          radiance += weight * map.Texel(int(t.x), int(t.y));
+        }
+      }
+      float* o = out.data() + 3 * (size_t(y) * w + x);
+      for (int k = 0; k < 3; ++k)
+      {
+        o[k] = vs::DisplayValue(scale * radiance[k], toneMapping);
+      }
+    }
+  }
+  return out;
 }
 }
 
@@ -866,10 +935,22 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   p.dims = glm::vec4(geometry.Dims[0], geometry.Dims[1], geometry.Dims[2], 0.0f);
   auto tf = I.Scene->TF().Params();
   p.tf = glm::vec4(tf[0], tf[1], tf[2], tf[3]);
-  // The visible environment is drawn by the first VisSweep volume of the renderer's frame only; the
-  // others are transparent where empty and composite over it (vs::RendererFrame).
-  const bool showsEnvironment = this->EnvironmentVisible && vs::RendererFrame::Claim(ren, this);
-  p.background = glm::vec4(0.0f, 0.0f, 0.0f, showsEnvironment ? 1.0f : 0.0f);
+  // The visible environment. As the renderer's background (EnvironmentAsBackground, the default):
+  // the kernel's radiance includes the environment seen through the volume (GetRadiance() is the
+  // same as with the opaque image) and its alpha is the volume's coverage, with which the image is
+  // composited over what the renderer drew before it: the skybox vs::EnvironmentBackground adds
+  // at the start of the renderer's frames, and whatever VTK drew over that. In a frame without a
+  // skybox yet (the renderer's first with this volume), or with EnvironmentAsBackground off, the
+  // first VisSweep volume of the renderer's frame paints the environment with its own (opaque)
+  // image; with EnvironmentAsBackground off the others are transparent where empty (vs::RendererFrame).
+  const bool asBackground = this->GetShowsEnvironmentAsBackground();
+  if (asBackground)
+  {
+    vs::EnvironmentBackground::Observe(ren);
+  }
+  const bool behind = asBackground && vs::EnvironmentBackground::InFrame(ren);
+  const bool paints = this->EnvironmentVisible && !behind && vs::RendererFrame::Claim(ren, this);
+  p.background = glm::vec4(0.0f, 0.0f, 0.0f, asBackground ? 2.0f : paints ? 1.0f : 0.0f);
   p.viewport = glm::uvec4(w, h, 0u, static_cast<uint32_t>(this->Seed));
   // Auto: which estimator renders this frame (Environment while the grid is mostly unswept or not
   // needed; then the better one by measured efficiency).
@@ -1078,6 +1159,19 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
 
   // Keep the linear radiance; show it tone mapped.
   std::vector<float> mean = interactive || tiled ? pass->Mean() : this->CombinedMean(autoStrategy);
+  // Under the coverage alpha, the pixels that see the environment (no opaque depth in front): their
+  // alpha in the opaque image (what GetRadiance() reports, and what a painting volume shows).
+  std::vector<uint8_t> environmentPixels;
+  float opaqueAlpha = 1.0f;
+  if (asBackground)
+  {
+    environmentPixels.resize(size_t(w) * h);
+    for (size_t i = 0; i < environmentPixels.size(); ++i)
+    {
+      environmentPixels[i] = depth[i] >= 1.0f ? 1 : 0;
+    }
+    opaqueAlpha = interactive || tiled ? OpaqueMean(pass->Samples()) : this->OpaqueAlpha(autoStrategy);
+  }
   if (autoStrategy && !interactive && !tiled && spp > 0 && !emptyVolume)
   {
     double meanSquare = 0.0;
@@ -1111,16 +1205,53 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     for (vtkIdType i = 0; i < vtkIdType(w) * h; ++i)
     {
       rgb->SetTuple3(i, mean[4 * i], mean[4 * i + 1], mean[4 * i + 2]);
-      alpha->SetValue(i, mean[4 * i + 3]);
+      alpha->SetValue(i, environmentPixels.empty() || !environmentPixels[i] ? mean[4 * i + 3] : opaqueAlpha);
     }
     I.Radiance->GetPointData()->SetScalars(rgb);
     I.Radiance->GetPointData()->AddArray(alpha);
+    I.EnvironmentPixels = environmentPixels;
+  }
+  // Composited over the background: the environment's display colour behind each pixel (made again
+  // only when the view, the environment or the display transform changed).
+  const float exposure = float(this->Exposure);
+  const bool composite = asBackground && !paints;
+  if (composite)
+  {
+    const float scale = float(this->EnvironmentIntensity * this->Exposure);
+    std::vector<double> key(glm::value_ptr(p.invViewProj), glm::value_ptr(p.invViewProj) + 16);
+    key.insert(key.end(), { double(w), double(h), double(this->EnvironmentUploadCount), double(scale),
+                            this->ToneMapping ? 1.0 : 0.0 });
+    if (key != I.BackgroundKey || I.BackgroundDisplay.size() != size_t(w) * h * 3)
+    {
+      I.BackgroundDisplay = EnvironmentDisplay(*I.EnvironmentSource, p.invViewProj, w, h, scale, this->ToneMapping);
+      I.BackgroundKey = key;
+    }
   }
   std::vector<float> display(mean.size());
-  const float exposure = float(this->Exposure);
   for (size_t i = 0; i < mean.size(); i += 4)
   {
-    float a = std::clamp(mean[i + 3], 0.0f, 1.0f);
+    const size_t pixel = i / 4;
+    const bool seesEnvironment = !environmentPixels.empty() && environmentPixels[pixel];
+    if (seesEnvironment && composite)
+    {
+      // The tone-mapped full radiance F(L) (the environment seen through the volume included) over
+      // what is behind: drawn with the coverage a as C = F(L) - (1 - a) B, B the environment's
+      // display colour, so that over the skybox (which shows B) the pixel is F(L) as in the opaque
+      // image, and what VTK drew in front of the skybox shows through with the transmittance 1 - a.
+      // C is clamped at 0; it is rarely below: F(L) >= F(T L_env), and the display transform (sRGB
+      // over the filmic curve) is nearly concave with F(0) = 0, so F(T L_env) >= T F(L_env) but for
+      // noise. Where no sample met the volume (a = 0) the pixel is what is behind it.
+      const float a = std::clamp(mean[i + 3], 0.0f, 1.0f);
+      for (int c = 0; c < 3; ++c)
+      {
+        const float full = vs::DisplayValue(exposure * mean[i + c], this->ToneMapping);
+        display[i + c] = a > 0.0f ? std::max(0.0f, full - (1.0f - a) * I.BackgroundDisplay[3 * pixel + c]) : 0.0f;
+      }
+      display[i + 3] = a;
+      continue;
+    }
+    // The opaque image's alpha where this volume paints the environment; else the coverage.
+    float a = std::clamp(seesEnvironment ? opaqueAlpha : mean[i + 3], 0.0f, 1.0f);
     for (int c = 0; c < 3; ++c)
     {
       // Premultiplied: tone map the radiance of the covered part, then weigh by coverage.
@@ -1355,6 +1486,27 @@ std::vector<double> vtkVisibilitySweepVolumeMapper::CombinedVariance(bool autoSt
   return var;
 }
 
+// The alpha the opaque image's pixels that see the environment have (CombinedMean of accumulators
+// whose alpha samples are all 1).
+float vtkVisibilitySweepVolumeMapper::OpaqueAlpha(bool autoStrategy)
+{
+  Internals& I = *this->Impl;
+  const uint32_t ne = I.MC ? I.MC->Samples() : 0u;
+  const float a = OpaqueMean(ne);
+  if (!autoStrategy || !I.MCGrid || I.MCGrid->Samples() == 0)
+  {
+    return a;
+  }
+  const double ng = I.MCGrid->Samples();
+  return float((double(ne) * double(a) + ng * double(OpaqueMean(I.MCGrid->Samples()))) / (double(ne) + ng));
+}
+
+bool vtkVisibilitySweepVolumeMapper::GetShowsEnvironmentAsBackground()
+{
+  return this->EnvironmentVisible && this->EnvironmentAsBackground && this->RenderMode == MonteCarlo &&
+    !IsProjection(this->BlendMode);
+}
+
 vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)
 {
   Internals& I = *this->Impl;
@@ -1367,7 +1519,23 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)
     // Double: the variance of radiance below ~1e-19 (a dim map in physical units) is below float's range.
     try
     {
-      std::vector<double> var = this->CombinedVariance(this->SamplingStrategy == Auto);
+      const bool autoStrategy = this->SamplingStrategy == Auto;
+      std::vector<double> var = this->CombinedVariance(autoStrategy);
+      if (!I.EnvironmentPixels.empty())
+      {
+        // The alpha's variance of the opaque image where the pixel sees the environment
+        // (CombinedVariance of accumulators whose alpha samples are all 1).
+        const uint32_t ne = I.MC->Samples(), ng = autoStrategy && I.MCGrid ? I.MCGrid->Samples() : 0u;
+        const double v = ng == 0 ? OpaqueVariance(ne)
+                                 : (double(ne) * OpaqueVariance(ne) + double(ng) * OpaqueVariance(ng)) / (double(ne) + ng);
+        for (size_t i = 0; i < I.EnvironmentPixels.size() && 4 * i + 3 < var.size(); ++i)
+        {
+          if (I.EnvironmentPixels[i])
+          {
+            var[4 * i + 3] = v;
+          }
+        }
+      }
       vtkNew<vtkDoubleArray> v;
       v->SetName("Variance");
       v->SetNumberOfComponents(4);
@@ -1564,6 +1732,9 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "EnvironmentIntensity: " << this->EnvironmentIntensity << "\n";
   os << indent << "EnvironmentVisible: " << (this->EnvironmentVisible ? "On" : "Off") << "\n";
+  os << indent << "EnvironmentAsBackground: " << (this->EnvironmentAsBackground ? "On" : "Off")
+     << " (the visible environment as the renderer's background, a vtkSkybox behind everything)\n";
+  os << indent << "ShowsEnvironmentAsBackground: " << (this->GetShowsEnvironmentAsBackground() ? "Yes" : "No") << "\n";
   os << indent << "Exposure: " << this->Exposure << "\n";
   os << indent << "ToneMapping: " << (this->ToneMapping ? "On" : "Off") << "\n";
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";

@@ -275,13 +275,36 @@ public:
   ///@{
   /** Whether camera rays that leave the volume see the environment (default on); off, they are
    *  transparent and the renderer's background shows (the environment still lights the volume).
-   *  Several VisSweep volumes in one renderer: the first one drawn in the renderer's frame with
-   *  EnvironmentVisible on shows the environment; the VisSweep volumes drawn after it are
-   *  transparent where they are empty and composite over it, so all of them are seen. (A volume
-   *  drawn before it is covered: VTK draws volumes in the renderer's prop order.) */
+   *  GetRadiance() holds the full radiance either way: with it on, that of the environment seen
+   *  through the volume included. How the environment is drawn: EnvironmentAsBackground. */
   vtkSetMacro(EnvironmentVisible, bool);
   vtkGetMacro(EnvironmentVisible, bool);
   vtkBooleanMacro(EnvironmentVisible, bool);
+  ///@}
+
+  ///@{
+  /** With EnvironmentVisible on (Monte Carlo composite), show the environment the VTK way, as the
+   *  renderer's background behind everything (default on): the mapper adds an unpickable vtkSkybox
+   *  of a vtkEnvironmentMapBackground (this mapper's environment, EnvironmentIntensity, Exposure and
+   *  ToneMapping) to the renderer and removes it when no volume wants it any more; one skybox per
+   *  renderer, whatever the number of VisSweep volumes (it shows the first one's environment, in prop
+   *  order). Opaque and translucent actors, other mappers' volumes and every VisSweep volume, in any
+   *  prop order, are seen in front of it: the volume is composited over what the renderer drew
+   *  before it with its coverage (1 - transmittance). Where only the environment is behind it, a
+   *  pixel is the tone-mapped full radiance as before (environment seen through the volume included,
+   *  tone mapped together); what VTK drew between the environment and the volume shows through with
+   *  the volume's transmittance, in display space. A visible vtkSkybox of the user's in the renderer
+   *  is taken as the background (none is added). The skybox is added at the renderer's first frame
+   *  with the volume, so it is drawn from the second frame on; the first is drawn as with this off.
+   *  Off: the old way, the first VisSweep volume drawn in the renderer's frame paints the environment
+   *  with its own image, over whatever was drawn before it; the VisSweep volumes drawn after it are
+   *  transparent where empty and composite over it. */
+  vtkSetMacro(EnvironmentAsBackground, bool);
+  vtkGetMacro(EnvironmentAsBackground, bool);
+  vtkBooleanMacro(EnvironmentAsBackground, bool);
+  /** Whether this mapper shows the environment as the renderer's background now: EnvironmentVisible
+   *  and EnvironmentAsBackground on, the Monte Carlo mode and a composite blend mode. */
+  bool GetShowsEnvironmentAsBackground();
   ///@}
 
   ///@{
@@ -554,6 +577,7 @@ protected:
   double FilterAngleFraction;
   double EnvironmentIntensity = 1.0;
   bool EnvironmentVisible = true;
+  bool EnvironmentAsBackground = true;
   double Exposure = 1.0;
   bool ToneMapping = true;
   double InteractiveUpdateRate = 1.0;
@@ -605,6 +629,7 @@ private:
   uint32_t AccumulatedSamplesOf(bool autoStrategy);
   std::vector<float> CombinedMean(bool autoStrategy);
   std::vector<double> CombinedVariance(bool autoStrategy);
+  float OpaqueAlpha(bool autoStrategy);
 
   struct Internals;
   std::unique_ptr<Internals> Impl;

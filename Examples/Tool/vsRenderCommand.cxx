@@ -466,6 +466,9 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   mapper->SetDensityScale(scene.TransferFunction.DensityScale);
   mapper->SetEnvironmentIntensity(scene.Environment.Intensity);
   mapper->SetEnvironmentVisible(scene.Environment.VisibleBackground);
+  // The tool's window holds the volume alone: its PNG is the display transform of the radiance, the
+  // environment included, as the volume paints it (not the 8-bit lat-long image of a skybox).
+  mapper->SetEnvironmentAsBackground(false);
   mapper->SetExposure(scene.Render.Exposure);
   mapper->SetToneMapping(scene.Render.ToneMapping);
   mapper->SetUpdateScheme(UpdateSchemeIndex(scene.Render.UpdateScheme));

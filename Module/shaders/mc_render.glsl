@@ -9,8 +9,9 @@
  * transmittance to the box by ratio tracking, and
  *     L = albedo * (1/4pi) * T * L_env(w) / pdf(w).
  * The approximate visibility only shapes the pdf; T is the true transmittance, which
- * keeps the estimator unbiased. Escaping rays see the environment (or are transparent,
- * so VTK's background shows); rays reaching the opaque depth are transparent.
+ * keeps the estimator unbiased. Escaping rays see the environment (opaque, or with the alpha of
+ * the volume's coverage: P.background.w = 2) or are transparent, so VTK's background shows; rays
+ * reaching the opaque depth are transparent.
  * Accumulates compensated (Kahan) sums of (rgb, alpha) and their squares per pixel, and how many
  * samples they hold; one dispatch brings every pixel towards `target` samples.
  *
@@ -119,6 +120,10 @@ vec3 gBoxMin, gBoxMax, gCellSize;
 uvec4 gGrid;
 uvec4 gViewport;
 bool gBackgroundVisible;
+/* The alpha of a camera ray that escapes to the environment: 1 (P.background.w = 1, the image is
+ * opaque) or 0 (w = 2: the radiance still includes the environment seen through the volume, but the
+ * alpha is the volume's coverage, so the host can composite it over a background it draws itself). */
+float gEscapeAlpha;
 mat4 gWorldToIndex, gInvViewProj;
 vec4 gClipPlanes[VS_MAX_CLIP_PLANES == 8u ? 8 : -1]; /* main() copies 8 */
 
@@ -839,7 +844,8 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPer
     if (t0 < t1)
       camera_reservoir(o, d, t0, t1, rng, VS_TRACKING_CAP, cameraCost, tHit, albedo, T);
     scatter = tHit >= 0.0 && t0 < t1 && any(greaterThan(albedo, vec3(0.0)));
-    result = seesEnvironment ? vec4(T * env_radiance_display(dw), 1.0) : vec4(0.0, 0.0, 0.0, 1.0 - T);
+    result = seesEnvironment ? vec4(T * env_radiance_display(dw), gEscapeAlpha > 0.5 ? 1.0 : 1.0 - T)
+                             : vec4(0.0, 0.0, 0.0, 1.0 - T);
   }
   else if (t0 < t1 && delta_track(o, d, t0, t1, rng, VS_TRACKING_CAP, cameraCost, tHit, albedo))
   {
@@ -848,7 +854,7 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPer
   }
   else if (seesEnvironment)
   {
-    result = vec4(env_radiance_display(dw), 1.0);
+    result = vec4(env_radiance_display(dw), gEscapeAlpha);
   }
   if (scatter)
   {
@@ -904,6 +910,7 @@ void main()
   gGrid = P.grid;
   gViewport = P.viewport;
   gBackgroundVisible = P.background.w > 0.5;
+  gEscapeAlpha = P.background.w > 1.5 ? 0.0 : 1.0;
   gWorldToIndex = P.worldToIndex;
   gInvViewProj = P.invViewProj;
   /* Unrolled (the kernel's loops count against lavapipe's loop limiter, see the top): as many as

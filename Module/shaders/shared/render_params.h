@@ -45,7 +45,9 @@ struct VsRenderParams
   vec4 dims;         /* xyz: voxels per axis; w: the scalar of code 0 in the volume's 8-bit quads
                         (vsDeviceVolume.h, the render kernel's VS_SPEC_QUADS pipelines) */
   vec4 tf;           /* transfer-function LUT parameters (frame_params.h) */
-  vec4 background;   /* rgb: constant background; w: 1 = escaping rays see the environment, 0 = transparent */
+  vec4 background;   /* rgb: constant background; w: 1 = escaping rays see the environment (alpha 1),
+                        2 = they see it with alpha 0 (the radiance as with 1, the alpha the volume's
+                        coverage), 0 = transparent */
   uvec4 viewport;    /* width, height, index of the first sample of this frame, seed */
   uvec4 sampling;    /* x: strategy, y: samples per pixel this frame, z: cell mode, w: env finest level K */
   vec4 sampling2;    /* x: epsilon added to visibility, y: environment intensity, z: majorant brick size,
