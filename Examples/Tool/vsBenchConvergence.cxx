@@ -289,15 +289,22 @@ int Run(const Options& given)
   std::map<std::string, std::vector<Point>> results;
   for (const auto& strategy : o.Strategies)
   {
-    std::vector<Point> points;
+    std::vector<Point>& points = results[strategy];
     if (equalSpp)
       for (int spp : o.SppList)
         points.push_back({ double(spp) });
     else
       for (double b : o.Budgets)
         points.push_back({ b });
-    for (int r = 0; r < o.Repeats; ++r)
+  }
+  // Repeat by repeat, every strategy in turn: this machine's speed drifts by 10-20% over minutes
+  // (Environment sampling's samples in 4 s on mri_sunrise: 376 in one run, 292 in the next), so
+  // running all repeats of one strategy before the next would charge the drift to the strategies.
+  for (int r = 0; r < o.Repeats; ++r)
+  {
+    for (const auto& strategy : o.Strategies)
     {
+      std::vector<Point>& points = results[strategy];
       // One progressive run per repeat on a fresh mapper, its error read at every budget. The
       // sweeps happen inside the run's clock: progressively between frames (the default), or all
       // in the first frame (--blocking, and equal-spp mode, which compares the estimators with a
@@ -352,7 +359,6 @@ int Run(const Options& given)
           sweepSeconds, m->GetDirectionsUpdatedTotal(), e.Mse, m->GetEffectiveStrategyAsString());
       }
     }
-    results[strategy] = points;
   }
 
   // Report.
