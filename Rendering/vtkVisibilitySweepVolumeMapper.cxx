@@ -1346,12 +1346,10 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
   r.Schedule.StaticInterval = uint32_t(this->StaticInterval);
   r.Schedule.Seed = uint32_t(this->Seed);
   r.Progressive = this->ProgressiveVisibility;
-  // Auto spends at most AutoProbeFraction of the time on sweeps until TwoStep has shown that it
-  // wins at equal time: on a scene where it does not, the sweeps are nearly all Auto loses.
-  const double fraction = autoStrategy && !(I.Selector.GridEfficiencyRatio() > 1.0)
-    ? std::min(this->SweepFrameFraction, this->AutoProbeFraction)
-    : this->SweepFrameFraction;
-  r.BudgetSeconds = fraction * I.LastRenderSeconds;
+  // Auto invests in the grid in proportion to what TwoStep has shown it gains (StrategySelector::SweepFraction).
+  r.BudgetSeconds = (autoStrategy
+      ? I.Selector.SweepFraction(std::min(this->SweepFrameFraction, this->AutoProbeFraction), this->SweepFrameFraction)
+      : this->SweepFrameFraction) * I.LastRenderSeconds;
   // Auto stops filling in while TwoStep, measured with half of the light's directions swept, loses
   // to Environment sampling at equal time; lazy updates and invalidations still happen.
   r.FillIn = !autoStrategy || I.Selector.GridWorthSweeping();

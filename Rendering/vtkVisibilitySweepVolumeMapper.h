@@ -405,7 +405,8 @@ public:
   vtkBooleanMacro(ProgressiveVisibility, bool);
   vtkSetClampMacro(SweepFrameFraction, double, 0.0, 1000.0);
   /** Auto's sweep share of the time until TwoStep has measured more efficient than Environment
-   *  sampling (then SweepFrameFraction). Default 0.05. */
+   *  sampling; then half of the measured gain (efficiency ratio - 1), at least this and at most
+   *  SweepFrameFraction. Default 0.05. */
   vtkSetClampMacro(AutoProbeFraction, double, 0.0, 1000.0);
   vtkGetMacro(AutoProbeFraction, double);
   /** Sweep each direction texel towards where its light comes from (the environment's

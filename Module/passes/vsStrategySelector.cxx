@@ -45,6 +45,13 @@ double StrategySelector::GridEfficiencyRatio() const
   return (e.Variance * e.SecondsPerSample) / (g.Variance * g.SecondsPerSample);
 }
 
+double StrategySelector::SweepFraction(double probe, double full) const
+{
+  probe = std::min(probe, full);
+  const double ratio = this->GridEfficiencyRatio();
+  return ratio > 1.0 ? std::clamp(0.5 * (ratio - 1.0), probe, full) : probe;
+}
+
 StrategySelector::Estimator StrategySelector::Choose(bool gridReady)
 {
   if (!gridReady)

@@ -392,3 +392,22 @@ TEST(VisibilityGridUpdater, ProgressiveGridsPoolTheVolumeInSlabsFirst)
   vs::VisibilityGrid full(s.Context);
   EXPECT_EQ(updater.Grid()->Download(), s.Grid(full, r.Parameters));
 }
+
+TEST(StrategySelector, SweepsGetAShareOfTheTimeInProportionToTheGridsGain)
+{
+  StrategySelector s;
+  EXPECT_EQ(s.SweepFraction(0.05, 0.25), 0.05) << "nothing measured: the probe's share";
+  GridFramesOfLast64(s, 1.0, 1.0 / 1.1, 1.0, 1.0); // TwoStep 1.1x as efficient
+  ASSERT_NEAR(s.GridEfficiencyRatio(), 1.1, 1e-6);
+  EXPECT_NEAR(s.SweepFraction(0.05, 0.25), 0.05, 1e-9) << "half of a 10% gain";
+  StrategySelector t;
+  GridFramesOfLast64(t, 1.0, 1.0 / 1.3, 1.0, 1.0);
+  EXPECT_NEAR(t.SweepFraction(0.05, 0.25), 0.15, 1e-6);
+  StrategySelector u;
+  GridFramesOfLast64(u, 1.0, 0.3, 1.0, 1.0);
+  EXPECT_EQ(u.SweepFraction(0.05, 0.25), 0.25) << "capped at the full share";
+  StrategySelector v;
+  GridFramesOfLast64(v, 1.0, 2.0, 1.0, 1.0);
+  EXPECT_EQ(v.SweepFraction(0.05, 0.25), 0.05) << "a grid that loses gets the probe's share";
+  EXPECT_EQ(v.SweepFraction(0.4, 0.25), 0.25) << "never more than the full share";
+}
