@@ -1141,12 +1141,6 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     if (pass->LastDirectionTableSeconds() > 0.0)
     {
       this->LastDirectionTableSeconds = pass->LastDirectionTableSeconds();
-      // A table rebuilt for a grid still filling in is part of the fill-in's cost (up to 0.17 s on
-      // the 0.5 mm MRI, at every probe after a sweep): it is paid from the sweeps' allowance.
-      if (I.Grid && !tiled)
-      {
-        I.Grid->Charge(pass->LastDirectionTableSeconds());
-      }
     }
     this->DirectionTableBuildCount = int(I.Table->Builds());
     if (this->CountLookups)

@@ -95,16 +95,6 @@ public:
   bool IsComplete() const { return this->Grid() && this->PendingDirections() == 0; }
   /** Bumped by every full invalidation (a new grid that starts at visibility 1). */
   uint64_t Generation() const { return this->Generation_; }
-  /** Progressive: a cost of the grid paid outside the sweeps (the renderer's direction table,
-   *  rebuilt for a grid that changed) counts against the sweeps' allowance, so that the grid's
-   *  whole cost stays within the share of the time granted to it. */
-  void Charge(double seconds)
-  {
-    if (seconds > 0.0 && this->PendingDirections() > 0)
-    {
-      this->Allowance_ -= seconds;
-    }
-  }
   /** Estimated device seconds of one direction's sweep (0 before the first sweep). */
   double SecondsPerDirection() const { return this->SecondsPerDirection_; }
   const VisibilityUpdateScheduler& Scheduler() const { return this->Scheduler_; }

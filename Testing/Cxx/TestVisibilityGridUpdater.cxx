@@ -411,25 +411,3 @@ TEST(StrategySelector, SweepsGetAShareOfTheTimeInProportionToTheGridsGain)
   EXPECT_EQ(v.SweepFraction(0.05, 0.25), 0.05) << "a grid that loses gets the probe's share";
   EXPECT_EQ(v.SweepFraction(0.4, 0.25), 0.25) << "never more than the full share";
 }
-
-// Costs of a filling grid paid outside the sweeps (the renderer's direction table) count against
-// the sweeps' allowance; a complete grid has no allowance to charge.
-TEST(VisibilityGridUpdater, ChargedCostsDelayTheNextSweeps)
-{
-  VisibilityScene s = Slab();
-  GridUpdateRequest r = Request(s, std::vector<float>(16, 1.0f));
-  r.Parameters.ExtinctionPooling = 1; // no pooled volume: the first call after the new grid sweeps
-  VisibilityGridUpdater charged(s.Context), uncharged(s.Context);
-  r.BudgetSeconds = 1e-12;
-  for (VisibilityGridUpdater* u : { &charged, &uncharged })
-  {
-    u->Update(*s.Volume, *s.TF, *s.Majorants, r);
-    ASSERT_EQ(u->Update(*s.Volume, *s.TF, *s.Majorants, r).DirectionsSwept, 1u);
-  }
-  // The same grant to both, enough for several directions; 10 s of table builds charged to one.
-  charged.Charge(10.0);
-  r.BudgetSeconds = 20.0 * std::max(charged.SecondsPerDirection(), uncharged.SecondsPerDirection());
-  EXPECT_GT(uncharged.Update(*s.Volume, *s.TF, *s.Majorants, r).DirectionsSwept, 1u);
-  EXPECT_EQ(charged.Update(*s.Volume, *s.TF, *s.Majorants, r).DirectionsSwept, 0u)
-    << "10 s charged: the same grant sweeps nothing";
-}
