@@ -173,15 +173,6 @@ bool SameArray(vtkImageData* a, vtkImageData* b, const char* name)
   return true;
 }
 
-int MaxDifference(const std::vector<int>& a, const std::vector<int>& b)
-{
-  int d = 0;
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
-  {
-    d = std::max(d, std::abs(a[i] - b[i]));
-  }
-  return d;
-}
 }
 
 int TestMapperEnvironmentBackground(int, char*[])
@@ -230,7 +221,7 @@ int TestMapperEnvironmentBackground(int, char*[])
   const std::vector<int> skyNow = scene.At(darker, 9.5, 9.5, 35.0), skyExpected = fresh.At(expected, 9.5, 9.5, 35.0);
   std::cout << "sky after the exposure change " << skyNow[0] << " " << skyNow[1] << " " << skyNow[2] << " (expected "
             << skyExpected[0] << " " << skyExpected[1] << " " << skyExpected[2] << ")\n";
-  Check(MaxDifference(skyNow, skyExpected) <= 1, "the skybox follows the exposure at once");
+  Check(vstest::MaxAbsoluteDifference(skyNow, skyExpected) <= 1, "the skybox follows the exposure at once");
 
   // A tiled screenshot is the window, magnified (each 2x2 block against its pixel).
   const std::vector<int> window = vstest::WindowPixels(scene.Window), tiled = vstest::WindowPixels(scene.Window, 2);

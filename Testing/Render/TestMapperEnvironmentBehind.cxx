@@ -172,15 +172,6 @@ std::vector<int> At(const std::vector<int>& p, const int xy[2])
   return { p[i], p[i + 1], p[i + 2] };
 }
 
-int MaxDifference(const std::vector<int>& a, const std::vector<int>& b)
-{
-  int d = 0;
-  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
-  {
-    d = std::max(d, std::abs(a[i] - b[i]));
-  }
-  return d;
-}
 }
 
 int TestMapperEnvironmentBehind(int, char*[])
@@ -202,11 +193,11 @@ int TestMapperEnvironmentBehind(int, char*[])
   print("volume showing the environment", At(a, shows), At(b, shows));
   const double mean = vstest::MeanAbsoluteDifference(a, b);
   std::cout << "window against the opt-in skybox: mean " << mean << "/255\n";
-  Check(MaxDifference(At(a, sphere), At(b, sphere)) <= 3, "the translucent sphere is seen over the environment");
-  Check(MaxDifference(At(a, before), At(b, before)) <= 3, "the volume drawn before is seen");
+  Check(vstest::MaxAbsoluteDifference(At(a, sphere), At(b, sphere)) <= 3, "the translucent sphere is seen over the environment");
+  Check(vstest::MaxAbsoluteDifference(At(a, before), At(b, before)) <= 3, "the volume drawn before is seen");
 #ifdef VISSWEEP_TEST_GPU_VOLUME
   print("vtkGPUVolumeRayCastMapper volume", At(a, vtk), At(b, vtk));
-  Check(MaxDifference(At(a, vtk), At(b, vtk)) <= 3, "VTK's own volume is seen");
+  Check(vstest::MaxAbsoluteDifference(At(a, vtk), At(b, vtk)) <= 3, "VTK's own volume is seen");
 #else
   (void)vtk;
   std::cout << "this VTK has no RenderingVolumeOpenGL2: vtkGPUVolumeRayCastMapper not tried\n";

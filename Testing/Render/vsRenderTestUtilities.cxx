@@ -118,6 +118,20 @@ double MeanAbsoluteDifference(const std::vector<int>& a, const std::vector<int>&
   return sum / double(a.size());
 }
 
+int MaxAbsoluteDifference(const std::vector<int>& a, const std::vector<int>& b)
+{
+  if (a.size() != b.size() || a.empty())
+  {
+    return 1000000000;
+  }
+  int d = 0;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    d = std::max(d, std::abs(a[i] - b[i]));
+  }
+  return d;
+}
+
 vtkSmartPointer<vtkImageData> ReadBrain(const std::string& path)
 {
   vtkNew<vtkNIFTIImageReader> reader;

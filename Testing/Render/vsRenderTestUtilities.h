@@ -38,6 +38,8 @@ std::vector<int> WindowPixels(vtkRenderWindow* win, int scale = 1);
 
 /** Mean |a - b| over the values of two pixel lists, 1e9 when their sizes differ or they are empty. */
 double MeanAbsoluteDifference(const std::vector<int>& a, const std::vector<int>& b);
+/** Largest |a - b| over the values of two pixel lists, 1e9 when their sizes differ or they are empty. */
+int MaxAbsoluteDifference(const std::vector<int>& a, const std::vector<int>& b);
 
 /** Soft assertions of the counter-and-image tests: Check() prints "FAILED: what" to stderr
  *  and counts it; a test returns ExitCode() (EXIT_FAILURE after any failed check). One test
