@@ -196,14 +196,21 @@ double PooledExtinction::Advance(const DeviceVolume& volume, const TransferFunct
   double spent = 0.0;
   if (this->NextSlice_ < slices)
   {
-    // Slabs while their estimated time fits the budget (at least one); everything when unbounded.
+    // Slabs while their estimated time fits the budget; everything when unbounded. The first slab
+    // is built whatever the budget (its cost is unknown until then); after it, a budget smaller
+    // than a slab builds nothing and the caller's allowance grows until one fits. (At least a slab
+    // per call made Auto's 5% share 11% of the first second on the 0.5 mm MRI at 256^2: a slab of
+    // 10-20 ms after every 55 ms frame.)
     uint32_t count = slices - this->NextSlice_;
     if (std::isfinite(budgetSeconds))
     {
-      const double per = this->SecondsPerSlice_ > 0.0 ? this->SecondsPerSlice_ : 0.0;
-      const double fit = per > 0.0 ? std::max(0.0, budgetSeconds) / per : 0.0;
-      count = std::min(std::max(uint32_t(std::min<double>(fit, slices)) / SlabSlices * SlabSlices, SlabSlices),
-        slices - this->NextSlice_);
+      const double per = this->SecondsPerSlice_;
+      const uint32_t fit = per > 0.0 ? uint32_t(std::min<double>(std::max(0.0, budgetSeconds) / per, slices)) : SlabSlices;
+      count = std::min(fit / SlabSlices * SlabSlices, slices - this->NextSlice_);
+      if (count == 0)
+      {
+        return 0.0;
+      }
     }
     const uint32_t z0 = this->NextSlice_, z1 = z0 + count;
     const double seconds = this->PoolSlices(volume, tf, z0, z1);

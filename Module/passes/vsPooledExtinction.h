@@ -50,7 +50,8 @@ public:
   double Ensure(const DeviceVolume& volume, const TransferFunctionTable& tf, const MajorantGrid& majorants,
     const Settings& settings);
   /** Builds the next slabs of pooled slices while their estimated device time (from the slabs
-   *  before) fits budgetSeconds, at least one slab per call, and the occupancy after the last;
+   *  before) fits budgetSeconds (the first slab whatever the budget, to learn its cost; later calls with less
+   *  than a slab's estimated time build nothing), and the occupancy after the last;
    *  returns the device seconds spent (0 when current). New inputs restart the build. */
   double Advance(const DeviceVolume& volume, const TransferFunctionTable& tf, const MajorantGrid& majorants,
     const Settings& settings, double budgetSeconds);

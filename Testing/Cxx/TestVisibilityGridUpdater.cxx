@@ -373,16 +373,21 @@ TEST(VisibilityGridUpdater, ProgressiveGridsPoolTheVolumeInSlabsFirst)
   ASSERT_EQ(GridUpdateRequest().Parameters.PoolingFactor(), 2u);
   VisibilityGridUpdater updater(s.Context);
   GridUpdateRequest r = Request(s, std::vector<float>(16, 1.0f));
-  r.BudgetSeconds = 1e-12; // at least a slab per call, no direction while the pool is incomplete
+  r.BudgetSeconds = 1e-12; // no direction while the pool is incomplete
   EXPECT_TRUE(updater.Update(*s.Volume, *s.TF, *s.Majorants, r).NewGrid);
   const auto first = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
   EXPECT_EQ(first.DirectionsSwept, 0u);
-  EXPECT_GT(first.Seconds, 0.0) << "the first slab's time counts as the sweeps'";
+  EXPECT_GT(first.Seconds, 0.0) << "the first slab, whatever the budget: its time counts as the sweeps'";
   EXPECT_EQ(updater.Grid()->PoolBuilds(), 0u);
+  const auto stalled = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
+  EXPECT_EQ(stalled.Seconds, 0.0) << "a budget below a slab's cost builds nothing: the sweeps keep to their share";
+  EXPECT_EQ(updater.Grid()->PoolBuilds(), 0u);
+  r.BudgetSeconds = 3.0 * first.Seconds; // pays the first slab's debt and one more slab
   const auto second = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
   EXPECT_EQ(updater.Grid()->PoolBuilds(), 1u);
   EXPECT_EQ(second.DirectionsSwept, 1u) << "the first direction once the pool is built: it measures a direction's cost";
   EXPECT_GT(updater.SecondsPerDirection(), 0.0);
+  r.BudgetSeconds = 1e-12;
   EXPECT_EQ(updater.Update(*s.Volume, *s.TF, *s.Majorants, r).DirectionsSwept, 0u)
     << "then the debt: no allowance for the next";
   r.BudgetSeconds = 1e6;
