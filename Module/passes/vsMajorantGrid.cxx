@@ -4,6 +4,7 @@
 #include "vsContext.h"
 #include "vsDeviceVolume.h"
 #include "vsEmptySpaceDistance.h"
+#include "vsExtinctionRangeQuery.h"
 #include "vsError.h"
 #include "vsImage.h"
 #include "vsPipeline.h"
@@ -208,14 +209,15 @@ void MajorantGrid::UpdateMajorants(const TransferFunctionSamples& tf)
   const size_t count = this->Ranges_.size() / 4;
   this->Majorants_.assign(count, 0.0f);
   this->Controls_.assign(count, 0.0f);
+  const ExtinctionRangeQuery extinction(tf);
   for (size_t i = 0; i < count; ++i)
   {
     float lo = this->Ranges_[4 * i], hi = this->Ranges_[4 * i + 1];
     const bool gap = this->Ranges_[4 * i + 2] != 0.0f; // a non-finite voxel: empty samples
     if (lo <= hi)
     {
-      this->Majorants_[i] = tf.MaxExtinction(lo, hi);
-      this->Controls_[i] = gap ? 0.0f : std::min(tf.MinExtinction(lo, hi), this->Majorants_[i]);
+      this->Majorants_[i] = extinction.Max(lo, hi);
+      this->Controls_[i] = gap ? 0.0f : std::min(extinction.Min(lo, hi), this->Majorants_[i]);
       if (!this->FactorRanges_.empty())
       {
         // Float products round monotonically: sigma <= max sigma and g <= max g give

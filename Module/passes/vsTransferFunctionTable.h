@@ -53,7 +53,6 @@ struct VISSWEEPCORE_EXPORT TransferFunctionSamples
   /** L: the levels of that table, including level 0. */
   uint32_t RangeMaxLevelCount() const;
 
-private:
   /** The entries [i0, i1] the linear interpolant reads for scalars in [s0, s1]. */
   std::pair<size_t, size_t> EntrySpan(float s0, float s1) const;
 };
