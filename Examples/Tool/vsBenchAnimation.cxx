@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -32,6 +33,7 @@ struct AnimationOptions
   std::string Frames;
   double Budget = 2.0;
   int ReferenceSpp = 1024;
+  int Repeats = 1;
   int Width = 0;
   int Height = 0;
   std::string Json;
@@ -49,7 +51,7 @@ const std::vector<Method>& Methods()
 {
   static const std::vector<Method> methods{ { "full", "full", "two-step" }, { "round-robin", "round-robin", "two-step" },
     { "environment-guided", "environment-guided", "two-step" }, { "static", "static", "two-step" },
-    { "environment (no sweeps)", "full", "environment" } };
+    { "environment (no sweeps)", "full", "environment" }, { "auto (round-robin)", "round-robin", "auto" } };
   return methods;
 }
 
@@ -112,8 +114,9 @@ std::vector<std::vector<double>> References(Scene scene, FrameRange range, int s
 // rendered once untimed: it computes every direction for every method (and creates the
 // pipelines), so the timed steps all start from a complete grid of the step before.
 nlohmann::json RunMethod(Scene scene, const Method& m, FrameRange range, double budget,
-  const std::vector<std::vector<double>>& refs)
+  const std::vector<std::vector<double>>& refs, int repeat)
 {
+  scene.Render.Seed = scene.Render.Seed + repeat;
   scene.Render.Strategy = m.Strategy;
   scene.Render.UpdateScheme = m.Scheme;
   scene.Volume.TimeStep = range.First;
@@ -148,13 +151,13 @@ nlohmann::json RunMethod(Scene scene, const Method& m, FrameRange range, double 
 
 void PrintTable(const nlohmann::json& methods, size_t frames)
 {
-  std::printf("\n%-24s %12s %12s %12s %14s %9s\n", "method", "mean MSE", "first MSE", "last MSE",
+  std::printf("\n%-24s %12s %10s %12s %12s %14s %9s\n", "method", "mean MSE", "(spread)", "first MSE", "last MSE",
     "update s/frame", "mean spp");
   for (const auto& m : methods)
   {
-    std::printf("%-24s %12.4g %12.4g %12.4g %14.4f %9.1f\n", m["method"].get<std::string>().c_str(),
-      m["mean_mse"].get<double>(), m["mean_mse_first"].get<double>(), m["mean_mse_last"].get<double>(),
-      m["mean_update_seconds"].get<double>(), m["mean_spp"].get<double>());
+    std::printf("%-24s %12.4g %10.2g %12.4g %12.4g %14.4f %9.1f\n", m["method"].get<std::string>().c_str(),
+      m["mean_mse"].get<double>(), m["mean_mse_spread"].get<double>(), m["mean_mse_first"].get<double>(),
+      m["mean_mse_last"].get<double>(), m["mean_update_seconds"].get<double>(), m["mean_spp"].get<double>());
   }
   std::printf("(timed steps after the first, which computes the full grid untimed; first/last: the first and "
               "last %zu of %zu timed steps)\n",
@@ -188,12 +191,47 @@ int Run(const AnimationOptions& o)
   std::printf("%s: steps %d..%d, %dx%d, %.2f s per frame (update + render), references %d spp\n",
     o.SceneFile.c_str(), range.First, range.Last, scene.Render.Width, scene.Render.Height, o.Budget, o.ReferenceSpp);
   const auto refs = References(scene, range, o.ReferenceSpp);
-  nlohmann::json methods = nlohmann::json::array();
-  for (const Method& m : Methods())
+  // Repeat by repeat (each with its own seed), every method in turn: this machine's speed drifts
+  // over minutes, and running all repeats of one method before the next would charge the drift
+  // to the methods. A method's figures are the means over its repeats (spread: their standard
+  // deviation); its per-frame figures are those of the first repeat.
+  std::vector<std::vector<nlohmann::json>> runs(Methods().size());
+  for (int r = 0; r < o.Repeats; ++r)
   {
-    methods.push_back(RunMethod(scene, m, range, o.Budget, refs));
-    std::printf("%s: mean MSE %.4g\n", m.Name.c_str(), methods.back()["mean_mse"].get<double>());
-    std::fflush(stdout);
+    for (size_t i = 0; i < Methods().size(); ++i)
+    {
+      const Method& m = Methods()[i];
+      runs[i].push_back(RunMethod(scene, m, range, o.Budget, refs, r));
+      std::printf("%s, repeat %d: mean MSE %.4g\n", m.Name.c_str(), r, runs[i].back()["mean_mse"].get<double>());
+      std::fflush(stdout);
+    }
+  }
+  nlohmann::json methods = nlohmann::json::array();
+  for (const auto& repeats : runs)
+  {
+    nlohmann::json m = repeats.front();
+    for (const char* key : { "mean_mse", "mean_mse_first", "mean_mse_last", "mean_update_seconds", "mean_spp" })
+    {
+      std::vector<double> v;
+      for (const auto& run : repeats)
+      {
+        v.push_back(run[key].get<double>());
+      }
+      const double mean = MeanOf(v, 0, v.size());
+      double var = 0.0;
+      for (double x : v)
+      {
+        var += (x - mean) * (x - mean);
+      }
+      m[key] = mean;
+      m[std::string(key) + "_repeats"] = v;
+      if (std::string(key) == "mean_mse")
+      {
+        m["mean_mse_spread"] = v.size() > 1 ? std::sqrt(var / double(v.size() - 1)) : 0.0;
+      }
+    }
+    m["repeats"] = repeats.size();
+    methods.push_back(m);
   }
   PrintTable(methods, size_t(range.Last - range.First));
   if (!o.Json.empty() || !o.Plot.empty())
@@ -232,6 +270,8 @@ void AddBenchAnimation(CLI::App& bench)
     ->check(CLI::PositiveNumber);
   cmd->add_option("--reference-spp", o->ReferenceSpp, "samples per pixel of the per-frame references (default 1024)")
     ->check(CLI::Range(1, 1 << 24));
+  cmd->add_option("--repeats", o->Repeats, "runs of every method, each with its own seed, interleaved (default 1)")
+    ->check(CLI::Range(1, 100));
   cmd->add_option("--width", o->Width, "image width (overrides the scene)")->check(CLI::Range(1, 16384));
   cmd->add_option("--height", o->Height, "image height (overrides the scene)")->check(CLI::Range(1, 16384));
   cmd->add_option("--json", o->Json, "write per-frame and summary figures as JSON");
