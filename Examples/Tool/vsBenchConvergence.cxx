@@ -44,6 +44,7 @@ struct Options
   std::vector<double> Budgets{ 1, 2, 4, 8, 16 };
   std::vector<int> SppList;
   bool Quick = false;
+  double MaxFrameSeconds = 0.25; // equal time: a frame's samples at most this long, as in a window
   bool Blocking = false; // equal time: sweep the whole grid before the first sample (no progressive fill-in)
 };
 
@@ -333,15 +334,19 @@ int Run(const Options& given)
         }
         else
         {
-          // Frames of a size that lands close to the budget.
+          // Frames of a size that lands close to the budget, and no longer than MaxFrameSeconds:
+          // a user's window adds a sample or a few per frame, and the progressive sweeps and
+          // Auto's choices happen between frames (frames of up to 64 samples, 2.8 s each at 256²,
+          // left Auto a handful of frames to sweep and choose in over 16 s).
           while (elapsed() < p.Budget)
           {
             // The run's first frame is one sample: its time is the first estimate of a sample's
             // cost (before it, the sample count is still the warm-up's).
             const int acc = frames == 0 ? 0 : m->GetAccumulatedSamples();
-            const double perSample = elapsed() / std::max(1, acc);
-            const int left = int((p.Budget - elapsed()) / std::max(perSample, 1e-6));
-            m->SetSamplesPerFrame(acc == 0 ? 1 : std::clamp(left / 2, 1, 64));
+            const double perSample = std::max(elapsed() / std::max(1, acc), 1e-6);
+            const int left = int((p.Budget - elapsed()) / perSample);
+            const int cap = std::max(1, int(o.MaxFrameSeconds / perSample));
+            m->SetSamplesPerFrame(acc == 0 ? 1 : std::clamp(left / 2, 1, std::min(64, cap)));
             frame();
           }
         }
@@ -371,6 +376,7 @@ int Run(const Options& given)
   report["width"] = o.Width;
   report["height"] = o.Height;
   report["mode"] = equalSpp ? "equal-spp" : "equal-time";
+  report["max_frame_seconds"] = o.MaxFrameSeconds;
   report["repeats"] = o.Repeats;
   report["reference"] = { { "file", referencePath }, { "spp", o.ReferenceSpp }, { "strategy", o.ReferenceStrategy },
     { "mean", refMean }, { "noise_floor_mse", noiseFloor } };
@@ -456,6 +462,10 @@ void AddBenchConvergence(CLI::App& bench)
   cmd->add_option("--json", o->Json, "write the figures as JSON");
   cmd->add_option("--csv", o->Csv, "write the figures as CSV");
   cmd->add_option("--plot", o->Plot, "draw error against time (log-log) to this PNG (matplotlib)");
+  cmd->add_option("--max-frame-seconds", o->MaxFrameSeconds,
+      "equal time: the longest a frame's samples may take (default 0.25 s, as in a window)")
+    ->check(CLI::PositiveNumber)
+    ->check(FiniteNumber());
   cmd->add_flag("--blocking", o->Blocking,
     "equal time: sweep the whole grid in each run's first frame instead of progressively between frames");
   cmd->add_flag("--quick", o->Quick, "32 x 32, budgets 0.5 and 1 s, one repeat, a 64-spp reference (for tests)");
