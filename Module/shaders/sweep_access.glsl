@@ -113,7 +113,7 @@ float vs_extinction(vec3 p)
     if (dot(G.clipPlanes[i].xyz, p) + G.clipPlanes[i].w < 0.0)
       return 0.0;
   }
-  float e = vs_classify(vs_sample(p, gDims, gInterpolation), gTF).w;
+  float e = vs_classify_extinction(vs_sample(p, gDims, gInterpolation), gTF);
   if (VS_SWEEP_FACTOR == 1u)
     e *= vs_sample_factor(p, gDims, gInterpolation);
   return e;

@@ -52,7 +52,7 @@ void main()
         // weight 0 (the block's voxels inside the volume only), the max is unchanged.
         ivec3 v = lo + ivec3(x, y, z);
         ivec3 c = min(v, last);
-        float e = vs_classify(imageLoad(uVolume, c).r, pc.tf).w;
+        float e = vs_classify_extinction(imageLoad(uVolume, c).r, pc.tf);
         if (VS_POOL_FACTOR == 1u)
           e *= imageLoad(uFactor, c).r;
         if (VS_POOL_CROP == 1u)
