@@ -17,6 +17,7 @@
 #include "vsVoxelPicker.h"
 #include "vsRenderTargetLimits.h"
 #include "vsStrategySelector.h"
+#include "vsSweepPlan.h"
 #include "vsVisibilityGrid.h"
 #include "vsVisibilityGridUpdater.h"
 #include "shared/interpolation.h"
@@ -1319,8 +1320,9 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
     return;
   }
   vs::GridUpdateRequest& r = I.LastGridRequest;
-  r.Parameters = GridParameters(
-    this->DirectionResolution, this->VoxelsPerCell, this->KernelResolution, this->Filtering, this->FilterAngleFraction);
+  r.Parameters = GridParameters(this->DirectionResolution,
+    this->VoxelsPerCell > 0.0 ? std::max(1.0, this->VoxelsPerCell) : vs::SweepPlan::AutomaticVoxelsPerCell(I.GridGeometry),
+    this->KernelResolution, this->Filtering, this->FilterAngleFraction);
   r.Parameters.NearestInterpolation = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
   r.Parameters.ExtinctionPooling = uint32_t(this->ExtinctionPooling);
   r.Geometry = I.GridGeometry;

@@ -235,14 +235,15 @@ public:
   ///@{
   /** Visibility grid: directions per side (2, 4, 8 or 16, default 8: the renderer's direction
    *  map holds 256 values; other values are refused with an error and the setting is kept),
-   *  voxels per cell (1 to 256, default 4),
+   *  voxels per cell (1 to 256; 0, the default, is automatic: 4, or 1/56 of the volume's longest
+   *  axis when coarser, vs::SweepPlan::AutomaticVoxelsPerCell),
    *  kernel rays (0 = automatic: 1.25 per cell of the longest axis, 2 to 128, coarser than
    *  vtkVisibilityGridFilter's one ray per voxel: the render error is the same at equal spp and
    *  the sweeps are 2.5-6x faster, docs/benchmarks.md), sweep-space filtering (default on) and
    *  its beta/alpha. */
   virtual void SetDirectionResolution(int resolution);
   vtkGetMacro(DirectionResolution, int);
-  vtkSetClampMacro(VoxelsPerCell, double, 1.0, 256.0);
+  vtkSetClampMacro(VoxelsPerCell, double, 0.0, 256.0);
   vtkGetMacro(VoxelsPerCell, double);
   vtkSetClampMacro(KernelResolution, int, 0, 1 << 14);
   vtkGetMacro(KernelResolution, int);
@@ -571,7 +572,7 @@ protected:
   int MaximumSamples = 4096;
   double VisibilityEpsilon = 0.01;
   int DirectionResolution = 8;
-  double VoxelsPerCell = 4.0;
+  double VoxelsPerCell = 0.0; // automatic
   int KernelResolution = 0;
   int ExtinctionPooling = 0;
   bool Filtering = true;

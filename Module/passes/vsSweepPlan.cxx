@@ -83,6 +83,16 @@ double SweepPlan::CellOpeningAngle(uint32_t side)
   return 2.0 * std::acos(std::max(-1.0, 1.0 - omega / (2.0 * M_PI)));
 }
 
+double SweepPlan::AutomaticVoxelsPerCell(const VolumeGeometry& g)
+{
+  double longest = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    longest = std::max(longest, double(g.BoxMax[i]) - double(g.BoxMin[i]));
+  }
+  return std::max(MinAutoVoxelsPerCell, longest / AutoCellsPerAxis);
+}
+
 std::array<uint32_t, 3> SweepPlan::CellCount(
   const VolumeGeometry& g, double voxelsPerCell, uint32_t side, uint32_t maxImageSide)
 {

@@ -274,6 +274,25 @@ TEST(VisibilityGrid, CellsGrowToFitTheDevice)
   EXPECT_EQ(vs::SweepPlan::CellCount(g, p.VoxelsPerCell, p.DirectionResolution)[0], 4095u);
 }
 
+// The renderer's automatic cell size: 4 voxels up to 224 voxels along the longest axis (ch2 keeps
+// its 54 cells), then AutoCellsPerAxis cells along it (ch2better: 56 instead of 93), whatever the
+// other axes.
+TEST(VisibilityGrid, AutomaticCellsFollowTheLongestAxis)
+{
+  using vs::SweepPlan;
+  const auto cellsOf = [](std::array<uint32_t, 3> dims) {
+    const auto g = vs::VolumeGeometry::Axis(dims);
+    return SweepPlan::CellCount(g, SweepPlan::AutomaticVoxelsPerCell(g), 8);
+  };
+  EXPECT_EQ(SweepPlan::AutomaticVoxelsPerCell(vs::VolumeGeometry::Axis({ { 181, 217, 181 } })), 4.0);
+  EXPECT_EQ(cellsOf({ { 181, 217, 181 } }), (std::array<uint32_t, 3>{ { 45, 54, 45 } }));
+  EXPECT_EQ(SweepPlan::AutomaticVoxelsPerCell(vs::VolumeGeometry::Axis({ { 16, 16, 16 } })), 4.0);
+  EXPECT_EQ(SweepPlan::AutomaticVoxelsPerCell(vs::VolumeGeometry::Axis({ { 225, 2, 2 } })), 4.0);
+  EXPECT_DOUBLE_EQ(SweepPlan::AutomaticVoxelsPerCell(vs::VolumeGeometry::Axis({ { 301, 370, 316 } })), 369.0 / 56.0);
+  EXPECT_EQ(cellsOf({ { 301, 370, 316 } }), (std::array<uint32_t, 3>{ { 46, 56, 48 } }));
+  EXPECT_EQ(cellsOf({ { 2, 2, 1000 } })[2], 56u);
+}
+
 // The automatic kernel: one ray per voxel of the longest axis for an accurate grid (the filters),
 // RendererKernelRaysPerCell per cell of the longest axis for the renderer's; 2 to 128 rays along
 // the longer side of every direction's kernel.

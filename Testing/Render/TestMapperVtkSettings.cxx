@@ -204,8 +204,9 @@ int TestMapperVtkSettings(int, char*[])
     m->SetDirectionResolution(d);
     Check(m->GetDirectionResolution() == d, "DirectionResolution " + std::to_string(d) + " is accepted");
   }
-  m->SetVoxelsPerCell(0.0);
-  Check(m->GetVoxelsPerCell() == 1.0, "VoxelsPerCell is clamped to at least 1");
+  Check(vtkNew<vtkVisibilitySweepVolumeMapper>()->GetVoxelsPerCell() == 0.0, "VoxelsPerCell is automatic (0) by default");
+  m->SetVoxelsPerCell(-3.0);
+  Check(m->GetVoxelsPerCell() == 0.0, "VoxelsPerCell is clamped to at least 0 (automatic)");
   m->SetVoxelsPerCell(1e9);
   Check(m->GetVoxelsPerCell() == 256.0, "VoxelsPerCell is clamped to at most 256");
   m->SetVoxelsPerCell(4.0);
