@@ -51,7 +51,7 @@ struct RenderOptions
   double TimeBudget = 0.0;
   std::string Strategy;
   int Seed = -1;
-  int SamplesPerFrame = 1;
+  int SamplesPerFrame = 0; // 0: frames of about AutoFrameSeconds
   std::string Json;
   bool Quiet = false;
   std::string Frames; // "A:B": a time range of a volume sequence (vsRenderFrames.h)
@@ -74,8 +74,11 @@ struct ProgressiveResult
 nlohmann::json DeviceJson();
 /** Reads the scene file and applies the command line's overrides (size, spp, strategy, seed). */
 Scene LoadScene(const RenderOptions& options);
-/** Renders until `target` spp (or `timeBudget` seconds when > 0); throws std::runtime_error on
- *  a render error or when no samples accumulate. */
+/** The length of an automatic progressive frame (about two progress-bar updates a second). */
+constexpr double AutoFrameSeconds = 0.5;
+/** Renders until `target` spp (or `timeBudget` seconds when > 0), `samplesPerFrame` per frame, or
+ *  with 0 as many as take about AutoFrameSeconds (the first frame one); throws
+ *  std::runtime_error on a render error or when no samples accumulate. */
 ProgressiveResult RenderProgressively(
   SceneObjects& objects, int target, int samplesPerFrame, double timeBudget, bool progressBar);
 /** Writes the outputs (.exr: the radiance, .png: the window) under temporary names; commit them. */

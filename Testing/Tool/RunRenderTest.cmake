@@ -5,6 +5,7 @@
 #   budget: -DSCENE=<json>          --time-budget instead of --spp
 #   bad:    -DSCENE=<json> -DEXPECT=<text> [-DEXTRA=<args;...>] [-DMKDIRS=<names>]  exit code 2,
 #           message, no output
+#   split:  -DSCENE=<json>          24 spp with one sample per frame and with automatic frames: same EXR
 #   frames: -DSCENE=<json> (a 3-step sequence, round-robin)  --frames 0:2 to numbered EXR + PNG,
 #           per-frame stats: 64 directions swept for the first step, 4 for each later one
 cmake_minimum_required(VERSION 3.19)
@@ -24,6 +25,35 @@ function(check_no_leftovers)
     message(FATAL_ERROR "temporary files left behind: ${left}")
   endif ()
 endfunction()
+
+if (MODE STREQUAL "split")
+  # Automatic frames (the default) against one sample per frame: the same image bit for bit (a
+  # fixed seed gives the same image for any frame split) in fewer frames.
+  foreach (spf IN ITEMS 1 0)
+    execute_process(
+      COMMAND "${VISSWEEP}" render "${SCENE}" -o "${OUT_DIR}/spf${spf}.exr" --width 32 --height 32 --spp 24 --seed 3
+        --strategy environment --samples-per-frame ${spf} --json "${OUT_DIR}/spf${spf}.json"
+      RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if (NOT rc EQUAL 0)
+      message(FATAL_ERROR "vissweep render --samples-per-frame ${spf} failed (${rc}): ${err}")
+    endif ()
+    file(SHA256 "${OUT_DIR}/spf${spf}.exr" hash${spf})
+    file(READ "${OUT_DIR}/spf${spf}.json" json)
+    string(JSON frames${spf} GET "${json}" frames)
+    string(JSON spp${spf} GET "${json}" spp)
+  endforeach ()
+  if (NOT spp1 EQUAL 24 OR NOT spp0 EQUAL 24)
+    message(FATAL_ERROR "spp ${spp1} and ${spp0}, expected 24")
+  endif ()
+  if (NOT frames1 EQUAL 24 OR NOT frames0 LESS 24)
+    message(FATAL_ERROR "frames: ${frames1} with one sample per frame (expected 24), ${frames0} automatic (expected fewer)")
+  endif ()
+  if (NOT hash1 STREQUAL hash0)
+    message(FATAL_ERROR "the automatic frames changed the image")
+  endif ()
+  message(STATUS "24 spp in ${frames0} automatic frames, the same image as in 24 frames of one sample")
+  return()
+endif ()
 
 if (MODE STREQUAL "good" OR MODE STREQUAL "budget")
   if (MODE STREQUAL "good")
