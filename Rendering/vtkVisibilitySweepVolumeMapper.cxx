@@ -803,6 +803,7 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkVolumeProperty* property, v
       ? vs::shared::VS_INTERPOLATION_NEAREST
       : vs::shared::VS_INTERPOLATION_LINEAR);
   p.mixture.x = float(this->DefensiveWeight);
+  p.mixture.y = float(this->TransmittanceEstimator);
   p.crop.w = vs::HasEffectiveGradientOpacity(property) ? 1u : 0u; // the kernel's factor volume
   // A pass of its own: the pipeline lands in the context's cache, where the view's pass finds it
   // (waiting for it if the render gets there first); the view's passes come and go (SwitchView).
@@ -998,7 +999,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   p.sampling2 = glm::vec4(float(this->VisibilityEpsilon), float(this->EnvironmentIntensity),
     float(I.Scene->Majorants().BrickSize()), squareScale);
   p.tracking.y = float(this->ShadowRays);
-  p.mixture = glm::vec4(float(this->DefensiveWeight), 0.0f, 0.0f, 0.0f);
+  p.mixture = glm::vec4(float(this->DefensiveWeight), float(this->TransmittanceEstimator), 0.0f, 0.0f);
   p.tracking.z = float(this->CameraEstimator);
   if (grid)
   {
@@ -1711,6 +1712,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DefensiveWeight: " << this->DefensiveWeight << "\n";
   os << indent << "CameraEstimator: " << this->GetCameraEstimatorAsString() << "\n";
   os << indent << "ControlExtinction: " << this->GetControlExtinctionAsString() << "\n";
+  os << indent << "TransmittanceEstimator: " << this->GetTransmittanceEstimatorAsString() << "\n";
   os << indent << "Sampler: " << this->GetSamplerAsString() << "\n";
   os << indent << "SamplesPerFrame: " << this->SamplesPerFrame << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";

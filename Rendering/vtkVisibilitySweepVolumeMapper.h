@@ -218,6 +218,27 @@ public:
   }
   ///@}
 
+  enum TransmittanceEstimators
+  {
+    RatioTracking = 0, // ratio tracking; residual ratio tracking with ShadowRayControl (Novak et al. 2014)
+    RayMarching = 1    // the unbiased ray-marching estimator (Kettunen et al. 2021)
+  };
+  ///@{
+  /** The shadow rays' transmittance estimator: RatioTracking (with the default ShadowRayControl,
+   *  residual ratio tracking), or Kettunen et al. 2021's unbiased ray marching: a jittered ray march
+   *  of the optical depth as the control and a randomly truncated power series of further marches
+   *  correcting exp(-march) (with ShadowRayControl the marches integrate the brick's control
+   *  exactly). Both unbiased (TestMonteCarlo). Default RatioTracking (docs/benchmarks.md). */
+  vtkSetClampMacro(TransmittanceEstimator, int, RatioTracking, RayMarching);
+  vtkGetMacro(TransmittanceEstimator, int);
+  void SetTransmittanceEstimatorToRatioTracking() { this->SetTransmittanceEstimator(RatioTracking); }
+  void SetTransmittanceEstimatorToRayMarching() { this->SetTransmittanceEstimator(RayMarching); }
+  const char* GetTransmittanceEstimatorAsString()
+  {
+    return this->TransmittanceEstimator == RayMarching ? "RayMarching" : "RatioTracking";
+  }
+  ///@}
+
   ///@{
   /** Samples per pixel added by each Render() (default 1) and the total to stop at (default 4096). */
   vtkSetClampMacro(SamplesPerFrame, int, 1, 1 << 16);
@@ -567,6 +588,7 @@ protected:
   double LastDirectionTableSeconds = 0.0;
   int CameraEstimator = CollisionCamera;
   int ControlExtinction = ShadowRayControl;
+  int TransmittanceEstimator = RatioTracking;
   int Sampler = SobolSampler;
   int SamplesPerFrame = 1;
   int MaximumSamples = 4096;

@@ -39,6 +39,7 @@ struct Options
   std::string Camera = "collision";
   std::string Control; // empty: the mapper's default
   std::string Sampler; // empty: the mapper's default
+  std::string Transmittance; // empty: the mapper's default
   std::vector<double> Defensive{ 0.0 }; // TwoStep's defensive weights to measure
 };
 
@@ -94,6 +95,11 @@ Measurement Measure(
         : o.Control == "shadow"                    ? vtkVisibilitySweepVolumeMapper::ShadowRayControl
         : o.Control == "camera"                    ? vtkVisibilitySweepVolumeMapper::CameraRayControl
                                                    : vtkVisibilitySweepVolumeMapper::NoControl);
+  }
+  if (!o.Transmittance.empty())
+  {
+    mapper->SetTransmittanceEstimator(o.Transmittance == "ray-marching" ? vtkVisibilitySweepVolumeMapper::RayMarching
+                                                                        : vtkVisibilitySweepVolumeMapper::RatioTracking);
   }
   mapper->SetMaximumSamples(1 << 30);
   mapper->SetSamplesPerFrame(o.Spp);
@@ -284,6 +290,10 @@ void AddBenchOverhead(CLI::App& bench)
   cmd->add_option("--control", o->Control,
        "control extinction: none, shadow (residual ratio tracking), camera (decomposition tracking) or both")
     ->check(CLI::IsMember({ "none", "shadow", "camera", "both" }));
+  cmd->add_option("--transmittance", o->Transmittance,
+       "the shadow rays' transmittance estimator: ratio-tracking (residual with --control shadow or both) or "
+       "ray-marching (Kettunen et al. 2021's unbiased ray marching)")
+    ->check(CLI::IsMember({ "ratio-tracking", "ray-marching" }));
   cmd->add_option("--camera", o->Camera, "camera estimator: collision (delta tracking) or reservoir")
     ->check(CLI::IsMember({ "collision", "reservoir" }));
   cmd->add_option("--defensive", o->Defensive, "TwoStep's defensive weights to measure (default 0 = plain TwoStep)")

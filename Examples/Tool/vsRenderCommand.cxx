@@ -491,6 +491,7 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   mapper->SetToneMapping(scene.Render.ToneMapping);
   mapper->SetUpdateScheme(UpdateSchemeIndex(scene.Render.UpdateScheme));
   mapper->SetControlExtinction(ControlExtinctionIndex(scene.Render.ControlExtinction));
+  mapper->SetTransmittanceEstimator(TransmittanceEstimatorIndex(scene.Render.TransmittanceEstimator));
   mapper->SetSampler(SamplerIndex(scene.Render.Sampler));
   mapper->SetDirectionsPerFrame(scene.Render.DirectionsPerFrame);
   mapper->SetStaticInterval(scene.Render.StaticInterval);

@@ -551,7 +551,7 @@ Scene::RenderSection ParseRender(const json& v)
   RequireObject(v, path);
   CheckKeys(v, path,
     { "width", "height", "spp", "strategy", "seed", "exposure", "tone_mapping", "update_scheme",
-      "directions_per_frame", "static_interval", "control_extinction", "sampler" });
+      "directions_per_frame", "static_interval", "control_extinction", "transmittance_estimator", "sampler" });
   Scene::RenderSection s;
   if (v.contains("width"))
   {
@@ -600,6 +600,11 @@ Scene::RenderSection ParseRender(const json& v)
   {
     s.ControlExtinction = String(v["control_extinction"], "render.control_extinction");
     ControlExtinctionIndex(s.ControlExtinction, "render.control_extinction");
+  }
+  if (v.contains("transmittance_estimator"))
+  {
+    s.TransmittanceEstimator = String(v["transmittance_estimator"], "render.transmittance_estimator");
+    TransmittanceEstimatorIndex(s.TransmittanceEstimator, "render.transmittance_estimator");
   }
   if (v.contains("sampler"))
   {
@@ -784,6 +789,23 @@ int ControlExtinctionIndex(const std::string& name, const std::string& key)
   return static_cast<int>(it - names.begin());
 }
 
+const std::vector<std::string>& SceneTransmittanceEstimators()
+{
+  static const std::vector<std::string> names{ "ratio-tracking", "ray-marching" };
+  return names;
+}
+
+int TransmittanceEstimatorIndex(const std::string& name, const std::string& key)
+{
+  const auto& names = SceneTransmittanceEstimators();
+  auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end())
+  {
+    Fail(key, "unknown transmittance estimator '" + name + "' (expected " + List(names) + ")");
+  }
+  return static_cast<int>(it - names.begin());
+}
+
 const std::vector<std::string>& SceneSamplers()
 {
   static const std::vector<std::string> names{ "independent", "sobol" };
@@ -854,10 +876,9 @@ bool Scene::CameraSection::operator==(const CameraSection& o) const
 bool Scene::RenderSection::operator==(const RenderSection& o) const
 {
   return std::tie(Width, Height, Spp, Strategy, Seed, Exposure, ToneMapping, UpdateScheme, DirectionsPerFrame,
-           StaticInterval, ControlExtinction, Sampler) == std::tie(o.Width, o.Height, o.Spp, o.Strategy, o.Seed,
-                                                            o.Exposure, o.ToneMapping, o.UpdateScheme,
-                                                            o.DirectionsPerFrame, o.StaticInterval,
-                                                            o.ControlExtinction, o.Sampler);
+           StaticInterval, ControlExtinction, TransmittanceEstimator, Sampler) ==
+    std::tie(o.Width, o.Height, o.Spp, o.Strategy, o.Seed, o.Exposure, o.ToneMapping, o.UpdateScheme,
+      o.DirectionsPerFrame, o.StaticInterval, o.ControlExtinction, o.TransmittanceEstimator, o.Sampler);
 }
 
 bool Scene::VisibilitySection::operator==(const VisibilitySection& o) const
@@ -1062,7 +1083,8 @@ json ToJson(const Scene& s)
     { "strategy", s.Render.Strategy }, { "seed", s.Render.Seed }, { "exposure", s.Render.Exposure },
     { "tone_mapping", s.Render.ToneMapping }, { "update_scheme", s.Render.UpdateScheme },
     { "directions_per_frame", s.Render.DirectionsPerFrame }, { "static_interval", s.Render.StaticInterval },
-    { "control_extinction", s.Render.ControlExtinction }, { "sampler", s.Render.Sampler } };
+    { "control_extinction", s.Render.ControlExtinction },
+    { "transmittance_estimator", s.Render.TransmittanceEstimator }, { "sampler", s.Render.Sampler } };
 
   const auto& v = s.Visibility;
   json vis = json::object();

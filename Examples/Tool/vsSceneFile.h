@@ -107,6 +107,9 @@ struct Scene
     // The trackers' control extinction (vtkVisibilitySweepVolumeMapper::ControlExtinction):
     // "none", "shadow" (residual ratio tracking), "camera" (decomposition tracking) or "both".
     std::string ControlExtinction = "shadow";
+    // The shadow rays' estimator (vtkVisibilitySweepVolumeMapper::TransmittanceEstimator):
+    // "ratio-tracking" (residual with the shadow rays' control) or "ray-marching" (Kettunen et al. 2021).
+    std::string TransmittanceEstimator = "ratio-tracking";
     // vtkVisibilitySweepVolumeMapper::Sampler: "independent" or "sobol".
     std::string Sampler = "sobol";
     bool operator==(const RenderSection& o) const;
@@ -165,6 +168,9 @@ int UpdateSchemeIndex(const std::string& name, const std::string& key = "render.
 /** The control extinction names, in the order of vtkVisibilitySweepVolumeMapper::ControlExtinctions. */
 const std::vector<std::string>& SceneControlExtinctions();
 int ControlExtinctionIndex(const std::string& name, const std::string& key = "render.control_extinction");
+/** The transmittance estimator names, in the order of vtkVisibilitySweepVolumeMapper::TransmittanceEstimators. */
+const std::vector<std::string>& SceneTransmittanceEstimators();
+int TransmittanceEstimatorIndex(const std::string& name, const std::string& key = "render.transmittance_estimator");
 /** The sampler names, in the order of vtkVisibilitySweepVolumeMapper::Samplers. */
 const std::vector<std::string>& SceneSamplers();
 int SamplerIndex(const std::string& name, const std::string& key = "render.sampler");

@@ -68,9 +68,11 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   // Hidden cropping regions have no extinction, below any brick's control: no control there.
   const uint32_t control = cropping ? 0u : params.crop.y & (shared::VS_CONTROL_SHADOW | shared::VS_CONTROL_CAMERA);
   const uint32_t factor = params.crop.w != 0u ? 1u : 0u; // the gradient opacity's factor volume
+  const uint32_t transmittance =
+    params.mixture.y > 0.5f ? shared::VS_TRANSMITTANCE_RAY_MARCHING : shared::VS_TRANSMITTANCE_RATIO_TRACKING;
   const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping,
     table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u, quads ? 1u : 0u, control,
-    params.crop.z == shared::VS_SAMPLER_SOBOL ? 1u : 0u, factor };
+    params.crop.z == shared::VS_SAMPLER_SOBOL ? 1u : 0u, factor, transmittance };
   auto& slot = this->Pipelines_[specialization];
   auto& pipeline = slot[format];
   if (!pipeline)
@@ -88,7 +90,8 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
       (interpolation != 0u ? ", nearest" : "") + (cropping ? ", cropping regions" : "") +
       (table ? ", direction table" : "") + (defensive ? ", defensive" : "") +
       (this->EmptySpaceSkipping_ ? "" : ", no empty-space skipping") + (quads ? ", 8-bit quads" : "") +
-      ((control & shared::VS_CONTROL_SHADOW) ? ", residual ratio tracking" : "") +
+      (transmittance == shared::VS_TRANSMITTANCE_RAY_MARCHING ? ", ray-marched shadow rays"
+          : (control & shared::VS_CONTROL_SHADOW) ? ", residual ratio tracking" : "") +
       ((control & shared::VS_CONTROL_CAMERA) ? ", decomposition tracking" : "") +
       (params.crop.z == shared::VS_SAMPLER_SOBOL ? ", Sobol" : "") + (factor ? ", gradient opacity" : "") + ")";
     if (format == 3)

@@ -40,7 +40,7 @@ json FullScene()
     "render": {"width": 320, "height": 200, "spp": 64, "strategy": "combined", "seed": 7, "exposure": 1.5,
                "tone_mapping": false, "update_scheme": "round-robin", "directions_per_frame": 8,
                "static_interval": 12, "control_extinction": "camera",
-               "sampler": "independent"},
+               "transmittance_estimator": "ray-marching", "sampler": "independent"},
     "visibility": {"direction_resolution": 16, "voxels_per_cell": 8, "kernel_resolution": 64, "filtering": false,
                    "filter_angle_fraction": 0.25, "epsilon": 0.02, "cell_mode": "trilinear",
                    "skip_unlit_directions": false, "progressive": false, "sweep_frame_fraction": 0.5,
@@ -101,6 +101,8 @@ TEST(SceneFile, ParsesEverySection)
   EXPECT_EQ(s.Render.DirectionsPerFrame, 8);
   EXPECT_EQ(s.Render.StaticInterval, 12);
   EXPECT_EQ(s.Render.ControlExtinction, "camera");
+  EXPECT_EQ(s.Render.TransmittanceEstimator, "ray-marching");
+  EXPECT_EQ(vstool::TransmittanceEstimatorIndex(s.Render.TransmittanceEstimator), 1);
   EXPECT_EQ(s.Render.Sampler, "independent");
 
   EXPECT_EQ(s.Visibility.DirectionResolution.value(), 16);
@@ -138,6 +140,7 @@ TEST(SceneFile, DefaultsOfOptionalSections)
   EXPECT_EQ(s.Render.DirectionsPerFrame, 4);
   EXPECT_EQ(s.Render.StaticInterval, 16);
   EXPECT_EQ(s.Render.ControlExtinction, "shadow");
+  EXPECT_EQ(s.Render.TransmittanceEstimator, "ratio-tracking");
   EXPECT_EQ(s.Render.Sampler, "sobol");
 
   EXPECT_FALSE(s.Visibility.DirectionResolution.has_value());
@@ -234,6 +237,9 @@ TEST(SceneFile, EqualityNoticesChanges)
   EXPECT_FALSE(a == b);
   b = a;
   b.Render.ControlExtinction = "both";
+  EXPECT_FALSE(a == b);
+  b = a;
+  b.Render.TransmittanceEstimator = a.Render.TransmittanceEstimator == "ray-marching" ? "ratio-tracking" : "ray-marching";
   EXPECT_FALSE(a == b);
   b = a;
   b.Render.Sampler = a.Render.Sampler == "sobol" ? "independent" : "sobol";
@@ -401,6 +407,8 @@ TEST(SceneFile, BadValues)
     "render.sampler: unknown sampler 'halton' (expected independent, sobol)");
   EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["control_extinction"] = "residual"; }),
     "render.control_extinction: unknown control extinction 'residual' (expected none, shadow, camera, both)");
+  EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["transmittance_estimator"] = "delta"; }),
+    "render.transmittance_estimator: unknown transmittance estimator 'delta' (expected ratio-tracking, ray-marching)");
   EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["update_scheme"] = "lazy"; }),
     "render.update_scheme: unknown update scheme 'lazy' (expected full, round-robin, environment-guided, static)");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["update_scheme"] = 1; }),

@@ -25,6 +25,12 @@ VS_CONST uint VS_CAMERA_RESERVOIR = 1u; /* ratio-tracked, one scatter point resa
 VS_CONST uint VS_CONTROL_SHADOW = 1u;
 VS_CONST uint VS_CONTROL_CAMERA = 2u;
 
+/* The shadow rays' transmittance estimator: ratio tracking (residual ratio tracking with
+ * VS_CONTROL_SHADOW), or Kettunen et al. 2021's unbiased ray marching (ray_marching.h; the march
+ * integrates the control exactly with VS_CONTROL_SHADOW). */
+VS_CONST uint VS_TRANSMITTANCE_RATIO_TRACKING = 0u;
+VS_CONST uint VS_TRANSMITTANCE_RAY_MARCHING = 1u;
+
 /* Where a sample's pixel jitter and light direction numbers come from: the sample's own hash
  * stream (independent samples), or the pixel's Owen-scrambled Sobol sequences (sobol.h). */
 VS_CONST uint VS_SAMPLER_INDEPENDENT = 0u;
@@ -67,7 +73,8 @@ struct VsRenderParams
                         w: 1 = the extinction is scaled by the volume's factor (the gradient opacity;
                         MonteCarloPass sets it from the DeviceVolume) */
   vec4 mixture;      /* x: TwoStep's defensive weight alpha, the probability of an Environment sample
-                        (strategies.h vs_sample_defensive_*; 0 = plain TwoStep); y, z, w: unused */
+                        (strategies.h vs_sample_defensive_*; 0 = plain TwoStep); y: the shadow rays'
+                        transmittance estimator (VS_TRANSMITTANCE_*); z, w: unused */
 };
 
 VS_NAMESPACE_END
