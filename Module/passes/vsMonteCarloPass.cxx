@@ -15,6 +15,9 @@
 #include "vsVisibilityGrid.h"
 
 #include "vs_spirv_mc_render_count.h"
+#include "vs_spirv_mc_render_march_r16.h"
+#include "vs_spirv_mc_render_march_r32f.h"
+#include "vs_spirv_mc_render_march_r8.h"
 #include "vs_spirv_mc_render_r16.h"
 #include "vs_spirv_mc_render_r32f.h"
 #include "vs_spirv_mc_render_r8.h"
@@ -98,6 +101,17 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
     {
       pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_mc_render_count), bindings, sizeof(uint32_t), name,
         specialization);
+    }
+    else if (transmittance == shared::VS_TRANSMITTANCE_RAY_MARCHING)
+    {
+      // Ray marching lives in modules of its own (mc_render.glsl, VS_RAY_MARCHING).
+      pipeline = format == 0
+        ? SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_mc_render_march_r8), bindings, sizeof(uint32_t), name,
+            specialization)
+        : format == 1 ? SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_mc_render_march_r16), bindings,
+                          sizeof(uint32_t), name, specialization)
+                      : SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_mc_render_march_r32f), bindings,
+                          sizeof(uint32_t), name, specialization);
     }
     else if (format == 0)
       pipeline = SharedPipeline(

@@ -27,7 +27,9 @@
  * whatever the split, so its sums are the same bits for any split into dispatches and frames.
  */
 #include "octahedral.h"
+#ifdef VS_RAY_MARCHING
 #include "ray_marching.h"
+#endif
 #include "render_params.h"
 #include "rng.h"
 #include "sobol.h"
@@ -677,6 +679,10 @@ float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap,
   return T;
 }
 
+#ifdef VS_RAY_MARCHING
+/* Compiled only into the mc_render_march_* modules: the default kernel's SPIR-V stays the size it
+ * was (lavapipe translates the whole module before specialization drops the unused branch; the
+ * ray-marching code inside it cost every first frame ~0.3 s). */
 /* The optical depth of [t0, t1) by a ray march with samples spaced `spacing` apart in residual
  * majorant optical depth (the majorant segments' mu - c, i.e. importance-sampled by the majorant
  * grid), one random offset for all (uniform jitter): sum of (sigma - c) / (mu - c) * spacing, plus the
@@ -788,13 +794,16 @@ float march_transmittance(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, u
   /* exp(-X0) underflows to 0 while the product overflows only on a hostile extinction: 0 there. */
   return isnan(T) || isinf(T) ? 0.0 : T;
 }
+#endif
 
 /* The shadow ray's transmittance: ratio tracking (residual with the control), or Kettunen's ray
  * marching (VS_SPEC_TRANSMITTANCE). */
 float shadow_transmittance(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, inout uint cost)
 {
+#ifdef VS_RAY_MARCHING
   if (VS_SPEC_TRANSMITTANCE == VS_TRANSMITTANCE_RAY_MARCHING)
     return march_transmittance(o, d, t0, t1, rng, cap, cost);
+#endif
   return ratio_track(o, d, t0, t1, rng, cap, cost);
 }
 
