@@ -387,9 +387,20 @@ TEST(VisibilityGridUpdater, ProgressiveGridsPoolTheVolumeInSlabsFirst)
   EXPECT_EQ(updater.Grid()->PoolBuilds(), 1u);
   EXPECT_EQ(second.DirectionsSwept, 1u) << "the first direction once the pool is built: it measures a direction's cost";
   EXPECT_GT(updater.SecondsPerDirection(), 0.0);
+  // What is left of the grant after the pool and the first direction depends on their timings
+  // (a first slab that paid for a compile leaves more): it runs out, and then tiny grants sweep
+  // nothing.
   r.BudgetSeconds = 1e-12;
-  EXPECT_EQ(updater.Update(*s.Volume, *s.TF, *s.Majorants, r).DirectionsSwept, 0u)
-    << "then the debt: no allowance for the next";
+  for (int calls = 0; updater.Update(*s.Volume, *s.TF, *s.Majorants, r).DirectionsSwept > 0; ++calls)
+  {
+    ASSERT_LT(calls, 16) << "the grant runs out";
+  }
+  for (int call = 0; call < 5; ++call)
+  {
+    EXPECT_EQ(updater.Update(*s.Volume, *s.TF, *s.Majorants, r).DirectionsSwept, 0u)
+      << "then the debt: no allowance for the next";
+  }
+  EXPECT_GT(updater.PendingDirections(), 0u);
   r.BudgetSeconds = 1e6;
   updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
   ASSERT_TRUE(updater.IsComplete());
