@@ -265,6 +265,27 @@ TEST(MonteCarlo, ReservoirCameraIsUnbiased)
   }
 }
 
+namespace
+{
+// The media of the control-extinction and ray-marching tests under a sun, 25 x 23 x 21 voxels:
+// 0 dense and heterogeneous, its bricks filled throughout past x = 2; 1 the same with one NaN
+// voxel; 2 a voxel checkerboard of 0 and 1 (the extinction swings between 0 and the majorant
+// inside every cell).
+RenderScene DenseMediumUnderASun(int medium)
+{
+  return RenderScene({ { 25, 23, 21 } },
+    [medium](int x, int y, int z) {
+      if (medium == 1 && x == 12 && y == 11 && z == 10)
+        return std::numeric_limits<float>::quiet_NaN();
+      if (medium == 2)
+        return float((x + y + z) % 2);
+      return x > 2 ? 0.6f + 0.4f * float((x * 7 + y * 3 + z * 5) % 11) / 10.0f : 0.0f;
+    },
+    medium == 2 ? 0.3 : 0.15, glm::vec3(0.8f, 0.7f, 0.6f),
+    vs::EnvironmentMap::SunDisk(64, glm::normalize(glm::vec3(1, 1, 2)), 5.0, glm::vec3(50.0f), glm::vec3(0.2f)));
+}
+}
+
 // Control extinctions (render_params.h crop.y, VS_CONTROL_*): residual ratio tracking of the shadow
 // rays and decomposition tracking of the camera rays integrate each brick's smallest extinction
 // exactly and track only the rest. Unbiased: on a dense medium whose bricks are filled throughout
@@ -275,14 +296,7 @@ TEST(MonteCarlo, ControlExtinctionIsUnbiased)
 {
   for (bool nan : { false, true })
   {
-    RenderScene scene({ { 25, 23, 21 } },
-      [nan](int x, int y, int z) {
-        if (nan && x == 12 && y == 11 && z == 10)
-          return std::numeric_limits<float>::quiet_NaN();
-        return x > 2 ? 0.6f + 0.4f * float((x * 7 + y * 3 + z * 5) % 11) / 10.0f : 0.0f;
-      },
-      0.15, glm::vec3(0.8f, 0.7f, 0.6f),
-      vs::EnvironmentMap::SunDisk(64, glm::normalize(glm::vec3(1, 1, 2)), 5.0, glm::vec3(50.0f), glm::vec3(0.2f)));
+    RenderScene scene = DenseMediumUnderASun(nan ? 1 : 0);
     scene.CountLookups = true;
     for (uint32_t strategy : { VS_STRATEGY_ENVIRONMENT, VS_STRATEGY_TWO_STEP })
     {
@@ -333,16 +347,7 @@ TEST(MonteCarlo, RayMarchedTransmittanceIsUnbiased)
   for (int medium : { 0, 1, 2 })
   {
     const bool nan = medium == 1;
-    RenderScene scene({ { 25, 23, 21 } },
-      [medium](int x, int y, int z) {
-        if (medium == 1 && x == 12 && y == 11 && z == 10)
-          return std::numeric_limits<float>::quiet_NaN();
-        if (medium == 2)
-          return float((x + y + z) % 2);
-        return x > 2 ? 0.6f + 0.4f * float((x * 7 + y * 3 + z * 5) % 11) / 10.0f : 0.0f;
-      },
-      medium == 2 ? 0.3 : 0.15, glm::vec3(0.8f, 0.7f, 0.6f),
-      vs::EnvironmentMap::SunDisk(64, glm::normalize(glm::vec3(1, 1, 2)), 5.0, glm::vec3(50.0f), glm::vec3(0.2f)));
+    RenderScene scene = DenseMediumUnderASun(medium);
     scene.CountLookups = true;
     for (uint32_t strategy : { VS_STRATEGY_ENVIRONMENT, VS_STRATEGY_TWO_STEP })
     {
