@@ -754,6 +754,22 @@ std::string Folded(const std::string& name)
 }
 }
 
+namespace
+{
+// The index of `name` among a key's allowed words; an error naming the key, the word and the
+// allowed ones otherwise.
+int NameIndex(const std::vector<std::string>& names, const std::string& name, const std::string& key,
+  const std::string& what)
+{
+  auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end())
+  {
+    Fail(key, "unknown " + what + " '" + name + "' (expected " + List(names) + ")");
+  }
+  return static_cast<int>(it - names.begin());
+}
+}
+
 int StrategyIndex(const std::string& name, const std::string& key)
 {
   const auto& names = SceneStrategies();
@@ -780,13 +796,7 @@ const std::vector<std::string>& SceneControlExtinctions()
 
 int ControlExtinctionIndex(const std::string& name, const std::string& key)
 {
-  const auto& names = SceneControlExtinctions();
-  auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end())
-  {
-    Fail(key, "unknown control extinction '" + name + "' (expected " + List(names) + ")");
-  }
-  return static_cast<int>(it - names.begin());
+  return NameIndex(SceneControlExtinctions(), name, key, "control extinction");
 }
 
 const std::vector<std::string>& SceneTransmittanceEstimators()
@@ -797,13 +807,7 @@ const std::vector<std::string>& SceneTransmittanceEstimators()
 
 int TransmittanceEstimatorIndex(const std::string& name, const std::string& key)
 {
-  const auto& names = SceneTransmittanceEstimators();
-  auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end())
-  {
-    Fail(key, "unknown transmittance estimator '" + name + "' (expected " + List(names) + ")");
-  }
-  return static_cast<int>(it - names.begin());
+  return NameIndex(SceneTransmittanceEstimators(), name, key, "transmittance estimator");
 }
 
 const std::vector<std::string>& SceneSamplers()
@@ -814,24 +818,12 @@ const std::vector<std::string>& SceneSamplers()
 
 int SamplerIndex(const std::string& name, const std::string& key)
 {
-  const auto& names = SceneSamplers();
-  auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end())
-  {
-    Fail(key, "unknown sampler '" + name + "' (expected " + List(names) + ")");
-  }
-  return static_cast<int>(it - names.begin());
+  return NameIndex(SceneSamplers(), name, key, "sampler");
 }
 
 int UpdateSchemeIndex(const std::string& name, const std::string& key)
 {
-  const auto& names = SceneUpdateSchemes();
-  auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end())
-  {
-    Fail(key, "unknown update scheme '" + name + "' (expected " + List(names) + ")");
-  }
-  return static_cast<int>(it - names.begin());
+  return NameIndex(SceneUpdateSchemes(), name, key, "update scheme");
 }
 
 bool Scene::VolumeSection::operator==(const VolumeSection& o) const
