@@ -255,7 +255,10 @@ bool NearlyEqual(const std::vector<double>& a, const std::vector<double>& b)
 // so switching Uniform -> Environment kept accumulating into the old image.
 std::vector<double> RenderSignature(const vs::shared::VsRenderParams& p)
 {
-  static_assert(sizeof(vs::shared::VsRenderParams) == 2 * 64 + (16 + vs::shared::VS_MAX_CLIP_PLANES) * 16,
+  // Not in the signature: directionSources, which MonteCarloPass sets from the grid as it fills in
+  // (samples of every stage of the grid are averaged; VisibilityGridUpdater).
+  static_assert(sizeof(vs::shared::VsRenderParams) ==
+      2 * 64 + (16 + vs::shared::VS_MAX_CLIP_PLANES) * 16 + vs::shared::VS_MAX_RENDER_DIRECTIONS * 4,
     "a member was added to VsRenderParams: add it to the signature");
   std::vector<double> s;
   auto addMat = [&s](const glm::mat4& m) { s.insert(s.end(), &m[0][0], &m[0][0] + 16); };

@@ -222,6 +222,20 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
       this->NoGrid_ = std::make_unique<Image3D>(this->Context_, 1, 1, 1, vk::Format::eR8Unorm, "no visibility grid");
     }
   }
+  else
+  {
+    // While the grid fills in, unswept directions read swept ones (VisibilityGrid::RedirectDirections).
+    const std::vector<uint32_t>& sources = grid->DirectionSources();
+    if (sources.size() != size_t(params.grid.w) * params.grid.w || sources.size() > shared::VS_MAX_RENDER_DIRECTIONS)
+    {
+      throw InputError("the render kernel reads grids of up to 16 x 16 directions, matching the parameters' D; got " +
+        std::to_string(sources.size()) + " directions for D " + std::to_string(params.grid.w));
+    }
+    for (uint32_t n = 0; n < shared::VS_MAX_RENDER_DIRECTIONS; ++n)
+    {
+      params.directionSources[n / 4u][n % 4u] = n < sources.size() ? sources[n] : n;
+    }
+  }
   params.viewport.z = this->Samples_;
   const bool quads = this->VolumeQuads_ && volume.Quads() && uint32_t(params.tracking.w + 0.5f) == 0u;
   params.dims.w = quads ? volume.QuadOffset() : 0.0f;

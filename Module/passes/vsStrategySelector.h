@@ -60,7 +60,7 @@ public:
    *  can be judged (SetGridJudgeable), is less efficient than Environment sampling (re-evaluated
    *  at every epoch that measured TwoStep). While the grid is incomplete, TwoStep within
    *  PartialGridTolerance of Environment sampling is worth completing: its unswept directions
-   *  copy swept ones (FillUnswept), so a partial grid measures at best about as good as
+   *  read swept ones (FillUnswept), so a partial grid measures at best about as good as
    *  Environment sampling, and only the complete grid shows what the grid gains. */
   bool GridWorthSweeping() const { return this->GridWorth_; }
   /** The share of the render time to grant the grid's sweeps, between `probe` and `full`: `probe`

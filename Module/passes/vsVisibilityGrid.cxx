@@ -11,9 +11,6 @@
 #include "vsTransferFunctionTable.h"
 #include "shared/interpolation.h"
 
-#include "vs_spirv_grid_fill_r16.h"
-#include "vs_spirv_grid_fill_r32f.h"
-#include "vs_spirv_grid_fill_r8.h"
 #include "vs_spirv_sweep_filter.h"
 #include "vs_spirv_sweep_march.h"
 #include "vs_spirv_sweep_march_pooled.h"
@@ -34,13 +31,6 @@ namespace vs
 {
 namespace
 {
-/** grid_fill.glsl's push constants. */
-struct FillPush
-{
-  glm::uvec4 cells; // cells per axis, w: D
-  uint32_t copies;
-};
-
 /** One shader's SPIR-V, compiled once per storage format of the grid (VS_VIS_FORMAT). */
 struct PerFormatSpirv
 {
@@ -176,6 +166,7 @@ bool VisibilityGrid::Allocate(
     "visibility grid");
   this->Parameters_ = parameters;
   this->Geometry_ = geometry;
+  this->ResetSources();
   if (clear)
   {
     this->Image_->Clear(clearValue);
@@ -191,48 +182,73 @@ void VisibilityGrid::Clear(float value)
     throw InputError("the visibility grid has no image to clear");
   }
   this->Image_->Clear(std::clamp(value, 0.0f, 1.0f));
+  this->ResetSources();
   this->ContentSerial_ = NewSerial();
 }
 
-double VisibilityGrid::CopyDirections(const std::vector<std::pair<uint32_t, uint32_t>>& copies)
+void VisibilityGrid::ResetSources()
+{
+  const uint32_t count = this->Parameters_.DirectionResolution * this->Parameters_.DirectionResolution;
+  this->Sources_.resize(count);
+  for (uint32_t n = 0; n < count; ++n)
+  {
+    this->Sources_[n] = n;
+  }
+  this->UploadSources();
+}
+
+void VisibilityGrid::UploadSources()
+{
+  const uint64_t bytes = this->Sources_.size() * sizeof(uint32_t);
+  if (!this->SourceBuffer_ || this->SourceBuffer_->Size() != bytes)
+  {
+    this->SourceBuffer_ = std::make_unique<Buffer>(this->Context_, bytes, "visibility direction sources");
+  }
+  this->SourceBuffer_->Upload(this->Sources_.data(), bytes);
+}
+
+const Buffer& VisibilityGrid::DirectionSourceBuffer() const
+{
+  if (!this->SourceBuffer_)
+  {
+    throw InputError("the visibility grid has no directions yet");
+  }
+  return *this->SourceBuffer_;
+}
+
+void VisibilityGrid::RedirectDirections(const std::vector<std::pair<uint32_t, uint32_t>>& redirects)
 {
   if (!this->Image_)
   {
     throw InputError("the visibility grid has no image to fill");
   }
-  if (copies.empty())
+  if (redirects.empty())
   {
-    return 0.0;
+    return;
   }
-  const uint32_t side = this->Plan_.Side;
-  std::vector<uint32_t> pairs;
-  for (const auto& [to, from] : copies)
+  const uint32_t count = uint32_t(this->Sources_.size());
+  for (const auto& [to, from] : redirects)
   {
-    if (to >= side * side || from >= side * side)
+    if (to >= count || from >= count)
     {
       throw InputError("direction " + std::to_string(std::max(to, from)) + " is not one of the grid's " +
-        std::to_string(side * side));
+        std::to_string(count));
     }
-    pairs.insert(pairs.end(), { to, from });
   }
-  const std::shared_ptr<ComputePipeline> fill = FormatPipeline(this->Context_, this->Parameters_.StorageFormat,
-    VS_SPIRV_PER_FORMAT(vs_spirv_grid_fill), { BindingType::StorageImage, BindingType::StorageBuffer },
-    sizeof(FillPush), "grid fill", "");
-  Buffer list(this->Context_, pairs.size() * sizeof(uint32_t), "grid fill copies");
-  list.Upload(pairs.data(), pairs.size() * sizeof(uint32_t));
-  DescriptorSet set(*fill);
-  set.Bind(0, *this->Image_).Bind(1, list);
-  const auto& c = this->Plan_.Cells;
-  FillPush push{ glm::uvec4(c[0], c[1], c[2], side), uint32_t(copies.size()) };
-  const uint64_t cells = uint64_t(c[0]) * c[1] * c[2];
-  Batch cmd(this->Context_);
-  cmd.BeginTimer("fill");
-  cmd.Dispatch(*fill, set, &push, sizeof(push), uint32_t((cells + 63) / 64));
-  cmd.Barrier();
-  cmd.EndTimer();
-  cmd.Submit();
+  for (const auto& [to, from] : redirects)
+  {
+    if (this->Sources_[from] != from)
+    {
+      throw InputError("direction " + std::to_string(to) + " cannot read direction " + std::to_string(from) +
+        ", which itself reads another");
+    }
+  }
+  for (const auto& [to, from] : redirects)
+  {
+    this->Sources_[to] = from;
+  }
+  this->UploadSources();
   this->ContentSerial_ = NewSerial();
-  return cmd.Seconds("fill");
 }
 
 void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionTable& tf,
@@ -359,6 +375,17 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
     this->RunBruteForce(volume, tf, majorants, globals, directions, progress);
   }
   this->DirectionsComputed_ += directions.size();
+  // Computed directions read their own values again.
+  bool redirected = false;
+  for (uint32_t n : directions)
+  {
+    redirected |= this->Sources_[n] != n;
+    this->Sources_[n] = n;
+  }
+  if (redirected)
+  {
+    this->UploadSources();
+  }
   this->ContentSerial_ = NewSerial();
   this->LastWallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
 }
@@ -660,7 +687,8 @@ std::vector<float> VisibilityGrid::Download() const
       std::memcpy(&raw[i], &data[4 * i], 4);
     }
   }
-  // Image (x * D + u, y * D + v, z) -> cell-major, direction-minor.
+  // Image (x * D + u, y * D + v, z) -> cell-major, direction-minor; a redirected direction reads
+  // its source's values.
   std::vector<float> out(texels);
   const uint64_t w = uint64_t(c[0]) * d, h = uint64_t(c[1]) * d;
   for (uint32_t z = 0; z < c[2]; ++z)
@@ -668,7 +696,8 @@ std::vector<float> VisibilityGrid::Download() const
       for (uint32_t x = 0; x < c[0]; ++x)
         for (uint32_t n = 0; n < d * d; ++n)
         {
-          uint64_t tx = uint64_t(x) * d + n % d, ty = uint64_t(y) * d + n / d;
+          const uint32_t m = this->Sources_[n];
+          uint64_t tx = uint64_t(x) * d + m % d, ty = uint64_t(y) * d + m / d;
           out[((uint64_t(z) * c[1] + y) * c[0] + x) * d * d + n] = raw[(z * h + ty) * w + tx];
         }
   return out;

@@ -59,9 +59,16 @@ public:
     float clearValue = 0.0f);
   /** Sets every entry of an allocated grid to `value` (in [0, 1]). */
   void Clear(float value);
-  /** In every cell, direction `first` takes the value of direction `second` of the same cell, for
-   *  each pair (the `second`s must not be among the `first`s). Returns its device seconds. */
-  double CopyDirections(const std::vector<std::pair<uint32_t, uint32_t>>& copies);
+  /** Fill-in without copies: in every cell, direction `first` reads the values of direction
+   *  `second` of the same cell, for each pair, until `first` is computed (Compute) or the grid is
+   *  cleared or made anew. The `second`s must read their own values. Every reader honours it: the
+   *  direction table, the render kernel's maps (through DirectionSources) and Download. Costs no
+   *  device time (copying the directions' values cost ch2's progressive sweeps 3-4x their own time). */
+  void RedirectDirections(const std::vector<std::pair<uint32_t, uint32_t>>& redirects);
+  /** Per direction n, the direction whose values n reads: n itself unless redirected. */
+  const std::vector<uint32_t>& DirectionSources() const { return this->Sources_; }
+  /** DirectionSources() on the device (D x D uints), for the direction table's builder. */
+  const Buffer& DirectionSourceBuffer() const;
 
   /** Throws DeviceLimitError when the grid for this geometry and these parameters cannot exist. */
   static void CheckFits(Context& context, const VolumeGeometry& geometry, const VisibilityGridParameters& p);
@@ -116,6 +123,10 @@ private:
   SweepPlan Plan_;
   VolumeGeometry Geometry_;
   std::unique_ptr<Image3D> Image_;
+  std::vector<uint32_t> Sources_;          // DirectionSources()
+  std::unique_ptr<Buffer> SourceBuffer_;   // its device copy
+  void ResetSources();
+  void UploadSources();
   /** The pooling of this grid's parameters and geometry. */
   PooledExtinction::Settings PoolSettings() const;
 

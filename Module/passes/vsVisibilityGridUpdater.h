@@ -109,9 +109,8 @@ public:
    *  nothing is swept. */
   static std::vector<std::pair<uint32_t, uint32_t>> NearestSwept(
     uint32_t side, const std::vector<uint8_t>& swept, const std::vector<uint8_t>& targets);
-  /** Copies of a swept direction into an unswept one since the last full update (FillUnswept):
-   *  each fill copies only the unswept directions whose nearest swept direction changed or was
-   *  swept again. */
+  /** Redirections of an unswept direction to a swept one since the last full update (FillUnswept):
+   *  each fill redirects only the unswept directions whose nearest swept direction changed. */
   uint64_t FilledDirections() const { return this->Filled_; }
 
 private:

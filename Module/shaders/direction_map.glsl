@@ -4,8 +4,10 @@
  * (mc_render.glsl, which builds maps at scatter points where it has no table) and the table
  * builder (direction_table.glsl, which reads the same entries for every cell once).
  *
- * The includer declares `uVisibility` (the grid image, VS_VIS_FORMAT) and defines VS_COUNT(i)
- * (empty unless it counts reads), and includes strategies.h or warp.h (vs_env_node) before.
+ * The includer declares `uVisibility` (the grid image, VS_VIS_FORMAT), defines VS_COUNT(i)
+ * (empty unless it counts reads) and VS_DIRECTION_SOURCE(n) (the direction whose values direction n
+ * reads: n, or the nearest swept one while a grid fills in; VisibilityGrid::DirectionSources), and
+ * includes strategies.h or warp.h (vs_env_node) before.
  */
 
 /* The map of this invocation (D x D <= 256 values) and its sum pyramid, which the strategies read
@@ -17,10 +19,11 @@ float vs_map_value(uint n)
   return gValues[n];
 }
 
-/* Direction n of the D x D tile of `cell` (vsVisibilityGrid.h's layout). */
+/* Direction n of the D x D tile of `cell` (vsVisibilityGrid.h's layout), read where its source is. */
 float visibility_texel(uvec3 cell, uint n, uint D)
 {
-  ivec3 t = ivec3(int(cell.x * D + n % D), int(cell.y * D + n / D), int(cell.z));
+  uint m = VS_DIRECTION_SOURCE(n);
+  ivec3 t = ivec3(int(cell.x * D + m % D), int(cell.y * D + m / D), int(cell.z));
   VS_COUNT(2);
   return imageLoad(uVisibility, t).r;
 }

@@ -18,6 +18,7 @@ layout(constant_id = 1) const uint VS_SPEC_MAP = 3u; /* VS_STRATEGY_VISIBILITY, 
 layout(binding = 0, VS_VIS_FORMAT) uniform readonly image3D uVisibility;
 layout(std430, binding = 1) readonly buffer EnvMips { float uMips[]; };
 layout(std430, binding = 2) writeonly buffer Table { uint uTable[]; };
+layout(std430, binding = 3) readonly buffer Sources { uint uSources[]; }; /* VisibilityGrid::DirectionSources */
 layout(push_constant) uniform Push
 {
   uvec4 cells;  /* xyz: cells per axis */
@@ -25,6 +26,7 @@ layout(push_constant) uniform Push
 } pc;
 
 #define VS_COUNT(i)
+#define VS_DIRECTION_SOURCE(n) uSources[n]
 float vs_env_mip(uint index)
 {
   return uMips[index];

@@ -105,6 +105,8 @@ uint gLaneSteps = 0u, gGroupLaneSteps = 0u;
 #define VS_COUNT(i)
 #endif
 
+#define VS_DIRECTION_SOURCE(n) P.directionSources[(n) / 4u][(n) % 4u]
+
 float vs_env_mip(uint index)
 {
   return texelFetch(uMips, int(index)).r;

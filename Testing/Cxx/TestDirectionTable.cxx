@@ -43,12 +43,15 @@ bool SharesAgree(uint32_t a, uint32_t b)
 }
 } // namespace
 
+// Also over a grid filling in, whose unswept directions read swept ones (RedirectDirections): the
+// CPU's packing reads Download(), which honours the redirections, so the device's builder must too.
 TEST(DirectionTable, DeviceTableIsTheSharedHeadersPacking)
 {
   RenderScene scene = MakeScene();
-  for (uint32_t resolution : { 8u, 4u, 16u, 2u })
+  for (uint32_t resolution : { 8u, 4u, 16u, 2u, 8u })
+  for (bool redirected : { false, true })
   {
-    if (resolution != scene.Grid->Side())
+    if (resolution != scene.Grid->Side() || !redirected)
     {
       vs::VisibilityGridParameters params;
       params.DirectionResolution = resolution;
@@ -56,6 +59,17 @@ TEST(DirectionTable, DeviceTableIsTheSharedHeadersPacking)
     }
     const uint32_t D = scene.Grid->Side();
     ASSERT_EQ(D, resolution);
+    if (redirected)
+    {
+      const std::vector<float> before = scene.Grid->Download();
+      // Every odd direction reads the even one before it, the last the first.
+      std::vector<std::pair<uint32_t, uint32_t>> redirects;
+      for (uint32_t n = 1; n + 1 < D * D; n += 2)
+        redirects.emplace_back(n, n - 1);
+      redirects.emplace_back(D * D - 1, 0u);
+      scene.Grid->RedirectDirections(redirects);
+      ASSERT_NE(scene.Grid->Download(), before) << "the redirections change what the grid reads, D " << D;
+    }
     const auto cells = scene.Grid->Cells();
     const uint64_t count = uint64_t(cells[0]) * cells[1] * cells[2];
     const std::vector<float> grid = scene.Grid->Download();
@@ -93,7 +107,7 @@ TEST(DirectionTable, DeviceTableIsTheSharedHeadersPacking)
         }
       }
       EXPECT_EQ(mismatches, 0u) << (strategy == VS_STRATEGY_VISIBILITY ? "visibility" : "two-step") << ", " << count
-                                << " cells, D " << D;
+                                << " cells, D " << D << (redirected ? ", redirected" : "");
       // Visibility + epsilon is positive everywhere; the sun-disk sky is
       // positive everywhere too.
       EXPECT_EQ(zeros, 0u);
@@ -165,6 +179,35 @@ TEST(DirectionTable, RenderingFromTheTableIsUnbiased)
                 "another seed); chi2 %.1f dof %d\n",
       strategy, varA, varSame, varB, chi2, dof);
   }
+}
+
+// The kernel's per-scatter maps read a filling grid's redirected directions too: with every
+// direction reading one (a flat grid, whose TwoStep is Environment sampling), the map's render and
+// the table's take almost the same samples again, and both differ from TwoStep over the full grid.
+TEST(DirectionTable, KernelMapsReadRedirectedDirections)
+{
+  RenderScene scene = MakeScene();
+  auto p = scene.Params(8, 8, -2.0f, 18.0f, VS_STRATEGY_TWO_STEP, 256, 3u, true);
+  scene.DirectionTable = false;
+  auto [full, vfull] = scene.Render(p, 2);
+  const uint32_t D = scene.Grid->Side();
+  std::vector<std::pair<uint32_t, uint32_t>> redirects;
+  for (uint32_t n = 1; n < D * D; ++n)
+    redirects.emplace_back(n, 0u);
+  scene.Grid->RedirectDirections(redirects);
+  auto [map, vmap] = scene.Render(p, 2);
+  EXPECT_FALSE(scene.LastUsedDirectionTable);
+  scene.DirectionTable = true;
+  auto [table, vtable] = scene.Render(p, 2);
+  EXPECT_TRUE(scene.LastUsedDirectionTable);
+  const double n = scene.LastSamples;
+  const vstest::Agreement sameSeed = vstest::Compare(map, vmap, table, vtable, n);
+  const vstest::Agreement grids = vstest::Compare(full, vfull, map, vmap, n);
+  EXPECT_NEAR(sameSeed.varB / sameSeed.varA, 1.0, 0.03) << "the same seed over the redirected grid, map against table";
+  EXPECT_GT(std::abs(grids.varB / grids.varA - 1.0), 0.1) << "the redirections change TwoStep's pdf";
+  EXPECT_LT(grids.chi2, grids.Bound()) << "both are unbiased";
+  std::printf("[ redirected ] variance per sample: full grid %.4g, redirected %.4g (map) %.4g (table)\n",
+    grids.varA, sameSeed.varA, sameSeed.varB);
 }
 
 // By default the render pass rebuilds the table whenever the grid's values change (images do not

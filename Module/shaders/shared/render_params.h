@@ -42,6 +42,9 @@ VS_CONST uint VS_SAMPLER_SOBOL = 1u;
  * (TestDriverLoopLimit). */
 VS_CONST uint VS_LOOP_BUDGET = 60000u;
 
+/* The grid directions the render kernel reads at most: D x D for D <= 16 (direction_map.glsl). */
+VS_CONST uint VS_MAX_RENDER_DIRECTIONS = 256u;
+
 struct VsRenderParams
 {
   mat4 invViewProj;  /* OpenGL NDC (z in [-1,1]) -> world */
@@ -75,6 +78,9 @@ struct VsRenderParams
   vec4 mixture;      /* x: TwoStep's defensive weight alpha, the probability of an Environment sample
                         (strategies.h vs_sample_defensive_*; 0 = plain TwoStep); y: the shadow rays'
                         transmittance estimator (VS_TRANSMITTANCE_*); z, w: unused */
+  uvec4 directionSources[VS_MAX_RENDER_DIRECTIONS / 4u]; /* entry n (component n % 4 of element n / 4): the
+                        grid direction whose values direction n reads (VisibilityGrid::DirectionSources;
+                        direction_map.glsl); MonteCarloPass sets it from the grid */
 };
 
 VS_NAMESPACE_END

@@ -1,5 +1,0 @@
-#version 460
-#extension GL_GOOGLE_include_directive : require
-/* Unswept directions of a visibility grid stored as r8 (grid_fill.glsl). */
-#define VS_VIS_FORMAT r8
-#include "grid_fill.glsl"
