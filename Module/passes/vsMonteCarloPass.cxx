@@ -15,6 +15,7 @@
 #include "vsVisibilityGrid.h"
 
 #include "vs_spirv_mc_render_count.h"
+#include "vs_spirv_mc_render_env.h"
 #include "vs_spirv_mc_render_march_r16.h"
 #include "vs_spirv_mc_render_march_r32f.h"
 #include "vs_spirv_mc_render_march_r8.h"
@@ -73,6 +74,12 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   const uint32_t factor = params.crop.w != 0u ? 1u : 0u; // the gradient opacity's factor volume
   const uint32_t transmittance =
     params.mixture.y > 0.5f ? shared::VS_TRANSMITTANCE_RAY_MARCHING : shared::VS_TRANSMITTANCE_RATIO_TRACKING;
+  // Environment and Uniform without counting or ray marching: the module without the grid's code
+  // (mc_render_env.comp), whatever the grid's format (it binds no grid).
+  if (format != 3 && strategy <= shared::VS_STRATEGY_ENVIRONMENT && transmittance == shared::VS_TRANSMITTANCE_RATIO_TRACKING)
+  {
+    format = 4;
+  }
   const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping,
     table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u, quads ? 1u : 0u, control,
     params.crop.z == shared::VS_SAMPLER_SOBOL ? 1u : 0u, factor, transmittance };
@@ -86,7 +93,7 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
       B::StorageBuffer, B::StorageBuffer, B::UniformTexelBuffer, B::StorageImage, B::StorageBuffer,
       B::StorageImage, B::StorageImage };
     static const char* formats[] = { "r8 visibility", "r16 visibility", "r32f visibility",
-      "r8 visibility, counting reads" };
+      "r8 visibility, counting reads", "no grid" };
     const std::string name = std::string("monte carlo (") + formats[format] + ", " + StrategyName(strategy) + ", " +
       (cellMode == shared::VS_CELL_STOCHASTIC ? "stochastic cell" : "trilinear cells") +
       (refine ? ", cell walk" : "") + (camera == shared::VS_CAMERA_RESERVOIR ? ", reservoir camera" : "") +
@@ -97,7 +104,12 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
           : (control & shared::VS_CONTROL_SHADOW) ? ", residual ratio tracking" : "") +
       ((control & shared::VS_CONTROL_CAMERA) ? ", decomposition tracking" : "") +
       (params.crop.z == shared::VS_SAMPLER_SOBOL ? ", Sobol" : "") + (factor ? ", gradient opacity" : "") + ")";
-    if (format == 3)
+    if (format == 4)
+    {
+      pipeline = SharedPipeline(
+        this->Context_, VS_SPIRV(vs_spirv_mc_render_env), bindings, sizeof(uint32_t), name, specialization);
+    }
+    else if (format == 3)
     {
       pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_mc_render_count), bindings, sizeof(uint32_t), name,
         specialization);
@@ -213,7 +225,9 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   {
     throw InputError("TwoStep's defensive weight must be in [0, 1], got " + std::to_string(params.mixture.x));
   }
-  const bool useGrid = grid && grid->Valid() && params.grid.w > 0;
+  // Environment and Uniform read no grid (their module has none: mc_render_env.comp).
+  const bool useGrid =
+    grid && grid->Valid() && params.grid.w > 0 && params.sampling.x > shared::VS_STRATEGY_ENVIRONMENT;
   if (!useGrid)
   {
     params.grid = glm::uvec4(1u, 1u, 1u, 0u);
@@ -289,6 +303,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   }
   const ComputePipeline& pipeline =
     this->PipelineFor(useGrid ? grid : nullptr, params, NeedsCellWalk(majorants, params), table, quads);
+  this->LastPipelineName_ = pipeline.Name();
   DescriptorSet set(pipeline);
   set.Bind(0, volume.Image())
     .BindTexels(1, tf.Lut(), vk::Format::eR32Sfloat)

@@ -12,6 +12,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace vs
@@ -78,6 +79,8 @@ public:
   bool GetVolumeQuads() const { return this->VolumeQuads_; }
   /** Whether the last Render read the volume's quads. */
   bool LastUsedVolumeQuads() const { return this->LastUsedQuads_; }
+  /** The name of the kernel pipeline the last Render ran (its module and specialization). */
+  const std::string& LastPipelineName() const { return this->LastPipelineName_; }
   bool GetEmptySpaceSkipping() const { return this->EmptySpaceSkipping_; }
   /** Reads of the last counted Render: trilinear volume samples, majorant-brick loads, visibility texels. */
   std::array<uint64_t, 3> LastLookups() const { return this->LastLookups_; }
@@ -136,7 +139,9 @@ private:
 
   std::shared_ptr<Context> Context_;
   // Per specialization (mc_render.glsl's constant_ids): r8, r16, r32f visibility; r8 counting reads.
-  std::map<std::vector<uint32_t>, std::array<std::shared_ptr<ComputePipeline>, 4>> Pipelines_;
+  // Per specialization: the modules for the r8, r16 and r32f grids, counting reads, and no grid.
+  std::map<std::vector<uint32_t>, std::array<std::shared_ptr<ComputePipeline>, 5>> Pipelines_;
+  std::string LastPipelineName_;
   std::unique_ptr<Buffer> Lookups_;
   bool CountLookups_ = false;
   bool EmptySpaceSkipping_ = true;

@@ -1,7 +1,8 @@
 /*
  * mc_render.glsl — unbiased progressive Monte Carlo single scattering under
  * environment light (von Radziewsky et al. 2017, Sec. 4 and 7). Included by mc_render_<format>.comp,
- * which defines VS_VIS_FORMAT (the visibility grid's storage format).
+ * which defines VS_VIS_FORMAT (the visibility grid's storage format), and by mc_render_env.comp,
+ * which also defines VS_NO_GRID (Environment and Uniform only: no grid code compiled in).
  *
  * Per sample: a jittered camera ray; free-flight distance by delta tracking against
  * the majorant bricks (empty bricks skipped); at a real collision, one direction from
@@ -113,7 +114,9 @@ float vs_env_mip(uint index)
 }
 
 #include "volume_access.glsl"
+#ifndef VS_NO_GRID
 #include "direction_map.glsl"
+#endif
 
 /* Parameters the per-sample code reads, loaded once per invocation in main(): lavapipe loads a
  * storage-buffer value inside code that not every lane runs with a scalar loop over the lanes
@@ -454,6 +457,7 @@ vec2 ray_interval(vec3 o, vec3 d)
   return t;
 }
 
+#ifndef VS_NO_GRID
 /* The cell one corner of the 8 around index-space point x, picked with its trilinear weight. */
 uvec3 stochastic_cell(vec3 x, inout VsRng rng)
 {
@@ -501,6 +505,7 @@ void direction_values(vec3 x, uint strategy, uint D, inout VsRng rng)
   map_pyramid(D);
 }
 
+#endif
 /* The direction map at x for the grid strategies (once per scatter point, for all its shadow rays):
  * the stochastic cell's table, or the map built here. */
 void prepare_directions(vec3 x, uint strategy, inout VsRng rng)
@@ -508,6 +513,7 @@ void prepare_directions(vec3 x, uint strategy, inout VsRng rng)
   uint D = gGrid.w;
   if (strategy == VS_STRATEGY_ENVIRONMENT || strategy == VS_STRATEGY_UNIFORM || D == 0u)
     return;
+#ifndef VS_NO_GRID
   if (VS_SPEC_TABLE != 0u)
   {
     uvec3 cell = stochastic_cell(x, rng);
@@ -515,6 +521,7 @@ void prepare_directions(vec3 x, uint strategy, inout VsRng rng)
   }
   else
     direction_values(x, strategy, D, rng);
+#endif
 }
 
 /* A direction from the strategy (after prepare_directions at the scatter point) and its pdf. */
@@ -526,6 +533,9 @@ vec3 sample_direction(uint strategy, vec2 u, out float pdf)
     return vs_sample_environment(K, u, pdf);
   if (strategy == VS_STRATEGY_UNIFORM || D == 0u)
     return vs_sample_uniform(u, pdf);
+#ifdef VS_NO_GRID
+  return vs_sample_uniform(u, pdf); /* not reached: MonteCarloPass uses this module for the other two only */
+#else
   if (VS_SPEC_DEFENSIVE != 0u && strategy == VS_STRATEGY_TWO_STEP)
   {
     float alpha = gMixture;
@@ -536,6 +546,7 @@ vec3 sample_direction(uint strategy, vec2 u, out float pdf)
   if (VS_SPEC_TABLE != 0u)
     return vs_sample_direction_table(strategy, gTableBase, D, K, u, pdf);
   return vs_sample_direction_pyramid(strategy, D, K, u, pdf);
+#endif
 }
 
 /* ------------------------------------------------------------------ tracking */

@@ -286,6 +286,27 @@ RenderScene DenseMediumUnderASun(int medium)
 }
 }
 
+// Environment and Uniform sampling run a module without the grid's code (mc_render_env.comp, whose
+// pipeline the first image waits for): the same bits as the module with it (here the instrumented
+// one, which counts reads and changes nothing else), with or without a grid bound.
+TEST(MonteCarlo, TheModuleWithoutTheGridRendersTheSameBits)
+{
+  RenderScene scene = DenseMediumUnderASun(0);
+  for (uint32_t strategy : { VS_STRATEGY_ENVIRONMENT, VS_STRATEGY_UNIFORM })
+  {
+    auto p = scene.Params(8, 8, -2.0f, 26.0f, strategy, 16, 3u, true);
+    scene.CountLookups = false;
+    auto [lean, vlean] = scene.Render(p, 2);
+    EXPECT_NE(scene.LastPipelineName.find("no grid"), std::string::npos) << scene.LastPipelineName;
+    scene.CountLookups = true;
+    auto [full, vfull] = scene.Render(p, 2);
+    EXPECT_NE(scene.LastPipelineName.find("counting reads"), std::string::npos) << scene.LastPipelineName;
+    EXPECT_EQ(lean, full) << kNames[strategy];
+    EXPECT_EQ(vlean, vfull) << kNames[strategy];
+  }
+  scene.CountLookups = false;
+}
+
 // Control extinctions (render_params.h crop.y, VS_CONTROL_*): residual ratio tracking of the shadow
 // rays and decomposition tracking of the camera rays integrate each brick's smallest extinction
 // exactly and track only the rest. Unbiased: on a dense medium whose bricks are filled throughout

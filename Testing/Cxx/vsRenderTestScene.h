@@ -89,8 +89,10 @@ struct RenderScene : VisibilityScene
     this->LastUsedDirectionTable = pass.LastUsedDirectionTable();
     this->LastLookups = pass.LastLookups();
     this->LastUsedVolumeQuads = pass.LastUsedVolumeQuads();
+    this->LastPipelineName = pass.LastPipelineName();
     return { pass.Mean(), pass.Variance() };
   }
+  std::string LastPipelineName;
   uint32_t LastSamples = 0;
   /** Whether Render lets the grid strategies read the cells' direction table (the pass's default). */
   bool DirectionTable = true;
