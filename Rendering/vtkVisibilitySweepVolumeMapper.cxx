@@ -511,7 +511,7 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     }
     if (!I.PrewarmStarted && this->RenderMode == MonteCarlo && !projection && vol && vol->GetProperty())
     {
-      this->StartPrewarm(vol->GetProperty(), scalars);
+      this->StartPrewarm(input, vol, scalars);
     }
     this->DirectionsUpdatedLastFrame = 0;
     this->LastFrameSweepSeconds = 0.0;
@@ -785,9 +785,10 @@ std::vector<float> vtkVisibilitySweepVolumeMapper::EmissionAbsorptionImage(vtkRe
   return rgba;
 }
 
-void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkVolumeProperty* property, vtkDataArray* scalars)
+void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars)
 {
   Internals& I = *this->Impl;
+  vtkVolumeProperty* property = volume->GetProperty();
   I.PrewarmStarted = true;
   if (this->Cropping)
   {
@@ -822,9 +823,43 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkVolumeProperty* property, v
     scalars->GetRange(range, 0);
     quads = range[1] - range[0] <= 255.0;
   }
-  I.Prewarm = std::async(std::launch::async, [context = I.Context, p, table, quads]() {
+  // The cell walk of optically thick bricks (MonteCarloPass::NeedsCellWalk) from the transfer
+  // function's largest extinction over the scalars' range: the largest majorant the upload will
+  // find when some brick reaches the function's peak, as it usually does (a wrong guess costs the
+  // first frame a compile of its own, ~0.2 s: blind_sunrise's first frames did before).
+  // Only for input the scene update will accept: sampling a property without functions would
+  // give it default ones (a change, and its error logged again).
+  bool cellWalk = false;
+  if (vs::CheckImage(input, scalars).empty() && vs::CheckProperty(property).empty())
+  {
+    try
+    {
+      const vs::VolumeGeometry geometry = vs::ComputeGeometry(input, volume->GetMatrix());
+      if (!vs::CheckGeometry(geometry).empty())
+      {
+        throw vs::InputError(vs::CheckGeometry(geometry));
+      }
+      double range[2];
+      scalars->GetRange(range, 0);
+      const vs::TransferFunctionSamples samples =
+        vs::SampleTransferFunction(property, float(range[0]), float(range[1]), this->DensityScale);
+      const float cap = vs::VolumeScene::MaxResolvedExtinction(geometry);
+      float extinction = 0.0f;
+      for (size_t i = 3; i < samples.Entries.size(); i += 4)
+      {
+        extinction = std::max(extinction, std::min(samples.Entries[i], cap));
+      }
+      p.worldToIndex = glm::mat4(geometry.WorldToIndex);
+      cellWalk = vs::MonteCarloPass::NeedsCellWalk(double(extinction), vs::MajorantGrid::DefaultBrickSize, p);
+    }
+    catch (const std::exception&)
+    {
+      // The scene update refuses this input with its own error: no guess needed.
+    }
+  }
+  I.Prewarm = std::async(std::launch::async, [context = I.Context, p, table, quads, cellWalk]() {
     vs::MonteCarloPass pass(context);
-    pass.Prewarm(p, table, quads);
+    pass.Prewarm(p, table, quads, cellWalk);
   });
 }
 

@@ -646,7 +646,7 @@ private:
   void RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol);
   /** Starts making the first frame's render pipeline on another thread (the scene's conversion
    *  and upload keep this one busy meanwhile): the strategy's, or Environment sampling's for Auto. */
-  void StartPrewarm(vtkVolumeProperty* property, vtkDataArray* scalars);
+  void StartPrewarm(vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars);
   void UpdateVisibilityGrid(bool needGrid, bool usesGridOnly);
   std::vector<uint8_t> RequiredDirections(int side);
   void NoteSweeps(unsigned int directions, double deviceSeconds, double wallSeconds);

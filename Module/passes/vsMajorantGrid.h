@@ -37,7 +37,8 @@ struct TransferFunctionSamples;
 class VISSWEEPCORE_EXPORT MajorantGrid
 {
 public:
-  MajorantGrid(std::shared_ptr<Context> context, uint32_t brickSize = 8);
+  static constexpr uint32_t DefaultBrickSize = 8;
+  MajorantGrid(std::shared_ptr<Context> context, uint32_t brickSize = DefaultBrickSize);
   ~MajorantGrid();
 
   /** Recomputes the scalar range of every brick (after the volume's data changed): a device pass over

@@ -150,6 +150,11 @@ bool MonteCarloPass::Defensive(const shared::VsRenderParams& params)
 
 bool MonteCarloPass::NeedsCellWalk(const MajorantGrid& majorants, const shared::VsRenderParams& params)
 {
+  return NeedsCellWalk(double(majorants.MaxMajorant()), majorants.BrickSize(), params);
+}
+
+bool MonteCarloPass::NeedsCellWalk(double maxMajorant, uint32_t brickSize, const shared::VsRenderParams& params)
+{
   // The longest world-space path through a brick: its index-space diagonal (B sqrt 3) through the
   // index-to-world matrix, bounded by the matrix's Frobenius norm (>= its largest singular value).
   const glm::mat3 indexToWorld = glm::inverse(glm::mat3(params.worldToIndex));
@@ -161,9 +166,9 @@ bool MonteCarloPass::NeedsCellWalk(const MajorantGrid& majorants, const shared::
       norm2 += double(indexToWorld[c][r]) * indexToWorld[c][r];
     }
   }
-  const double longest = majorants.BrickSize() * std::sqrt(3.0) * std::sqrt(norm2);
+  const double longest = brickSize * std::sqrt(3.0) * std::sqrt(norm2);
   const double depth = params.tracking.x > 0.0f ? params.tracking.x : 32.0;
-  const double worst = double(majorants.MaxMajorant()) * longest;
+  const double worst = maxMajorant * longest;
   // 0.1% for the trackers' shortest step past a face; non-finite (a singular matrix, an infinite
   // majorant) keeps the cell walk: it is the safe side.
   return !(worst * 1.001 <= depth);

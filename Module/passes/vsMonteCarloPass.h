@@ -53,6 +53,9 @@ public:
   /** Whether some majorant segment may reach the tracking's refinement depth (mc_render.glsl's
    *  cell walk): the brick majorant times the longest world path through a brick, with a margin. */
   static bool NeedsCellWalk(const MajorantGrid& majorants, const shared::VsRenderParams& params);
+  /** The same from a bound of the largest brick majorant and the brick size, e.g. before the
+   *  volume's majorants exist (the prewarm of the first frame's kernel). */
+  static bool NeedsCellWalk(double maxMajorant, uint32_t brickSize, const shared::VsRenderParams& params);
 
   /** Per pixel (rgb, alpha) means, rows bottom-up. */
   std::vector<float> Mean() const;

@@ -483,6 +483,20 @@ size_t Context::PipelineCount() const
   return n;
 }
 
+std::vector<std::string> Context::PipelineNames() const
+{
+  std::lock_guard<std::mutex> lock(this->PipelineMutex_);
+  std::vector<std::string> names;
+  for (const auto& entry : this->Pipelines_)
+  {
+    if (entry.second->Ready)
+    {
+      names.push_back(entry.first);
+    }
+  }
+  return names;
+}
+
 uint64_t Context::ValidationMessageCount() const
 {
   std::lock_guard<std::mutex> lock(this->Mutex_);

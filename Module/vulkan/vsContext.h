@@ -101,6 +101,8 @@ public:
   /** How many pipelines the context holds (compiled ones stay for the process: a one-time cost,
    *  which memory checks tell from a leak by this count). */
   size_t PipelineCount() const;
+  /** The names of the pipelines the context holds, e.g. to tell which kernels a frame made. */
+  std::vector<std::string> PipelineNames() const;
 
   /** Counts messages (called by the debug messenger). */
   void CountValidationMessage();
