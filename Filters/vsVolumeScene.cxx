@@ -38,6 +38,18 @@ float VolumeScene::MaxResolvedExtinction(const VolumeGeometry& geometry)
   return float(std::min(cap, double(TransferFunctionSamples::kMaxExtinction)));
 }
 
+TransferFunctionSamples VolumeScene::SampleRenderedTransferFunction(vtkVolumeProperty* property, float smin,
+  float smax, double densityScale, const VolumeGeometry& geometry)
+{
+  TransferFunctionSamples samples = SampleTransferFunction(property, smin, smax, densityScale);
+  const float cap = MaxResolvedExtinction(geometry);
+  for (size_t i = 3; i < samples.Entries.size(); i += 4)
+  {
+    samples.Entries[i] = std::min(samples.Entries[i], cap);
+  }
+  return samples;
+}
+
 VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scalars,
   vtkVolumeProperty* property, vtkMatrix4x4* volumeMatrix, double densityScale)
 {
@@ -126,11 +138,8 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
   if (changes.Data || changes.TransferFunction)
   {
     auto range = this->Volume_->Range();
-    TransferFunctionSamples samples = SampleTransferFunction(property, range[0], range[1], densityScale);
-    for (size_t i = 3; i < samples.Entries.size(); i += 4)
-    {
-      samples.Entries[i] = std::min(samples.Entries[i], cap);
-    }
+    TransferFunctionSamples samples =
+      SampleRenderedTransferFunction(property, range[0], range[1], densityScale, geometry);
     // Compare with the previous table: only the columns that changed need work downstream.
     const bool comparable = this->TF_ && !changes.Data &&
       this->TF_->Samples().ScalarMin == samples.ScalarMin && this->TF_->Samples().ScalarMax == samples.ScalarMax &&

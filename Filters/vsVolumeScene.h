@@ -37,6 +37,7 @@ class Context;
 class DeviceVolume;
 class MajorantGrid;
 class TransferFunctionTable;
+struct TransferFunctionSamples;
 
 class VISSWEEPFILTERS_EXPORT VolumeScene
 {
@@ -75,6 +76,10 @@ public:
    *  opaque at it (a mean free path of 1/32 of that resolution), and so is its image.
    *  At most TransferFunctionSamples::kMaxExtinction. */
   static float MaxResolvedExtinction(const VolumeGeometry& geometry);
+  /** The transfer function's table over scalars [smin, smax] as the scene renders it: extinction
+   *  clamped to MaxResolvedExtinction(geometry). */
+  static TransferFunctionSamples SampleRenderedTransferFunction(vtkVolumeProperty* property, float smin, float smax,
+    double densityScale, const VolumeGeometry& geometry);
   static constexpr double kResolvedFreePaths = 32.0;
   float ExtinctionCap() const { return this->ExtinctionCap_; }
 

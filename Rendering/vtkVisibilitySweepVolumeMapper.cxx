@@ -841,13 +841,12 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume
       }
       double range[2];
       scalars->GetRange(range, 0);
-      const vs::TransferFunctionSamples samples =
-        vs::SampleTransferFunction(property, float(range[0]), float(range[1]), this->DensityScale);
-      const float cap = vs::VolumeScene::MaxResolvedExtinction(geometry);
+      const vs::TransferFunctionSamples samples = vs::VolumeScene::SampleRenderedTransferFunction(
+        property, float(range[0]), float(range[1]), this->DensityScale, geometry);
       float extinction = 0.0f;
       for (size_t i = 3; i < samples.Entries.size(); i += 4)
       {
-        extinction = std::max(extinction, std::min(samples.Entries[i], cap));
+        extinction = std::max(extinction, samples.Entries[i]);
       }
       p.worldToIndex = glm::mat4(geometry.WorldToIndex);
       cellWalk = vs::MonteCarloPass::NeedsCellWalk(double(extinction), vs::MajorantGrid::DefaultBrickSize, p);
