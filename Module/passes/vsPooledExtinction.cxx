@@ -108,7 +108,7 @@ void PooledExtinction::Start(const Key& key, const DeviceVolume& volume)
     const uint32_t cropped = key.Pooling.CropFlags ? 1u : 0u;
     const uint32_t scaled = key.ExtinctionFactor ? 1u : 0u;
     this->Pool_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_pool),
-      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageImage }, sizeof(PoolPush),
+      std::vector<B>{ B::StorageImage, B::UniformTexelBuffer, B::StorageImage, B::StorageImage }, sizeof(PoolPush),
       "sweep pool (P " + std::to_string(factor) + (key.Pooling.Max ? ", max" : ", mean") +
         (cropped ? ", cropped" : "") + (scaled ? ", gradient opacity)" : ")"),
       { factor, key.Pooling.Max ? 1u : 0u, cropped, scaled });
@@ -138,7 +138,7 @@ double PooledExtinction::PoolSlices(
   const DeviceVolume& volume, const TransferFunctionTable& tf, uint32_t z0, uint32_t z1)
 {
   DescriptorSet set(*this->Pool_);
-  set.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, *this->Pooled_);
+  set.Bind(0, volume.Image()).BindTexels(1, tf.Lut(), vk::Format::eR32Sfloat).Bind(2, *this->Pooled_);
   set.Bind(3, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   const Key& key = this->Key_;
   auto t = tf.Params();

@@ -399,7 +399,7 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
   {
     using B = BindingType;
     this->March_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_march),
-      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
+      std::vector<B>{ B::StorageImage, B::UniformTexelBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
         B::StorageBuffer, B::StorageBuffer, B::StorageImage },
       sizeof(ChunkPush), extinctionFactor ? "sweep march (gradient opacity)" : "sweep march", { 0u, extinctionFactor });
     this->MarchFactor_ = extinctionFactor;
@@ -429,10 +429,10 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
   {
     using B = BindingType;
     this->Filter_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_filter),
-      std::vector<B>{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer }, sizeof(ChunkPush),
+      std::vector<B>{ B::StorageBuffer, B::StorageBuffer, B::UniformTexelBuffer, B::StorageBuffer }, sizeof(ChunkPush),
       "sweep filter (" + std::to_string(tapsA) + " taps)", { tapsA });
     // The projection stores into an image of known format (faster on lavapipe than format-less stores).
-    const std::vector<B> bindings{ B::StorageBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageImage };
+    const std::vector<B> bindings{ B::StorageBuffer, B::StorageBuffer, B::UniformTexelBuffer, B::StorageImage };
     this->Project_ = FormatPipeline(this->Context_, this->Parameters_.StorageFormat,
       VS_SPIRV_PER_FORMAT(vs_spirv_sweep_project), bindings, sizeof(ChunkPush), "sweep project",
       ", " + std::to_string(tapsB) + " taps", { tapsB });
@@ -442,7 +442,7 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
   {
     using B = BindingType;
     this->MarchPooled_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_march_pooled),
-      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
+      std::vector<B>{ B::StorageImage, B::UniformTexelBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
         B::StorageBuffer, B::StorageBuffer },
       sizeof(ChunkPush),
       nearest ? "sweep march (pooled, nearest)" : "sweep march (pooled)", { nearest });
@@ -512,11 +512,11 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
     march.Bind(0, volume.Image()).Bind(2, majorants.Image());
     march.Bind(7, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   }
-  march.Bind(1, tf.Lut()).Bind(3, globals).Bind(4, dirs).Bind(5, state).Bind(6, stack);
+  march.BindTexels(1, tf.Lut(), vk::Format::eR32Sfloat).Bind(3, globals).Bind(4, dirs).Bind(5, state).Bind(6, stack);
   DescriptorSet project(*this->Project_);
-  project.Bind(0, globals).Bind(1, dirs).Bind(2, filtered).Bind(3, *this->Image_);
+  project.Bind(0, globals).Bind(1, dirs).BindTexels(2, filtered, vk::Format::eR32Sfloat).Bind(3, *this->Image_);
   DescriptorSet filter(*this->Filter_);
-  filter.Bind(0, globals).Bind(1, dirs).Bind(2, stack).Bind(3, filtered);
+  filter.Bind(0, globals).Bind(1, dirs).BindTexels(2, stack, vk::Format::eR32Sfloat).Bind(3, filtered);
 
   for (size_t bi = 0; bi < plan.Batches.size(); ++bi)
   {
@@ -622,14 +622,14 @@ void VisibilityGrid::RunBruteForce(const DeviceVolume& volume, const TransferFun
   {
     using B = BindingType;
     this->Brute_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_visibility_bruteforce),
-      std::vector<B>{ B::StorageImage, B::StorageBuffer, B::StorageImage, B::StorageBuffer, B::StorageImage,
+      std::vector<B>{ B::StorageImage, B::UniformTexelBuffer, B::StorageImage, B::StorageBuffer, B::StorageImage,
         B::StorageImage },
       sizeof(SlicePush), extinctionFactor ? "visibility brute force (gradient opacity)" : "visibility brute force",
       { 0u, extinctionFactor });
     this->BruteFactor_ = extinctionFactor;
   }
   DescriptorSet set(*this->Brute_);
-  set.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, majorants.Image()).Bind(3, globals).Bind(4, *this->Image_);
+  set.Bind(0, volume.Image()).BindTexels(1, tf.Lut(), vk::Format::eR32Sfloat).Bind(2, majorants.Image()).Bind(3, globals).Bind(4, *this->Image_);
   set.Bind(5, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   const auto& c = this->Plan_.Cells;
   const uint32_t cells = c[0] * c[1] * c[2];

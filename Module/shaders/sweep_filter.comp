@@ -22,7 +22,9 @@ layout(constant_id = 0) const int VS_TAPS = 4;
 const int VS_TAPS_ARRAY = VS_TAPS > 0 ? VS_TAPS : 1;
 layout(std430, binding = 0) readonly buffer Globals { VsSweepGlobals G; };
 layout(std430, binding = 1) readonly buffer Directions { VsSweepDirection uDir[]; };
-layout(std430, binding = 2) readonly buffer Stack { float uStack[]; };
+/* r32f texels: lavapipe gathers a texel buffer at per-lane indices in one vector load, a storage
+ * buffer in a scalar loop over the lanes. */
+layout(binding = 2) uniform samplerBuffer uStack;
 layout(std430, binding = 3) writeonly buffer Filtered { float uFiltered[]; };
 layout(push_constant) uniform Push { uint firstSlice; uint count; uint firstDirection; } pc;
 
@@ -55,7 +57,7 @@ void main()
     {
       float sum = 0.0;
       for (int i = w.first; i <= w.last; ++i)
-        sum += uStack[base + row * n.x + uint(i)] * vs_kernel_tap_weight(w.lo0, w.hi0, w.inv0, w.lo1, w.hi1, w.inv1, w.f, i);
+        sum += texelFetch(uStack, int(base + row * n.x + uint(i))).r * vs_kernel_tap_weight(w.lo0, w.hi0, w.inv0, w.lo1, w.hi1, w.inv1, w.f, i);
       uFiltered[out0 + row * cellsA] = sum / weights;
     }
     return;
@@ -74,7 +76,7 @@ void main()
   {
     float sum = 0.0;
     for (int i = 0; i < VS_TAPS; ++i)
-      sum += uStack[ray[i] + row * n.x] * weight[i];
+      sum += texelFetch(uStack, int(ray[i] + row * n.x)).r * weight[i];
     // Divided by the weights' sum (1 up to rounding), so that a constant kernel stays exactly constant.
     uFiltered[out0 + row * cellsA] = sum / weights;
   }

@@ -19,11 +19,13 @@
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 #ifdef VS_SWEEP_POOLED
 layout(binding = 0, r32f) uniform readonly image3D uPool;
-layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
+#define VS_TF_TEXELS
+layout(binding = 1) uniform samplerBuffer uTF; /* r32f: the table's floats (volume_access.glsl) */
 layout(binding = 2, r32f) uniform readonly image3D uPoolOccupancy;
 #else
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
-layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
+#define VS_TF_TEXELS
+layout(binding = 1) uniform samplerBuffer uTF; /* r32f: the table's floats (volume_access.glsl) */
 layout(binding = 2, r32f) uniform readonly image3D uMajorant;
 layout(binding = 7, r32f) uniform readonly image3D uFactor; /* read only with VS_SWEEP_FACTOR (sweep_access.glsl) */
 #define VS_FACTOR_IMAGE

@@ -19,7 +19,8 @@ layout(constant_id = 1) const uint VS_POOL_MAX = 0u;
 layout(constant_id = 2) const uint VS_POOL_CROP = 0u;
 layout(constant_id = 3) const uint VS_POOL_FACTOR = 0u;
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
-layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
+#define VS_TF_TEXELS
+layout(binding = 1) uniform samplerBuffer uTF; /* r32f: the table's floats (volume_access.glsl) */
 layout(binding = 2, r32f) uniform writeonly image3D uPooled;
 layout(binding = 3, r32f) uniform readonly image3D uFactor; /* read only with VS_POOL_FACTOR */
 layout(push_constant) uniform Push

@@ -19,7 +19,7 @@ layout(constant_id = 0) const int VS_TAPS = 4;
 const int VS_TAPS_ARRAY = VS_TAPS > 0 ? VS_TAPS : 1;
 layout(std430, binding = 0) readonly buffer Globals { VsSweepGlobals G; };
 layout(std430, binding = 1) readonly buffer Directions { VsSweepDirection uDir[]; };
-layout(std430, binding = 2) readonly buffer Filtered { float uFiltered[]; };
+layout(binding = 2) uniform samplerBuffer uFiltered; /* r32f texels: gathered, as sweep_filter.comp's uStack */
 layout(binding = 3, VS_VIS_FORMAT) uniform writeonly image3D uVisibility;
 layout(push_constant) uniform Push { uint firstSlice; uint count; uint firstDirection; } pc;
 
@@ -61,7 +61,7 @@ void main()
     {
       float V = 0.0;
       for (int j = w.first; j <= w.last; ++j)
-        V += uFiltered[at + uint(j) * cellsA + ca] * vs_kernel_tap_weight(w.lo0, w.hi0, w.inv0, w.lo1, w.hi1, w.inv1, w.f, j);
+        V += texelFetch(uFiltered, int(at + uint(j) * cellsA + ca)).r * vs_kernel_tap_weight(w.lo0, w.hi0, w.inv0, w.lo1, w.hi1, w.inv1, w.f, j);
       imageStore(uVisibility, first + int(ca) * step, vec4(clamp(V / weights, 0.0, 1.0)));
     }
     return;
@@ -80,7 +80,7 @@ void main()
   {
     float V = 0.0;
     for (int i = 0; i < VS_TAPS; ++i)
-      V += uFiltered[row[i] + ca] * weight[i];
+      V += texelFetch(uFiltered, int(row[i] + ca)).r * weight[i];
     // Divided by the weights' sum (1 up to rounding), so that a constant kernel stays exactly constant.
     imageStore(uVisibility, first + int(ca) * step, vec4(clamp(V / weights, 0.0, 1.0)));
   }

@@ -12,7 +12,8 @@
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
-layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
+#define VS_TF_TEXELS
+layout(binding = 1) uniform samplerBuffer uTF; /* r32f: the table's floats (volume_access.glsl) */
 layout(binding = 2, r32f) uniform readonly image3D uMajorant;
 layout(std430, binding = 3) readonly buffer Globals { VsSweepGlobals G; };
 layout(binding = 4) uniform writeonly image3D uVisibility;
