@@ -1009,6 +1009,9 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     // grid fills in (waiting for half of the light's importance swept at AutoProbeFraction left
     // mri_courtyard's grid unmeasured for 13 s of a 16 s budget).
     const bool ready = grid && !flatGrid;
+    // The Sobol sampler's strata lower Environment sampling's error of the mean more than TwoStep's.
+    I.Selector.SetStratificationGain(
+      this->Sampler == SobolSampler ? vs::StrategySelector::SobolStratificationGain : 1.0);
     // A tile (not a frame of the view) leaves the selector alone: TwoStep once it has measured better.
     estimator = interactive ? vs::StrategySelector::EnvironmentEstimator
       : tiled ? (ready && I.Selector.GridEfficiencyRatio() > 1.0 ? vs::StrategySelector::GridEstimator

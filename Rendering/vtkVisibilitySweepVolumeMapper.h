@@ -99,7 +99,9 @@ public:
   /** The light-direction strategy at scatter events. Default Auto: Environment sampling from the
    *  first frame while the visibility grid fills in between frames (no sweeps for a volume too
    *  thin to shadow), then per frame the better of Environment and TwoStep by the efficiency
-   *  1 / (variance x time per sample) measured on earlier frames. A choice made from earlier
+   *  1 / (variance x time per sample) measured on earlier frames (under the Sobol sampler TwoStep
+   *  must measure 1.25x as efficient per sample: the sampler's strata lower Environment
+   *  sampling's error by that much more, which per-sample variances do not show). A choice made from earlier
    *  samples only applies to later ones, so every sample, and their mean, stays unbiased.
    *  GetEffectiveStrategy() tells what the last frame used. */
   vtkSetClampMacro(SamplingStrategy, int, Uniform, Auto);

@@ -36,6 +36,11 @@ void StrategySelector::ResetGrid()
 
 double StrategySelector::GridEfficiencyRatio() const
 {
+  return this->PerSampleEfficiencyRatio() / this->StratificationGain_;
+}
+
+double StrategySelector::PerSampleEfficiencyRatio() const
+{
   const Stats& e = this->Stats_[EnvironmentEstimator];
   const Stats& g = this->Stats_[GridEstimator];
   if (e.Variance <= 0.0 || g.Variance <= 0.0 || e.SecondsPerSample <= 0.0 || g.SecondsPerSample <= 0.0)
@@ -130,7 +135,7 @@ void StrategySelector::EndEpoch(double meanSquare)
     if (measured[GridEstimator])
     {
       this->GridWorth_ = ratio > 1.0 || !this->GridJudgeable_ ||
-        (!this->GridComplete_ && ratio > PartialGridTolerance);
+        (!this->GridComplete_ && this->PerSampleEfficiencyRatio() > PartialGridTolerance);
       this->GridVerdict_ = true;
     }
   }

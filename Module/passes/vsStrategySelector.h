@@ -59,9 +59,10 @@ public:
   /** Whether sweeping more directions is worth it: false while TwoStep, measured on a grid that
    *  can be judged (SetGridJudgeable), is less efficient than Environment sampling (re-evaluated
    *  at every epoch that measured TwoStep). While the grid is incomplete, TwoStep within
-   *  PartialGridTolerance of Environment sampling is worth completing: its unswept directions
-   *  read swept ones (FillUnswept), so a partial grid measures at best about as good as
-   *  Environment sampling, and only the complete grid shows what the grid gains. */
+   *  PartialGridTolerance of Environment sampling per sample (PerSampleEfficiencyRatio: the
+   *  question there is whether the grid's pdf is heading somewhere) is worth completing: its
+   *  unswept directions read swept ones (FillUnswept), so a partial grid measures at best about as
+   *  good as Environment sampling, and only the complete grid shows what the grid gains. */
   bool GridWorthSweeping() const { return this->GridWorth_; }
   /** The share of the render time to grant the grid's sweeps, between `probe` and `full`: `probe`
    *  until TwoStep has measured more efficient than Environment sampling, then half of the measured
@@ -78,11 +79,25 @@ public:
   void SetGridJudgeable(bool judgeable) { this->GridJudgeable_ = judgeable; }
   static constexpr double PartialGridTolerance = 0.9;
 
+  /** How much further Environment sampling's error of the mean falls below v / N than TwoStep's
+   *  does (>= 1; 1, the default, for independent samples). Per-sample variances cannot see a
+   *  stratified sampler: under the Sobol sampler the error of the mean falls faster than v / N, and
+   *  by more for Environment sampling, whose one warp keeps the sequence's strata, than for
+   *  TwoStep, which warps each number through the table of a cell picked per sample. Measured
+   *  at equal spp (docs/benchmarks.md): 1.21-1.27 on mri_sunrise and 1.21-1.37 on mri_courtyard
+   *  over 16-256 spp (SobolStratificationGain). */
+  void SetStratificationGain(double gain) { this->StratificationGain_ = gain >= 1.0 ? gain : 1.0; }
+  double GetStratificationGain() const { return this->StratificationGain_; }
+  static constexpr double SobolStratificationGain = 1.25;
+
   /** Measured per-sample variance and device seconds per sample of an estimator (0 = unknown). */
   double Variance(Estimator e) const { return this->Stats_[e].Variance; }
   double SecondsPerSample(Estimator e) const { return this->Stats_[e].SecondsPerSample; }
-  /** Efficiency of TwoStep over Environment, 1/(v t) ratio; 0 while unknown. */
+  /** Efficiency of TwoStep over Environment at equal time: the 1/(v t) ratio divided by the
+   *  stratification gain; 0 while unknown. */
   double GridEfficiencyRatio() const;
+  /** The 1/(v t) ratio of the per-sample measurements alone; 0 while unknown. */
+  double PerSampleEfficiencyRatio() const;
   Estimator Preferred() const { return this->Preferred_; }
   uint32_t Decisions() const { return this->Decisions_; }
 
@@ -112,6 +127,7 @@ private:
   bool GridVerdict_ = false;  // GridWorth_ was decided for this grid
   bool GridComplete_ = true;
   bool GridJudgeable_ = true;
+  double StratificationGain_ = 1.0;
   uint32_t Frame_ = 0, EpochFrame_ = 0, Decisions_ = 0;
   uint64_t Pixels_ = 0;
   double MeanSquare_ = 0.0;

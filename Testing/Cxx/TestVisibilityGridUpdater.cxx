@@ -302,6 +302,42 @@ TEST(StrategySelector, PrefersTheMoreEfficientEstimatorAndKeepsExploring)
   }
 }
 
+TEST(StrategySelector, AStratifiedSamplerRaisesTheBarTheGridMustClear)
+{
+  // TwoStep 1.2x as efficient per sample: preferred, and swept on, with independent samples; not
+  // under a sampler whose strata gain Environment sampling 1.25x more (the Sobol sampler's).
+  StrategySelector independent;
+  GridFramesOfLast64(independent, 1.0, 1.0 / 1.2, 1.0, 1.0);
+  EXPECT_EQ(independent.Preferred(), StrategySelector::GridEstimator);
+  EXPECT_TRUE(independent.GridWorthSweeping());
+  StrategySelector sobol;
+  sobol.SetStratificationGain(StrategySelector::SobolStratificationGain);
+  GridFramesOfLast64(sobol, 1.0, 1.0 / 1.2, 1.0, 1.0);
+  EXPECT_EQ(sobol.Preferred(), StrategySelector::EnvironmentEstimator);
+  EXPECT_NEAR(sobol.PerSampleEfficiencyRatio(), 1.2, 1e-6);
+  EXPECT_NEAR(sobol.GridEfficiencyRatio(), 1.2 / StrategySelector::SobolStratificationGain, 1e-6);
+  EXPECT_FALSE(sobol.GridWorthSweeping()) << "a complete grid that loses at equal time stops sweeping";
+  EXPECT_EQ(sobol.SweepFraction(0.05, 0.25), 0.05);
+  // Clearing the bar: 1.5x per sample is 1.2x at equal time.
+  StrategySelector wins;
+  wins.SetStratificationGain(StrategySelector::SobolStratificationGain);
+  GridFramesOfLast64(wins, 1.0, 1.0 / 1.5, 1.0, 1.0);
+  EXPECT_EQ(wins.Preferred(), StrategySelector::GridEstimator);
+  EXPECT_NEAR(wins.SweepFraction(0.05, 0.25), 0.1, 1e-6);
+  // A partial grid is judged per sample: one nearly as good as Environment sampling (0.95) is
+  // worth completing under any sampler, though it loses at equal time.
+  StrategySelector partial;
+  partial.SetStratificationGain(StrategySelector::SobolStratificationGain);
+  partial.SetGridComplete(false);
+  GridFramesOfLast64(partial, 1.0, 1.0, 1.0, 1.0 / 0.95);
+  EXPECT_EQ(partial.Preferred(), StrategySelector::EnvironmentEstimator);
+  EXPECT_TRUE(partial.GridWorthSweeping());
+  // Gains below 1 mean no stratification.
+  StrategySelector clamped;
+  clamped.SetStratificationGain(0.5);
+  EXPECT_EQ(clamped.GetStratificationGain(), 1.0);
+}
+
 TEST(StrategySelector, ProbesAreBoundedInSamplesNotFrames)
 {
   StrategySelector s;
