@@ -27,6 +27,7 @@
  * the host dispatches again until none is. A pixel's samples are its indices 0, 1, ... in order
  * whatever the split, so its sums are the same bits for any split into dispatches and frames.
  */
+#include "brick_walk.h"
 #include "octahedral.h"
 #ifdef VS_RAY_MARCHING
 #include "ray_marching.h"
@@ -151,14 +152,14 @@ float gInvBrickSize;
 struct RayConstants
 {
   vec3 invD;       /* 1 / d per axis (inf where d is 0: masked where used) */
-  float invLength; /* 1 / |d|: the shortest step's scale (min_step) */
+  float walkScale; /* the brick walk's shortest step scale (brick_walk.h vs_walk_scale) */
 };
 RayConstants gRay;
 
-void set_ray(vec3 d)
+void set_ray(vec3 o, vec3 d)
 {
   gRay.invD = 1.0 / d;
-  gRay.invLength = 1.0 / max(length(d), 1e-20);
+  gRay.walkScale = vs_walk_scale(o, d);
 }
 uint gShadowRays;
 uint gShadowBudget; /* tracking steps the shadow rays of one sample share (main) */
@@ -221,27 +222,20 @@ float cell_face_distance(float p, float d, int lo, int dim)
   return 1e30;
 }
 
-/* Where the ray o + t d leaves the cube of bricks [b - r, b + r] (r >= 0 bricks; r = 0: brick b):
- * the face ahead on each axis by the ray's reciprocal direction (1e30 where it is parallel), at
- * least the shortest step on (a sliver of the previous brick shorter than float resolves may go
- * with this one; rounding may put the point on the far side of a face: always move forward). */
+/* Where the ray o + t d leaves the cube of bricks [b - r, b + r] (r >= 0 bricks; r = 0: brick b),
+ * at least the shortest step on (brick_walk.h). */
 float brick_cube_exit(vec3 o, vec3 d, float t, ivec3 b, float r)
 {
-  float h = 2e-6 * max(abs(t), gRay.invLength);
-  vec3 p = o + t * d;
-  vec3 lo = (vec3(b) - r) * gBrickSize, hi = (vec3(b) + r + 1.0) * gBrickSize;
-  vec3 e3 = (mix(lo, hi, greaterThan(d, vec3(0.0))) - p) * gRay.invD;
-  e3 = mix(vec3(1e30), e3, greaterThan(abs(d), vec3(1e-20)));
-  return t + max(min(e3.x, min(e3.y, e3.z)), h);
+  return vs_brick_cube_exit(o, d, gRay.invD, t, vs_walk_min_step(t, gRay.walkScale), b, r, gBrickSize);
 }
 
-/* The brick the ray o + t d is in just after t (at t + half the shortest step: a brick and a cell
- * are picked at the same point), and the distance t where it leaves it (brick_cube_exit). */
+/* The brick the ray o + t d is in just after t (a brick and a cell are picked at the same point),
+ * and the distance t where it leaves it (brick_walk.h). */
 ivec3 brick_at(vec3 o, vec3 d, float t, out float tExit)
 {
-  float h = 2e-6 * max(abs(t), gRay.invLength);
-  ivec3 b = ivec3(floor((o + (t + 0.5 * h) * d) * gInvBrickSize));
-  tExit = brick_cube_exit(o, d, t, b, 0.0);
+  float h = vs_walk_min_step(t, gRay.walkScale);
+  ivec3 b = vs_brick_after(o, d, t, h, gInvBrickSize);
+  tExit = vs_brick_cube_exit(o, d, gRay.invD, t, h, b, 0.0, gBrickSize);
   return b;
 }
 
@@ -559,7 +553,7 @@ vec3 sample_direction(uint strategy, vec2 u, out float pdf)
 bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, inout uint cost, out float tHit,
   out vec3 albedo)
 {
-  set_ray(d);
+  set_ray(o, d);
   float t = t0;
   uint steps = 0u;
   bool hit = false;
@@ -630,7 +624,7 @@ bool delta_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, 
 /* Ratio tracking of the transmittance on [t0, t1), with Russian roulette once it is small. */
 float ratio_track(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, inout uint cost)
 {
-  set_ray(d);
+  set_ray(o, d);
   float T = 1.0;
   float t = t0;
   uint steps = 0u;
@@ -768,7 +762,7 @@ vec2 majorant_depth(vec3 o, vec3 d, float t0, float t1, uint cap, inout uint ste
  * majorant depth (an upper bound of the residual optical depth: more samples than for the mean). */
 float march_transmittance(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, inout uint cost)
 {
-  set_ray(d);
+  set_ray(o, d);
   uint steps = 0u;
   vec2 depth = majorant_depth(o, d, t0, t1, cap, steps);
   if (steps >= cap)
@@ -831,7 +825,7 @@ float shadow_transmittance(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, 
 void camera_reservoir(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint cap, inout uint cost, out float tSel,
   out vec3 weight, out float T)
 {
-  set_ray(d);
+  set_ray(o, d);
   tSel = -1.0;
   weight = vec3(0.0);
   T = 1.0;

@@ -19,6 +19,7 @@
 #ifndef VS_SWEEP_POOLED
 #include "volume_access.glsl"
 #endif
+#include "brick_walk.h"
 
 ivec3 gDims;
 ivec3 gBricks;
@@ -127,20 +128,11 @@ float vs_brick_majorant(vec3 p)
 }
 #endif
 
-/* Distance from p along d to the exit of the brick holding p (>= 0). */
+/* Distance from p along d to the exit of the brick holding p (>= 0; brick_walk.h). */
 float vs_brick_exit(vec3 p, vec3 d)
 {
   vec3 lo = floor(p / gBrickSize) * gBrickSize;
-  vec3 hi = lo + gBrickSize;
-  float t = 1e30;
-  for (int i = 0; i < 3; ++i)
-  {
-    if (d[i] > 1e-20)
-      t = min(t, (hi[i] - p[i]) / d[i]);
-    else if (d[i] < -1e-20)
-      t = min(t, (lo[i] - p[i]) / d[i]);
-  }
-  return max(t, 0.0);
+  return max(vs_box_exit_distance(p, d, 1.0 / d, lo, lo + gBrickSize), 0.0);
 }
 
 /* Optical depth along o + t d for t in [t0, t1] (world units), midpoint rule with
