@@ -31,6 +31,19 @@ namespace vs
 {
 namespace
 {
+/** The most floats one of the sweeps' work buffers (the kernel stack, the filtered slices) holds:
+ *  bound by the storage buffers they are written as and the texel buffers they are read through
+ *  (maxTexelBufferElements can be below maxStorageBufferRange / 4 on a GPU), at most 64 MiB. */
+uint64_t WorkBufferFloats(const DeviceInfo& info)
+{
+  uint64_t floats = std::min<uint64_t>(info.MaxStorageBufferRange, 64ull << 20) / sizeof(float);
+  if (info.MaxTexelBufferElements > 0)
+  {
+    floats = std::min<uint64_t>(floats, info.MaxTexelBufferElements);
+  }
+  return floats;
+}
+
 /** One shader's SPIR-V, compiled once per storage format of the grid (VS_VIS_FORMAT). */
 struct PerFormatSpirv
 {
@@ -156,7 +169,7 @@ bool VisibilityGrid::Allocate(
     return false;
   }
   const auto& info = this->Context_->Info();
-  const uint64_t maxFloats = std::min<uint64_t>(info.MaxStorageBufferRange, 64ull << 20) / sizeof(float);
+  const uint64_t maxFloats = WorkBufferFloats(info);
   CheckFits(*this->Context_, geometry, parameters);
   this->Image_.reset();
   this->Plan_ = SweepPlan::Make(geometry, parameters, maxFloats, {}, 8, info.MaxImageDimension3D);
@@ -263,7 +276,7 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
       " clipping planes that cut the volume are supported, got " + std::to_string(worldClipPlanes.size()));
   }
   const auto& info = this->Context_->Info();
-  const uint64_t maxFloats = std::min<uint64_t>(info.MaxStorageBufferRange, 64ull << 20) / sizeof(float);
+  const uint64_t maxFloats = WorkBufferFloats(info);
 
   std::vector<uint32_t> directions = requested;
   // A new layout swept in part: the other directions read 0, never the fresh image's garbage.
@@ -448,7 +461,7 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
       nearest ? "sweep march (pooled, nearest)" : "sweep march (pooled)", { nearest });
     this->MarchPooledNearest_ = nearest;
   }
-  const uint64_t budget = std::min<uint64_t>(this->Context_->Info().MaxStorageBufferRange, 64ull << 20) / sizeof(float);
+  const uint64_t budget = WorkBufferFloats(this->Context_->Info());
 
   // Directions in batch order, so a batch is a contiguous range of the buffer; per batch, the
   // slices per chunk so that its kernel stack (rays x slices) and the kernel filtered along a
