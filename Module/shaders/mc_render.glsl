@@ -202,12 +202,6 @@ vec3 brick_walk_values(ivec3 b)
   return imageLoad(uBricks, clamp(b, ivec3(0), gBricks - 1)).xyz;
 }
 
-/* The shortest step the trackers take from t: ~16 ulps of t (or 2e-6 voxel), so t + step > t. */
-float min_step(float t, vec3 d)
-{
-  return 2e-6 * max(abs(t), 1.0 / max(length(d), 1e-20));
-}
-
 /* The kernel's hot paths are written without constant-length loops: lavapipe's loop limiter counts
  * every back-edge (see the top of this file), and a loop the compiler keeps would cost budget. */
 
@@ -312,7 +306,7 @@ void bisect_step(vec3 o, vec3 d, float t, ivec3 lo, vec4 c0, vec4 c1, inout floa
  * the ray and the estimators stay unbiased. */
 float refine_majorant(vec3 o, vec3 d, float t, inout float tNext, float mu)
 {
-  float hMin = min_step(t, d);
+  float hMin = vs_walk_min_step(t, gRay.walkScale); /* the brick walk's shortest step (brick_walk.h) */
   vec3 p = o + t * d;
   ivec3 lo = clamp(ivec3(floor(o + (t + 0.5 * hMin) * d)), ivec3(0), max(gDims - 2, ivec3(0)));
   ivec3 hi = min(lo + 1, gDims - 1);
