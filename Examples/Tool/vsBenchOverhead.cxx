@@ -35,7 +35,7 @@ struct Options
   std::vector<std::string> Strategies{ "uniform", "environment", "visibility", "combined", "two-step" };
   bool CellModes = true;
   bool Quick = false;
-  int ShadowRays = 1;
+  int ShadowRays = 0; // 0: the scene's (render.shadow_rays)
   std::string Camera = "collision";
   std::string Control; // empty: the mapper's default
   std::string Sampler; // empty: the mapper's default
@@ -81,7 +81,10 @@ Measurement Measure(
   mapper->SetDefensiveWeight(defensive);
   mapper->SetSamplingStrategy(StrategyIndex(strategy, "--strategies"));
   mapper->SetCellMode(cellMode);
-  mapper->SetShadowRays(o.ShadowRays);
+  if (o.ShadowRays > 0)
+  {
+    mapper->SetShadowRays(o.ShadowRays);
+  }
   mapper->SetCameraEstimator(o.Camera == "reservoir" ? vtkVisibilitySweepVolumeMapper::ReservoirCamera
                                                      : vtkVisibilitySweepVolumeMapper::CollisionCamera);
   if (!o.Sampler.empty())
@@ -282,7 +285,7 @@ void AddBenchOverhead(CLI::App& bench)
   cmd->add_flag("!--no-cell-modes", o->CellModes,
     "skip the variants of the grid strategies (stochastic cell without the direction table, trilinear cells)");
   cmd->add_flag("--quick", o->Quick, "64 x 64, 1 spp, 1 frame (seconds; for tests)");
-  cmd->add_option("--shadow-rays", o->ShadowRays, "shadow rays per scatter point (splitting)")->check(CLI::Range(1, 64));
+  cmd->add_option("--shadow-rays", o->ShadowRays, "shadow rays per scatter point (splitting; default: the scene's render.shadow_rays)")->check(CLI::Range(1, 64));
   cmd->add_option("--sampler", o->Sampler,
        "pixel jitter and light directions: independent or sobol (the per-sample variance it reports does not "
        "show the Sobol sampler's gain, which is in the error of the mean: bench convergence)")

@@ -171,6 +171,7 @@ int Run(const RenderOptions& o)
   stats["directions_swept"] = mapper->GetDirectionsUpdatedTotal();
   stats["pending_directions"] = mapper->GetPendingDirections();
   stats["seed"] = scene.Render.Seed;
+  stats["shadow_rays"] = mapper->GetShadowRays();
   stats["spp"] = reached;
   if (timed)
   {
@@ -493,6 +494,7 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   mapper->SetControlExtinction(ControlExtinctionIndex(scene.Render.ControlExtinction));
   mapper->SetTransmittanceEstimator(TransmittanceEstimatorIndex(scene.Render.TransmittanceEstimator));
   mapper->SetSampler(SamplerIndex(scene.Render.Sampler));
+  mapper->SetShadowRays(scene.Render.ShadowRays);
   mapper->SetDirectionsPerFrame(scene.Render.DirectionsPerFrame);
   mapper->SetStaticInterval(scene.Render.StaticInterval);
   const auto& v = scene.Visibility;

@@ -551,7 +551,7 @@ Scene::RenderSection ParseRender(const json& v)
   RequireObject(v, path);
   CheckKeys(v, path,
     { "width", "height", "spp", "strategy", "seed", "exposure", "tone_mapping", "update_scheme",
-      "directions_per_frame", "static_interval", "control_extinction", "transmittance_estimator", "sampler" });
+      "directions_per_frame", "static_interval", "control_extinction", "transmittance_estimator", "sampler", "shadow_rays" });
   Scene::RenderSection s;
   if (v.contains("width"))
   {
@@ -595,6 +595,10 @@ Scene::RenderSection ParseRender(const json& v)
   {
     s.StaticInterval = Integer(v["static_interval"], "render.static_interval", 1,
       std::numeric_limits<int>::max(), "frames between static updates");
+  }
+  if (v.contains("shadow_rays"))
+  {
+    s.ShadowRays = Integer(v["shadow_rays"], "render.shadow_rays", 1, 64, "shadow rays per scatter point");
   }
   if (v.contains("control_extinction"))
   {
@@ -868,9 +872,10 @@ bool Scene::CameraSection::operator==(const CameraSection& o) const
 bool Scene::RenderSection::operator==(const RenderSection& o) const
 {
   return std::tie(Width, Height, Spp, Strategy, Seed, Exposure, ToneMapping, UpdateScheme, DirectionsPerFrame,
-           StaticInterval, ControlExtinction, TransmittanceEstimator, Sampler) ==
+           StaticInterval, ControlExtinction, TransmittanceEstimator, Sampler, ShadowRays) ==
     std::tie(o.Width, o.Height, o.Spp, o.Strategy, o.Seed, o.Exposure, o.ToneMapping, o.UpdateScheme,
-      o.DirectionsPerFrame, o.StaticInterval, o.ControlExtinction, o.TransmittanceEstimator, o.Sampler);
+      o.DirectionsPerFrame, o.StaticInterval, o.ControlExtinction, o.TransmittanceEstimator, o.Sampler,
+      o.ShadowRays);
 }
 
 bool Scene::VisibilitySection::operator==(const VisibilitySection& o) const
@@ -1076,7 +1081,8 @@ json ToJson(const Scene& s)
     { "tone_mapping", s.Render.ToneMapping }, { "update_scheme", s.Render.UpdateScheme },
     { "directions_per_frame", s.Render.DirectionsPerFrame }, { "static_interval", s.Render.StaticInterval },
     { "control_extinction", s.Render.ControlExtinction },
-    { "transmittance_estimator", s.Render.TransmittanceEstimator }, { "sampler", s.Render.Sampler } };
+    { "transmittance_estimator", s.Render.TransmittanceEstimator }, { "sampler", s.Render.Sampler },
+    { "shadow_rays", s.Render.ShadowRays } };
 
   const auto& v = s.Visibility;
   json vis = json::object();

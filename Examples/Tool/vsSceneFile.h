@@ -112,6 +112,8 @@ struct Scene
     std::string TransmittanceEstimator = "ratio-tracking";
     // vtkVisibilitySweepVolumeMapper::Sampler: "independent" or "sobol".
     std::string Sampler = "sobol";
+    // Shadow rays per scatter point (vtkVisibilitySweepVolumeMapper::ShadowRays, 1-64: splitting).
+    int ShadowRays = 1;
     bool operator==(const RenderSection& o) const;
   };
   struct VisibilitySection

@@ -40,7 +40,7 @@ json FullScene()
     "render": {"width": 320, "height": 200, "spp": 64, "strategy": "combined", "seed": 7, "exposure": 1.5,
                "tone_mapping": false, "update_scheme": "round-robin", "directions_per_frame": 8,
                "static_interval": 12, "control_extinction": "camera",
-               "transmittance_estimator": "ray-marching", "sampler": "independent"},
+               "transmittance_estimator": "ray-marching", "sampler": "independent", "shadow_rays": 3},
     "visibility": {"direction_resolution": 16, "voxels_per_cell": 8, "kernel_resolution": 64, "filtering": false,
                    "filter_angle_fraction": 0.25, "epsilon": 0.02, "cell_mode": "trilinear",
                    "skip_unlit_directions": false, "progressive": false, "sweep_frame_fraction": 0.5,
@@ -104,6 +104,7 @@ TEST(SceneFile, ParsesEverySection)
   EXPECT_EQ(s.Render.TransmittanceEstimator, "ray-marching");
   EXPECT_EQ(vstool::TransmittanceEstimatorIndex(s.Render.TransmittanceEstimator), 1);
   EXPECT_EQ(s.Render.Sampler, "independent");
+  EXPECT_EQ(s.Render.ShadowRays, 3);
 
   EXPECT_EQ(s.Visibility.DirectionResolution.value(), 16);
   EXPECT_EQ(s.Visibility.CellMode.value(), "trilinear");
@@ -142,6 +143,7 @@ TEST(SceneFile, DefaultsOfOptionalSections)
   EXPECT_EQ(s.Render.ControlExtinction, "shadow");
   EXPECT_EQ(s.Render.TransmittanceEstimator, "ratio-tracking");
   EXPECT_EQ(s.Render.Sampler, "sobol");
+  EXPECT_EQ(s.Render.ShadowRays, 1);
 
   EXPECT_FALSE(s.Visibility.DirectionResolution.has_value());
   EXPECT_TRUE(s.ClipPlanes.empty());
@@ -243,6 +245,9 @@ TEST(SceneFile, EqualityNoticesChanges)
   EXPECT_FALSE(a == b);
   b = a;
   b.Render.Sampler = a.Render.Sampler == "sobol" ? "independent" : "sobol";
+  EXPECT_FALSE(a == b);
+  b = a;
+  b.Render.ShadowRays = a.Render.ShadowRays + 1;
   EXPECT_FALSE(a == b);
 }
 
@@ -415,6 +420,8 @@ TEST(SceneFile, BadValues)
     "render.update_scheme: expected a string, got number");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["directions_per_frame"] = 0; }),
     "render.directions_per_frame: directions per frame 0 not in [1, 4096]");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["shadow_rays"] = 65; }),
+    "render.shadow_rays: shadow rays per scatter point 65 not in [1, 64]");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["static_interval"] = 1.5; }),
     "render.static_interval: expected an integer");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["transfer_function"]["opacity"][2][1] = 1.5; }),
