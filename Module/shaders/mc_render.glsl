@@ -164,7 +164,7 @@ void set_ray(vec3 o, vec3 d)
 uint gShadowRays;
 uint gShadowBudget; /* tracking steps the shadow rays of one sample share (main) */
 uint gTableBase; /* where the scatter cell's direction table starts (VS_SPEC_TABLE) */
-/* The stochastic cell pick's numbers: the pixel's own, the same for all its samples (render_sample).
+/* The stochastic cell pick's numbers: the pixel's own, the same for all its samples (main).
  * Each pick is unbiased whatever the numbers (the sample is scored with the pdf of the cell it
  * warped through), and a pixel whose samples warp through one cell's table keeps the Sobol
  * sequence's strata of its light directions: 2% lower MSE at 256 spp (docs/benchmarks.md). */
@@ -963,7 +963,6 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPer
    * stratified across the pixel's samples; everything else from the sample's hash stream. */
   uvec3 sobolSeeds = VS_SPEC_SOBOL ? vs_pcg4d(uvec4(pix, gViewport.w, 0x50b01u)).xyz : uvec3(0u);
   vec2 jitter = VS_SPEC_SOBOL ? vs_sobol_2d(sampleIndex, sobolSeeds.x) : vs_rng_vec2(rng);
-  gCellU = vec3(vs_pcg4d(uvec4(pix, gViewport.w, 0xce11u)).xyz >> 8u) * (1.0 / 16777216.0);
   vec2 ndc = (vec2(pix) + jitter) / vec2(W, H) * 2.0 - 1.0;
   vec4 pn = gInvViewProj * vec4(ndc, -1.0, 1.0);
   vec4 pf = gInvViewProj * vec4(ndc, 1.0, 1.0);
@@ -1089,6 +1088,10 @@ void main()
   gRefineDepth = P.tracking.x > 0.0 ? P.tracking.x : 32.0;
   gInterpolation = VS_SPEC_INTERPOLATION;
   vs_set_cropping(P.cropLo, P.cropHi, VS_SPEC_CROPPING != 0u ? P.crop.x : 0u);
+#ifndef VS_NO_GRID
+  uvec4 cellHash = vs_pcg4d(uvec4(pix, gViewport.w, 0xce11u));
+  gCellU = vec3(vs_unit_float(cellHash.x), vs_unit_float(cellHash.y), vs_unit_float(cellHash.z));
+#endif
   uint idx = inside ? pix.y * W + pix.x : 0u;
   float depth = inside ? uDepth[idx] : 1.0;
 

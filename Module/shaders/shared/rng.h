@@ -49,17 +49,22 @@ VS_FUNC uint vs_rng_uint(VS_INOUT(VsRng) r)
   return h.x;
 }
 
-/* A float uniform on [0,1): the top 24 bits, so every value is exact. */
+/* A uniform uint as a float on [0,1): its top 24 bits, so every value is exact. */
+VS_FUNC float vs_unit_float(uint h)
+{
+  return float(h >> 8u) * (1.0f / 16777216.0f);
+}
+
 VS_FUNC float vs_rng_float(VS_INOUT(VsRng) r)
 {
-  return float(vs_rng_uint(r) >> 8u) * (1.0f / 16777216.0f);
+  return vs_unit_float(vs_rng_uint(r));
 }
 
 VS_FUNC vec2 vs_rng_vec2(VS_INOUT(VsRng) r)
 {
   uvec4 h = vs_pcg4d(uvec4(r.key, r.counter));
   r.counter += 1u;
-  return vec2(float(h.x >> 8u), float(h.y >> 8u)) * (1.0f / 16777216.0f);
+  return vec2(vs_unit_float(h.x), vs_unit_float(h.y));
 }
 
 VS_NAMESPACE_END
