@@ -1,5 +1,5 @@
 #include "vsVolumeInput.h"
-#include "shared/vs_prelude.h"
+#include "sampling/vs_prelude.h"
 #include "vsError.h"
 #include "vsFloatRange.h"
 

@@ -6,7 +6,7 @@
 #include "vsMajorantGrid.h"
 #include "vsTransferFunctionTable.h"
 #include "vsVolumeInput.h"
-#include "shared/interpolation.h"
+#include "sampling/interpolation.h"
 
 #include "vtkDataArray.h"
 #include "vtkImageData.h"

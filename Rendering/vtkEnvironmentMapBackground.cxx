@@ -1,6 +1,6 @@
 #include "vtkEnvironmentMapBackground.h"
 
-#include "shared/octahedral.h"
+#include "sampling/octahedral.h"
 #include "vsDisplayTransform.h"
 #include "vsEnvironmentMap.h"
 #include "vtkEnvironmentMapAlgorithm.h"

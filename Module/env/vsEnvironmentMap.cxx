@@ -1,6 +1,6 @@
 #include "vsEnvironmentMap.h"
 
-#include "shared/octahedral.h"
+#include "sampling/octahedral.h"
 
 #include <algorithm>
 #include <atomic>

@@ -10,7 +10,7 @@
  *    Pixel (i, j) has its centre at u = (i + 0.5) / W, v = (j + 0.5) / H; row 0 is the top.
  *  - Octahedral map: Size x Size texels (Size a power of two), texel (x, y) covers
  *    uv in [x, x+1) / Size x [y, y+1) / Size, mapped to directions by vs_octa_to_dir
- *    (shaders/shared/octahedral.h). The map is equal-area: every texel subtends
+ *    (sampling/octahedral.h). The map is equal-area: every texel subtends
  *    4 pi / Size^2 steradians, and a texel's value is the MEAN radiance over its
  *    solid angle (an integral, not a point sample), so the total power is exact.
  *  - Rotation (degrees about +Z): the radiance arriving from direction d is the

@@ -2,7 +2,7 @@
 
 #include "vsEnvironmentMap.h"
 #include "vsError.h"
-#include "shared/octahedral.h"
+#include "sampling/octahedral.h"
 
 #include <cmath>
 #include <string>

@@ -5,8 +5,8 @@
 // built at every scatter event, within the standard errors).
 #include "vsRenderTestScene.h"
 
-#include "shared/direction_table.h"
-#include "shared/strategies.h"
+#include "sampling/direction_table.h"
+#include "sampling/strategies.h"
 #include "vsBuffer.h"
 #include "vsDirectionTable.h"
 #include "vsError.h"

@@ -4,7 +4,7 @@
 #include "vsEmptySpaceDistance.h"
 #include "vsRenderTestScene.h"
 
-#include "shared/strategies.h"
+#include "sampling/strategies.h"
 
 #include <gtest/gtest.h>
 

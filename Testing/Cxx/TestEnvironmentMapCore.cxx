@@ -3,7 +3,7 @@
 // bad texels, and the procedural maps.
 #include "vsEnvironmentMap.h"
 
-#include "shared/octahedral.h"
+#include "sampling/octahedral.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include "vtkEnvironmentMapReader.h"
 #include "vtkEnvironmentMapSource.h"
 
-#include "shared/octahedral.h"
+#include "sampling/octahedral.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"

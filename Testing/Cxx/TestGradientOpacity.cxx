@@ -8,8 +8,8 @@
 #include "vsRenderTestScene.h"
 #include "vsVolumeScene.h"
 
-#include "shared/interpolation.h"
-#include "shared/strategies.h"
+#include "sampling/interpolation.h"
+#include "sampling/strategies.h"
 
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"

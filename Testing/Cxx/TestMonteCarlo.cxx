@@ -4,8 +4,8 @@
 // reproducibility with a fixed seed.
 #include "vsRenderTestScene.h"
 
-#include "shared/interpolation.h"
-#include "shared/strategies.h"
+#include "sampling/interpolation.h"
+#include "sampling/strategies.h"
 
 #include <gtest/gtest.h>
 

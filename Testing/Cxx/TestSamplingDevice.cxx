@@ -5,8 +5,8 @@
 // a sun, a sky and a black ground.
 #include "vsChiSquare.h"
 
-#include "shared/rng.h"
-#include "shared/strategies.h"
+#include "sampling/rng.h"
+#include "sampling/strategies.h"
 
 #include "vsBatch.h"
 #include "vsBuffer.h"

@@ -1,8 +1,8 @@
 // Uniform sphere and phase-function sampling (shared/sphere.h), exactly as the
 // shaders compile it: chi-square against each sampler's own pdf, plus the
 // chi-square helper itself.
-#include "shared/rng.h"
-#include "shared/sphere.h"
+#include "sampling/rng.h"
+#include "sampling/sphere.h"
 #include "vsChiSquare.h"
 
 #include <gtest/gtest.h>

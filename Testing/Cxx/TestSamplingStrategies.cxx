@@ -3,8 +3,8 @@
 // environments is chi-square tested against its own pdf, its pdf integrates to
 // 1, sample() reports the pdf that pdf(direction) gives, and the estimator
 // E[f/p] of a light x visibility integral agrees across strategies.
-#include "shared/rng.h"
-#include "shared/strategies.h"
+#include "sampling/rng.h"
+#include "sampling/strategies.h"
 #include "vsChiSquare.h"
 
 #include <gtest/gtest.h>

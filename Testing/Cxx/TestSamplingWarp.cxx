@@ -2,8 +2,8 @@
 // it: the tabulated n x n warp, and the descent of the environment
 // importance quadtree. Chi-square tests of the warped sample against the
 // probabilities the warp reports, plus the numerical edge cases.
-#include "shared/rng.h"
-#include "shared/warp.h"
+#include "sampling/rng.h"
+#include "sampling/warp.h"
 #include "vsChiSquare.h"
 
 #include <gtest/gtest.h>

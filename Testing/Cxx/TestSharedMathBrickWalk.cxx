@@ -2,7 +2,7 @@
 // majorant_segment and the sweeps' empty-space skip take it: the exit distance of a box is exact,
 // a walk's segments tile the ray, each lies in the brick it was picked for, and a walk takes no
 // more segments than the bricks the ray crosses (a 3D DDA's count) plus rounding slivers.
-#include "shared/brick_walk.h"
+#include "sampling/brick_walk.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The equal-area octahedral map, exactly as the shaders compile it.
-#include "shared/octahedral.h"
-#include "shared/rng.h"
+#include "sampling/octahedral.h"
+#include "sampling/rng.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // 0.31945), the march's sample count, and the estimator itself on the CPU, built from the same
 // functions as the shader's march_transmittance: its mean is exp(-tau) within the standard error on
 // a medium whose ray march is far off (where exp(-march), plain ray marching, is visibly biased).
-#include "shared/ray_marching.h"
+#include "sampling/ray_marching.h"
 
 #include <gtest/gtest.h>
 

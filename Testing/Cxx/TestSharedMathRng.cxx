@@ -1,6 +1,6 @@
 // The counter-based RNG the shaders use: uniformity (chi-square), independence
 // of neighbouring pixels and dimensions, and reproducibility.
-#include "shared/rng.h"
+#include "sampling/rng.h"
 
 #include <gtest/gtest.h>
 

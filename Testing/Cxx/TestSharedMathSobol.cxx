@@ -2,7 +2,7 @@
 // textbook generator, every prefix of 2^m points of every seed is a (0,m,2)-net (one point in every
 // elementary box), a single point is uniform over seeds (chi-square: the estimator stays unbiased),
 // and two seeds' sequences are not correlated.
-#include "shared/sobol.h"
+#include "sampling/sobol.h"
 
 #include <gtest/gtest.h>
 

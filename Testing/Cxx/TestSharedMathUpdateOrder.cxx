@@ -1,8 +1,8 @@
 // The round-robin order of lazy visibility updates (shared/update_order.h), exactly as the
 // mapper uses it: a permutation of the D x D directions per cycle, stratified (the bit-reversed
 // de-interleaved counter), and spread on the sphere.
-#include "shared/octahedral.h"
-#include "shared/update_order.h"
+#include "sampling/octahedral.h"
+#include "sampling/update_order.h"
 
 #include <gtest/gtest.h>
 

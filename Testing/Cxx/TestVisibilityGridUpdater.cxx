@@ -11,8 +11,8 @@
 #include "vsStrategySelector.h"
 #include "vsVisibilityGridUpdater.h"
 
-#include "shared/octahedral.h"
-#include "shared/update_order.h"
+#include "sampling/octahedral.h"
+#include "sampling/update_order.h"
 
 #include <gtest/gtest.h>
 

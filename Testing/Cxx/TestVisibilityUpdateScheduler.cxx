@@ -4,7 +4,7 @@
 #include "vsVisibilityUpdateScheduler.h"
 #include "vsError.h"
 
-#include "shared/update_order.h"
+#include "sampling/update_order.h"
 
 #include <gtest/gtest.h>
 

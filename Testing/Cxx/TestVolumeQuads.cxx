@@ -5,7 +5,7 @@
 #include "vsImage.h"
 #include "vsRenderTestScene.h"
 
-#include "shared/strategies.h"
+#include "sampling/strategies.h"
 
 #include <gtest/gtest.h>
 

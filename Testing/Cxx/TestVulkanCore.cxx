@@ -7,7 +7,7 @@
 #include "vsImage.h"
 #include "vsReduceSum.h"
 
-#include "shared/rng.h"
+#include "sampling/rng.h"
 
 #include <gtest/gtest.h>
 

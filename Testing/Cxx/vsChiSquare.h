@@ -21,9 +21,9 @@
 #ifndef VS_TEST_CHI_SQUARE_H
 #define VS_TEST_CHI_SQUARE_H
 
-#include "shared/octahedral.h"
-#include "shared/rng.h"
-#include "shared/warp.h"
+#include "sampling/octahedral.h"
+#include "sampling/rng.h"
+#include "sampling/warp.h"
 
 #include <gtest/gtest.h>
 

@@ -71,7 +71,7 @@ class ProjectFiles(unittest.TestCase):
         test_only = re.compile(r"VTK::(RenderingImage|TestingRendering)\b")
         for rel in ("Module/vtk.module", "Filters/vtk.module", "Rendering/vtk.module",
                     "Module/CMakeLists.txt", "Filters/CMakeLists.txt", "Rendering/CMakeLists.txt",
-                    "Examples/Tool/CMakeLists.txt"):
+                    "Examples/Tool/CMakeLists.txt", "Benchmarks/CMakeLists.txt"):
             if os.path.isfile(os.path.join(SOURCE, rel)):
                 self.assertIsNone(test_only.search(read(rel)), rel + " uses a test-only VTK module")
         root = read("CMakeLists.txt")

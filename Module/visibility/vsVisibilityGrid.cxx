@@ -9,7 +9,7 @@
 #include "vsMajorantGrid.h"
 #include "vsPipeline.h"
 #include "vsTransferFunctionTable.h"
-#include "shared/interpolation.h"
+#include "sampling/interpolation.h"
 
 #include "vs_spirv_sweep_filter.h"
 #include "vs_spirv_sweep_march.h"

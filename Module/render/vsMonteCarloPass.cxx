@@ -1,5 +1,5 @@
 #include "vsMonteCarloPass.h"
-#include "shared/strategies.h"
+#include "sampling/strategies.h"
 #include "vsBatch.h"
 #include "vsBuffer.h"
 #include "vsContext.h"

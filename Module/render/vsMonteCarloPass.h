@@ -6,7 +6,7 @@
 #define vsMonteCarloPass_h
 
 #include "vissweepCoreModule.h"
-#include "shared/render_params.h"
+#include "sampling/render_params.h"
 
 #include <algorithm>
 #include <array>

@@ -1,8 +1,8 @@
 #include "vsVisibilityUpdateScheduler.h"
 #include "vsError.h"
 
-#include "shared/rng.h"
-#include "shared/update_order.h"
+#include "sampling/rng.h"
+#include "sampling/update_order.h"
 
 #include <algorithm>
 #include <string>

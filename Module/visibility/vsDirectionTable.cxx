@@ -1,6 +1,6 @@
 #include "vsDirectionTable.h"
-#include "shared/direction_table.h"
-#include "shared/strategies.h"
+#include "sampling/direction_table.h"
+#include "sampling/strategies.h"
 #include "vsBatch.h"
 #include "vsBuffer.h"
 #include "vsContext.h"

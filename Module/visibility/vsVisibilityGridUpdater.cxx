@@ -3,8 +3,8 @@
 #include "vsContext.h"
 #include "vsError.h"
 #include "vsImage.h"
-#include "shared/octahedral.h"
-#include "shared/update_order.h"
+#include "sampling/octahedral.h"
+#include "sampling/update_order.h"
 
 #include <algorithm>
 #include <limits>

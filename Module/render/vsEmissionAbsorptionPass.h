@@ -5,7 +5,7 @@
 #define vsEmissionAbsorptionPass_h
 
 #include "vissweepCoreModule.h"
-#include "shared/frame_params.h"
+#include "sampling/frame_params.h"
 
 #include <memory>
 #include <vector>

@@ -7,7 +7,7 @@
 #define vsSweepPlan_h
 
 #include "vissweepCoreModule.h"
-#include "shared/sweep_params.h"
+#include "sampling/sweep_params.h"
 #include "vsVolumeGeometry.h"
 
 #include <array>

@@ -1,7 +1,7 @@
 #include "vsSweepPlan.h"
 #include "vsError.h"
 
-#include "shared/octahedral.h"
+#include "sampling/octahedral.h"
 
 #include <algorithm>
 #include <cmath>
