@@ -1,0 +1,162 @@
+/*
+ * mc_resources.glsl — what the render kernel (mc_render.glsl) binds and keeps in registers: its
+ * specialization constants, descriptor bindings, the parameters loaded once per invocation, the
+ * ray being tracked, and the environment's radiance lookups. Included once, by mc_render.glsl.
+ */
+
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+/* Specialization constants: the host compiles one pipeline per combination it renders with, so the
+ * code of the other strategies, the other cell mode and (where no brick is optically thick) the
+ * cell walk is gone. That matters on lavapipe, which runs both sides of every `if` (masked) and
+ * every loop body at least once: such code costs as if it were always taken. */
+layout(constant_id = 0) const uint VS_SPEC_STRATEGY = 4u;  /* VS_STRATEGY_*, = params.sampling.x */
+layout(constant_id = 1) const uint VS_SPEC_CELL_MODE = 1u; /* VS_CELL_*, = params.sampling.z */
+layout(constant_id = 2) const uint VS_SPEC_REFINE = 1u;    /* 0: no majorant segment reaches the refinement depth */
+layout(constant_id = 3) const uint VS_SPEC_CAMERA = 0u;    /* VS_CAMERA_*, = params.tracking.z */
+layout(constant_id = 4) const uint VS_SPEC_INTERPOLATION = 0u; /* interpolation.h, = params.tracking.w */
+layout(constant_id = 5) const uint VS_SPEC_CROPPING = 0u;  /* 1: cropping regions (params.crop.x != 0) */
+layout(constant_id = 7) const uint VS_SPEC_DEFENSIVE = 0u; /* 1: TwoStep mixed with Environment sampling (P.mixture.x) */
+layout(constant_id = 8) const uint VS_SPEC_SKIP = 1u;      /* 1: empty space is crossed in one step (binding 13) */
+layout(constant_id = 9) const uint VS_SPEC_QUADS = 0u;     /* 1: trilinear samples read the volume's 8-bit quads
+                                                             (binding 15, vsDeviceVolume.h) */
+layout(constant_id = 11) const uint VS_SPEC_SAMPLER = 0u;   /* VS_SAMPLER_* (render_params.h), = params.crop.z */
+const bool VS_SPEC_SOBOL = VS_SPEC_SAMPLER == VS_SAMPLER_SOBOL;
+layout(constant_id = 10) const uint VS_SPEC_CONTROL = 0u;   /* VS_CONTROL_* bits (render_params.h): the trackers
+                                                              split the extinction into the brick's control (uBricks.y) and the rest */
+layout(constant_id = 13) const uint VS_SPEC_TRANSMITTANCE = 0u; /* VS_TRANSMITTANCE_* (render_params.h): the shadow
+                                                              rays' estimator, = params.mixture.y */
+layout(constant_id = 12) const uint VS_SPEC_FACTOR = 0u;   /* 1: the extinction is scaled by the volume's factor
+                                                              (the gradient opacity, binding 16; = params.crop.w) */
+layout(constant_id = 6) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
+                                                             table (binding 12), stochastic cell only */
+layout(binding = 0, r32f) uniform readonly image3D uVolume;
+#define VS_TF_TEXELS
+layout(binding = 1) uniform samplerBuffer uTF;
+layout(binding = 2, rgba32f) uniform readonly image3D uBricks; /* per brick: majorant, control, empty distance, 0
+                                                                  (vsMajorantGrid.h TrackingImage) */
+layout(binding = 3, VS_VIS_FORMAT) uniform readonly image3D uVisibility;
+layout(std430, binding = 4) readonly buffer Params { VsRenderParams P; };
+/* Tables read at per-lane indices are texel buffers: lavapipe loads them with vector gathers, and
+ * a storage buffer with a scalar loop over the SIMD lanes (measured: ~15% of the kernel's time). */
+layout(binding = 5) uniform samplerBuffer uEnv;  /* rgba32f: the environment's radiance per texel */
+layout(binding = 6) uniform samplerBuffer uMips; /* r32f: its luminance mip pyramid */
+layout(std430, binding = 7) readonly buffer Depth { float uDepth[]; };
+layout(std430, binding = 8) buffer Sum { vec4 uSum[]; };
+layout(std430, binding = 9) buffer Compensation { vec4 uComp[]; };
+layout(std430, binding = 10) buffer Squares { vec4 uSq[]; };
+/* Samples each pixel holds (W x H), then one counter of the pixels a dispatch left short of target. */
+layout(std430, binding = 11) buffer Progress { uint uCount[]; };
+/* The direction table (shared/direction_table.h): per cell, the shares of its map's quadtree nodes. */
+layout(binding = 12) uniform usamplerBuffer uTable; /* r32ui */
+/* An integer-coded volume's quads: texel (x, y, z) packs the 8-bit codes of voxels (x, y), (x + 1, y),
+ * (x, y + 1), (x + 1, y + 1) of slice z; the scalar is code + P.dims.w. */
+layout(binding = 15, r32ui) uniform readonly uimage3D uQuads;
+/* The extinction factor per voxel (vsDeviceVolume.h; read only with VS_SPEC_FACTOR). */
+layout(binding = 16, r32f) uniform readonly image3D uFactor;
+#define VS_FACTOR_IMAGE
+layout(push_constant) uniform Push { uint target; } pc;
+
+/* The instrumented variant (mc_render_count.comp) counts what a sample reads:
+ * uLookups[0] trilinear volume samples, [1] majorant-brick loads, [2] visibility texels (or table nodes),
+ * and how busy the SIMD lanes are: [3] the tracking steps the lanes took, [4] the steps their
+ * subgroups ran times the subgroup's size. */
+#ifdef VS_COUNT_LOOKUPS
+layout(std430, binding = 14) buffer Lookups { uint uLookups[]; };  /* binding 15: uQuads */
+uvec3 gLookups = uvec3(0u);
+uint gLaneSteps = 0u, gGroupLaneSteps = 0u;
+#define VS_COUNT(i) (gLookups[i]++)
+#else
+#define VS_COUNT(i)
+#endif
+
+#define VS_DIRECTION_SOURCE(n) P.directionSources[(n) / 4u][(n) % 4u]
+
+float vs_env_mip(uint index)
+{
+  return texelFetch(uMips, int(index)).r;
+}
+
+#include "volume_access.glsl"
+#ifndef VS_NO_GRID
+#include "direction_map.glsl"
+#endif
+
+/* Parameters the per-sample code reads, loaded once per invocation in main(): lavapipe loads a
+ * storage-buffer value inside code that not every lane runs with a scalar loop over the lanes
+ * (one masked load per lane), even at a uniform address (measured in its machine code). */
+float gEnvScale;    /* P.sampling2.y: the environment's intensity */
+float gEpsilon;     /* P.sampling2.x */
+float gSquareScale; /* P.sampling2.w */
+float gMixture;     /* P.mixture.x */
+uint gEnvLevels;    /* P.sampling.w */
+vec3 gBoxMin, gBoxMax, gCellSize;
+uvec4 gGrid;
+uvec4 gViewport;
+bool gBackgroundVisible;
+/* The alpha of a camera ray that escapes to the environment: 1 (P.background.w = 1, the image is
+ * opaque) or 0 (w = 2: the radiance still includes the environment seen through the volume, but the
+ * alpha is the volume's coverage, so the host can composite it over a background it draws itself). */
+float gEscapeAlpha;
+mat4 gWorldToIndex, gInvViewProj;
+vec4 gClipPlanes[VS_MAX_CLIP_PLANES == 8u ? 8 : -1]; /* main() copies 8 */
+
+/* Registers, loaded once per invocation (lavapipe does not hoist buffer loads). */
+ivec3 gDims;
+ivec3 gBricks;
+float gBrickSize;
+vec4 gTF;
+uint gEnvSize;
+uint gClipCount;
+uint gStrategy;
+float gInvBrickSize;
+/* The ray being tracked (one at a time: the camera ray, then the shadow rays): what the majorant
+ * walk needs of it per segment, computed once per ray. */
+struct RayConstants
+{
+  vec3 invD;       /* 1 / d per axis (inf where d is 0: masked where used) */
+  float walkScale; /* the brick walk's shortest step scale (brick_walk.h vs_walk_scale) */
+};
+RayConstants gRay;
+
+void set_ray(vec3 o, vec3 d)
+{
+  gRay.invD = 1.0 / d;
+  gRay.walkScale = vs_walk_scale(o, d);
+}
+uint gShadowRays;
+uint gShadowBudget; /* tracking steps the shadow rays of one sample share (main) */
+uint gTableBase; /* where the scatter cell's direction table starts (VS_SPEC_TABLE) */
+/* The stochastic cell pick's numbers: the pixel's own, the same for all its samples (main).
+ * Each pick is unbiased whatever the numbers (the sample is scored with the pdf of the cell it
+ * warped through), and a pixel whose samples warp through one cell's table keeps the Sobol
+ * sequence's strata of its light directions: 2% lower MSE at 256 spp (docs/benchmarks.md). */
+vec3 gCellU;
+
+uint vs_table_value(uint i)
+{
+  VS_COUNT(2);
+  return texelFetch(uTable, int(i)).r;
+}
+float gRefineDepth;
+uint gInterpolation; /* interpolation.h: the scalar's reconstruction (P.tracking.w) */
+vec3 env_radiance(vec3 w)
+{
+  uvec2 t = vs_dir_to_texel(w, gEnvSize);
+  return texelFetch(uEnv, int(t.y * gEnvSize + t.x)).rgb * gEnvScale;
+}
+
+/* The environment seen directly (the background): bilinear between texels, so that it does not
+ * look blocky when a texel spans several pixels. */
+vec3 env_radiance_display(vec3 w)
+{
+  vec2 uv = vs_dir_to_octa(w);
+  vec3 sum = vec3(0.0);
+  for (uint c = 0u; c < 4u; ++c)
+  {
+    float weight;
+    uvec2 t = vs_octa_bilinear_texel(uv, gEnvSize, c, weight);
+    sum += weight * texelFetch(uEnv, int(t.y * gEnvSize + t.x)).rgb;
+  }
+  return sum * gEnvScale;
+}
