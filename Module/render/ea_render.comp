@@ -16,16 +16,17 @@
  * units), l the headlight, two-sided; where the gradient vanishes, ambient only.
  * Output: premultiplied RGBA per pixel, rows bottom-up (OpenGL order).
  */
+#include "bindings.h"
 #include "rng.h"
 #include "frame_params.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0, r32f) uniform readonly image3D uVolume;
-layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
-layout(std430, binding = 2) readonly buffer Params { VsFrameParams P; };
-layout(std430, binding = 3) readonly buffer Depth { float uDepth[]; };
-layout(std430, binding = 4) writeonly buffer Result { vec4 uOut[]; };
-layout(binding = 5, r32f) uniform readonly image3D uFactor; /* read only with VS_EA_FACTOR */
+layout(binding = VS_EA_VOLUME, r32f) uniform readonly image3D uVolume;
+layout(std430, binding = VS_EA_TF) readonly buffer TransferFunction { vec4 uTF[]; };
+layout(std430, binding = VS_EA_PARAMS) readonly buffer Params { VsFrameParams P; };
+layout(std430, binding = VS_EA_DEPTH) readonly buffer Depth { float uDepth[]; };
+layout(std430, binding = VS_EA_RESULT) writeonly buffer Result { vec4 uOut[]; };
+layout(binding = VS_EA_FACTOR_IMAGE, r32f) uniform readonly image3D uFactor; /* read only with VS_EA_FACTOR */
 layout(constant_id = 0) const uint VS_EA_FACTOR = 0u;
 layout(constant_id = 1) const uint VS_EA_SHADE = 0u;
 #define VS_FACTOR_IMAGE

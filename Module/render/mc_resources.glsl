@@ -4,6 +4,7 @@
  * ray being tracked, and the environment's radiance lookups. Included once, by mc_render.glsl.
  */
 
+#include "bindings.h"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 /* Specialization constants: the host compiles one pipeline per combination it renders with, so the
@@ -17,7 +18,7 @@ layout(constant_id = 3) const uint VS_SPEC_CAMERA = 0u;    /* VS_CAMERA_*, = par
 layout(constant_id = 4) const uint VS_SPEC_INTERPOLATION = 0u; /* interpolation.h, = params.tracking.w */
 layout(constant_id = 5) const uint VS_SPEC_CROPPING = 0u;  /* 1: cropping regions (params.crop.x != 0) */
 layout(constant_id = 7) const uint VS_SPEC_DEFENSIVE = 0u; /* 1: TwoStep mixed with Environment sampling (P.mixture.x) */
-layout(constant_id = 8) const uint VS_SPEC_SKIP = 1u;      /* 1: empty space is crossed in one step (binding 13) */
+layout(constant_id = 8) const uint VS_SPEC_SKIP = 1u;      /* 1: empty space is crossed in one step (VS_MC_BRICKS' distance) */
 layout(constant_id = 9) const uint VS_SPEC_QUADS = 0u;     /* 1: trilinear samples read the volume's 8-bit quads
                                                              (binding 15, vsDeviceVolume.h) */
 layout(constant_id = 11) const uint VS_SPEC_SAMPLER = 0u;   /* VS_SAMPLER_* (render_params.h), = params.crop.z */
@@ -30,30 +31,30 @@ layout(constant_id = 12) const uint VS_SPEC_FACTOR = 0u;   /* 1: the extinction 
                                                               (the gradient opacity, binding 16; = params.crop.w) */
 layout(constant_id = 6) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
                                                              table (binding 12), stochastic cell only */
-layout(binding = 0, r32f) uniform readonly image3D uVolume;
+layout(binding = VS_MC_VOLUME, r32f) uniform readonly image3D uVolume;
 #define VS_TF_TEXELS
-layout(binding = 1) uniform samplerBuffer uTF;
-layout(binding = 2, rgba32f) uniform readonly image3D uBricks; /* per brick: majorant, control, empty distance, 0
+layout(binding = VS_MC_TF) uniform samplerBuffer uTF;
+layout(binding = VS_MC_BRICKS, rgba32f) uniform readonly image3D uBricks; /* per brick: majorant, control, empty distance, 0
                                                                   (vsMajorantGrid.h TrackingImage) */
-layout(binding = 3, VS_VIS_FORMAT) uniform readonly image3D uVisibility;
-layout(std430, binding = 4) readonly buffer Params { VsRenderParams P; };
+layout(binding = VS_MC_VISIBILITY, VS_VIS_FORMAT) uniform readonly image3D uVisibility;
+layout(std430, binding = VS_MC_PARAMS) readonly buffer Params { VsRenderParams P; };
 /* Tables read at per-lane indices are texel buffers: lavapipe loads them with vector gathers, and
  * a storage buffer with a scalar loop over the SIMD lanes (measured: ~15% of the kernel's time). */
-layout(binding = 5) uniform samplerBuffer uEnv;  /* rgba32f: the environment's radiance per texel */
-layout(binding = 6) uniform samplerBuffer uMips; /* r32f: its luminance mip pyramid */
-layout(std430, binding = 7) readonly buffer Depth { float uDepth[]; };
-layout(std430, binding = 8) buffer Sum { vec4 uSum[]; };
-layout(std430, binding = 9) buffer Compensation { vec4 uComp[]; };
-layout(std430, binding = 10) buffer Squares { vec4 uSq[]; };
+layout(binding = VS_MC_ENV) uniform samplerBuffer uEnv;  /* rgba32f: the environment's radiance per texel */
+layout(binding = VS_MC_MIPS) uniform samplerBuffer uMips; /* r32f: its luminance mip pyramid */
+layout(std430, binding = VS_MC_DEPTH) readonly buffer Depth { float uDepth[]; };
+layout(std430, binding = VS_MC_SUM) buffer Sum { vec4 uSum[]; };
+layout(std430, binding = VS_MC_COMPENSATION) buffer Compensation { vec4 uComp[]; };
+layout(std430, binding = VS_MC_SQUARES) buffer Squares { vec4 uSq[]; };
 /* Samples each pixel holds (W x H), then one counter of the pixels a dispatch left short of target. */
-layout(std430, binding = 11) buffer Progress { uint uCount[]; };
+layout(std430, binding = VS_MC_PROGRESS) buffer Progress { uint uCount[]; };
 /* The direction table (shared/direction_table.h): per cell, the shares of its map's quadtree nodes. */
-layout(binding = 12) uniform usamplerBuffer uTable; /* r32ui */
+layout(binding = VS_MC_TABLE) uniform usamplerBuffer uTable; /* r32ui */
 /* An integer-coded volume's quads: texel (x, y, z) packs the 8-bit codes of voxels (x, y), (x + 1, y),
  * (x, y + 1), (x + 1, y + 1) of slice z; the scalar is code + P.dims.w. */
-layout(binding = 15, r32ui) uniform readonly uimage3D uQuads;
+layout(binding = VS_MC_QUADS, r32ui) uniform readonly uimage3D uQuads;
 /* The extinction factor per voxel (vsDeviceVolume.h; read only with VS_SPEC_FACTOR). */
-layout(binding = 16, r32f) uniform readonly image3D uFactor;
+layout(binding = VS_MC_FACTOR_IMAGE, r32f) uniform readonly image3D uFactor;
 #define VS_FACTOR_IMAGE
 layout(push_constant) uniform Push { uint target; } pc;
 
@@ -62,7 +63,7 @@ layout(push_constant) uniform Push { uint target; } pc;
  * and how busy the SIMD lanes are: [3] the tracking steps the lanes took, [4] the steps their
  * subgroups ran times the subgroup's size. */
 #ifdef VS_COUNT_LOOKUPS
-layout(std430, binding = 14) buffer Lookups { uint uLookups[]; };  /* binding 15: uQuads */
+layout(std430, binding = VS_MC_LOOKUPS) buffer Lookups { uint uLookups[]; };
 uvec3 gLookups = uvec3(0u);
 uint gLaneSteps = 0u, gGroupLaneSteps = 0u;
 #define VS_COUNT(i) (gLookups[i]++)

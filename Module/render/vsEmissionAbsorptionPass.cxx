@@ -1,4 +1,5 @@
 #include "vsEmissionAbsorptionPass.h"
+#include "sampling/bindings.h"
 #include "vsRenderTargetLimits.h"
 #include "vsBatch.h"
 #include "vsBuffer.h"
@@ -39,8 +40,11 @@ const ComputePipeline& EmissionAbsorptionPass::PipelineFor(bool factor, bool sha
     std::string name = "emission-absorption";
     name += factor ? (shade ? " (gradient opacity, shaded)" : " (gradient opacity)") : (shade ? " (shaded)" : "");
     pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_ea_render),
-      std::vector<BindingType>{ BindingType::StorageImage, BindingType::StorageBuffer, BindingType::StorageBuffer,
-        BindingType::StorageBuffer, BindingType::StorageBuffer, BindingType::StorageImage },
+      BindingTypes(shared::VS_EA_BINDING_COUNT,
+        { { shared::VS_EA_VOLUME, BindingType::StorageImage }, { shared::VS_EA_TF, BindingType::StorageBuffer },
+          { shared::VS_EA_PARAMS, BindingType::StorageBuffer }, { shared::VS_EA_DEPTH, BindingType::StorageBuffer },
+          { shared::VS_EA_RESULT, BindingType::StorageBuffer },
+          { shared::VS_EA_FACTOR_IMAGE, BindingType::StorageImage } }),
       0, name, { factor ? 1u : 0u, shade ? 1u : 0u });
   }
   return *pipeline;
@@ -79,8 +83,12 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
   }
   const ComputePipeline& pipeline = this->PipelineFor(volume.Factor() != nullptr, shade);
   DescriptorSet set(pipeline);
-  set.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, *this->Params_).Bind(3, *this->Depth_).Bind(4, *this->Out_);
-  set.Bind(5, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
+  set.Bind(shared::VS_EA_VOLUME, volume.Image())
+    .Bind(shared::VS_EA_TF, tf.Lut())
+    .Bind(shared::VS_EA_PARAMS, *this->Params_)
+    .Bind(shared::VS_EA_DEPTH, *this->Depth_)
+    .Bind(shared::VS_EA_RESULT, *this->Out_);
+  set.Bind(shared::VS_EA_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   Batch batch(this->Context_);
   batch.BeginTimer("render");
   batch.Dispatch(pipeline, set, nullptr, 0, (w + 7) / 8, (h + 7) / 8, 1);

@@ -1,4 +1,5 @@
 #include "vsMonteCarloPass.h"
+#include "sampling/bindings.h"
 #include "sampling/strategies.h"
 #include "vsBatch.h"
 #include "vsBuffer.h"
@@ -88,10 +89,16 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   if (!pipeline)
   {
     using B = BindingType;
-    std::vector<B> bindings{ B::StorageImage, B::UniformTexelBuffer, B::StorageImage, B::StorageImage, B::StorageBuffer,
-      B::UniformTexelBuffer, B::UniformTexelBuffer, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer,
-      B::StorageBuffer, B::StorageBuffer, B::UniformTexelBuffer, B::StorageImage, B::StorageBuffer,
-      B::StorageImage, B::StorageImage };
+    const std::vector<B> bindings = BindingTypes(shared::VS_MC_BINDING_COUNT,
+      { { shared::VS_MC_VOLUME, B::StorageImage }, { shared::VS_MC_TF, B::UniformTexelBuffer },
+        { shared::VS_MC_BRICKS, B::StorageImage }, { shared::VS_MC_VISIBILITY, B::StorageImage },
+        { shared::VS_MC_PARAMS, B::StorageBuffer }, { shared::VS_MC_ENV, B::UniformTexelBuffer },
+        { shared::VS_MC_MIPS, B::UniformTexelBuffer }, { shared::VS_MC_DEPTH, B::StorageBuffer },
+        { shared::VS_MC_SUM, B::StorageBuffer }, { shared::VS_MC_COMPENSATION, B::StorageBuffer },
+        { shared::VS_MC_SQUARES, B::StorageBuffer }, { shared::VS_MC_PROGRESS, B::StorageBuffer },
+        { shared::VS_MC_TABLE, B::UniformTexelBuffer }, { shared::VS_MC_RETIRED, B::StorageImage },
+        { shared::VS_MC_LOOKUPS, B::StorageBuffer }, { shared::VS_MC_QUADS, B::StorageImage },
+        { shared::VS_MC_FACTOR_IMAGE, B::StorageImage } });
     static const char* formats[] = { "r8 visibility", "r16 visibility", "r32f visibility",
       "r8 visibility, counting reads", "no grid" };
     const std::string name = std::string("monte carlo (") + formats[format] + ", " + StrategyName(strategy) + ", " +
@@ -310,25 +317,25 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     this->PipelineFor(useGrid ? grid : nullptr, params, NeedsCellWalk(majorants, params), table, quads);
   this->LastPipelineName_ = pipeline.Name();
   DescriptorSet set(pipeline);
-  set.Bind(0, volume.Image())
-    .BindTexels(1, tf.Lut(), vk::Format::eR32Sfloat)
-    .Bind(2, majorants.TrackingImage())
-    .Bind(3, useGrid ? grid->Image() : *this->NoGrid_)
-    .Bind(4, *this->Params_)
-    .BindTexels(5, environment.Radiance(), vk::Format::eR32G32B32A32Sfloat)
-    .BindTexels(6, environment.Mips(), vk::Format::eR32Sfloat)
-    .Bind(7, *this->Depth_)
-    .Bind(8, *this->Sum_)
-    .Bind(9, *this->Comp_)
-    .Bind(10, *this->Squares_)
-    .Bind(11, *this->Progress_)
-    .BindTexels(12, table ? this->Table_->Nodes() : *this->NoTable_, vk::Format::eR32Uint);
+  set.Bind(shared::VS_MC_VOLUME, volume.Image())
+    .BindTexels(shared::VS_MC_TF, tf.Lut(), vk::Format::eR32Sfloat)
+    .Bind(shared::VS_MC_BRICKS, majorants.TrackingImage())
+    .Bind(shared::VS_MC_VISIBILITY, useGrid ? grid->Image() : *this->NoGrid_)
+    .Bind(shared::VS_MC_PARAMS, *this->Params_)
+    .BindTexels(shared::VS_MC_ENV, environment.Radiance(), vk::Format::eR32G32B32A32Sfloat)
+    .BindTexels(shared::VS_MC_MIPS, environment.Mips(), vk::Format::eR32Sfloat)
+    .Bind(shared::VS_MC_DEPTH, *this->Depth_)
+    .Bind(shared::VS_MC_SUM, *this->Sum_)
+    .Bind(shared::VS_MC_COMPENSATION, *this->Comp_)
+    .Bind(shared::VS_MC_SQUARES, *this->Squares_)
+    .Bind(shared::VS_MC_PROGRESS, *this->Progress_)
+    .BindTexels(shared::VS_MC_TABLE, table ? this->Table_->Nodes() : *this->NoTable_, vk::Format::eR32Uint);
   if (!quads && !this->NoQuads_)
   {
     this->NoQuads_ = std::make_unique<Image3D>(this->Context_, 1, 1, 1, vk::Format::eR32Uint, "no volume quads");
   }
-  set.Bind(15, quads ? *volume.Quads() : *this->NoQuads_);
-  set.Bind(16, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
+  set.Bind(shared::VS_MC_QUADS, quads ? *volume.Quads() : *this->NoQuads_);
+  set.Bind(shared::VS_MC_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   if (this->CountLookups_)
   {
     if (!this->Lookups_)
@@ -336,7 +343,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
       this->Lookups_ = std::make_unique<Buffer>(this->Context_, 5 * sizeof(uint32_t), "read counters");
     }
     this->Lookups_->Fill(0u);
-    set.Bind(14, *this->Lookups_);
+    set.Bind(shared::VS_MC_LOOKUPS, *this->Lookups_);
   }
   // Each dispatch brings every pixel towards a target count, SamplesPerDispatch more than the
   // last; a pixel the kernel's loop budget left short (mc_render.glsl) catches up in the next one.

@@ -10,15 +10,16 @@
  * path keeps, made the build several times slower on lavapipe). The light's D x D importance is
  * the same for every cell: the workgroup reads it once into shared memory.
  */
+#include "bindings.h"
 #include "strategies.h"
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 layout(constant_id = 0) const uint VS_SPEC_D = 8u;   /* directions per side, 2 .. 16 */
 layout(constant_id = 1) const uint VS_SPEC_MAP = 3u; /* VS_STRATEGY_VISIBILITY, or _COMBINED: the product */
-layout(binding = 0, VS_VIS_FORMAT) uniform readonly image3D uVisibility;
-layout(std430, binding = 1) readonly buffer EnvMips { float uMips[]; };
-layout(std430, binding = 2) writeonly buffer Table { uint uTable[]; };
-layout(std430, binding = 3) readonly buffer Sources { uint uSources[]; }; /* VisibilityGrid::DirectionSources */
+layout(binding = VS_TABLE_VISIBILITY, VS_VIS_FORMAT) uniform readonly image3D uVisibility;
+layout(std430, binding = VS_TABLE_MIPS) readonly buffer EnvMips { float uMips[]; };
+layout(std430, binding = VS_TABLE_OUTPUT) writeonly buffer Table { uint uTable[]; };
+layout(std430, binding = VS_TABLE_SOURCES) readonly buffer Sources { uint uSources[]; }; /* VisibilityGrid::DirectionSources */
 layout(push_constant) uniform Push
 {
   uvec4 cells;  /* xyz: cells per axis */

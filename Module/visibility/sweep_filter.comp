@@ -13,6 +13,7 @@
  * each side by t_i tan(beta) (Eq. 9); weights: vs_kernel_taps (sweep_params.h).
  * One invocation per (cell index along a, kernel row) per slice of the chunk per direction.
  */
+#include "bindings.h"
 #include "sweep_params.h"
 
 layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
@@ -20,12 +21,12 @@ layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
  * loops unroll and the weights stay in registers; 0 = any number (a loop). */
 layout(constant_id = 0) const int VS_TAPS = 4;
 const int VS_TAPS_ARRAY = VS_TAPS > 0 ? VS_TAPS : 1;
-layout(std430, binding = 0) readonly buffer Globals { VsSweepGlobals G; };
-layout(std430, binding = 1) readonly buffer Directions { VsSweepDirection uDir[]; };
+layout(std430, binding = VS_FILTER_GLOBALS) readonly buffer Globals { VsSweepGlobals G; };
+layout(std430, binding = VS_FILTER_DIRECTIONS) readonly buffer Directions { VsSweepDirection uDir[]; };
 /* r32f texels: lavapipe gathers a texel buffer at per-lane indices in one vector load, a storage
  * buffer in a scalar loop over the lanes. */
-layout(binding = 2) uniform samplerBuffer uStack;
-layout(std430, binding = 3) writeonly buffer Filtered { float uFiltered[]; };
+layout(binding = VS_FILTER_STACK) uniform samplerBuffer uStack;
+layout(std430, binding = VS_FILTER_FILTERED) writeonly buffer Filtered { float uFiltered[]; };
 layout(push_constant) uniform Push { uint firstSlice; uint count; uint firstDirection; } pc;
 
 /* One invocation per cell index along a per slice per direction: the weights are the same for

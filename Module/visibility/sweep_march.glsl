@@ -14,26 +14,27 @@
  * which the renderer's pdf absorbs: the grid shapes sampling only). Lavapipe runs a loop for a SIMD
  * group of 8 rays until all 8 leave it, so a row of rays stops marching when all its rays have.
  */
+#include "bindings.h"
 #include "sweep_params.h"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 #ifdef VS_SWEEP_POOLED
-layout(binding = 0, r32f) uniform readonly image3D uPool;
+layout(binding = VS_SWEEP_VOLUME, r32f) uniform readonly image3D uPool;
 #define VS_TF_TEXELS
-layout(binding = 1) uniform samplerBuffer uTF; /* r32f: the table's floats (volume_access.glsl) */
-layout(binding = 2, r32f) uniform readonly image3D uPoolOccupancy;
+layout(binding = VS_SWEEP_TF) uniform samplerBuffer uTF; /* r32f: the table's floats (volume_access.glsl) */
+layout(binding = VS_SWEEP_MAJORANT, r32f) uniform readonly image3D uPoolOccupancy;
 #else
-layout(binding = 0, r32f) uniform readonly image3D uVolume;
+layout(binding = VS_SWEEP_VOLUME, r32f) uniform readonly image3D uVolume;
 #define VS_TF_TEXELS
-layout(binding = 1) uniform samplerBuffer uTF; /* r32f: the table's floats (volume_access.glsl) */
-layout(binding = 2, r32f) uniform readonly image3D uMajorant;
-layout(binding = 7, r32f) uniform readonly image3D uFactor; /* read only with VS_SWEEP_FACTOR (sweep_access.glsl) */
+layout(binding = VS_SWEEP_TF) uniform samplerBuffer uTF; /* r32f: the table's floats (volume_access.glsl) */
+layout(binding = VS_SWEEP_MAJORANT, r32f) uniform readonly image3D uMajorant;
+layout(binding = VS_SWEEP_FACTOR_IMAGE, r32f) uniform readonly image3D uFactor; /* read only with VS_SWEEP_FACTOR (sweep_access.glsl) */
 #define VS_FACTOR_IMAGE
 #endif
-layout(std430, binding = 3) readonly buffer Globals { VsSweepGlobals G; };
-layout(std430, binding = 4) readonly buffer Directions { VsSweepDirection uDir[]; };
-layout(std430, binding = 5) buffer State { float uState[]; };  /* V per ray between chunks */
-layout(std430, binding = 6) writeonly buffer Stack { float uStack[]; };
+layout(std430, binding = VS_SWEEP_GLOBALS) readonly buffer Globals { VsSweepGlobals G; };
+layout(std430, binding = VS_SWEEP_DIRECTIONS) readonly buffer Directions { VsSweepDirection uDir[]; };
+layout(std430, binding = VS_SWEEP_STATE) buffer State { float uState[]; };  /* V per ray between chunks */
+layout(std430, binding = VS_SWEEP_STACK) writeonly buffer Stack { float uStack[]; };
 layout(push_constant) uniform Push { uint firstSlice; uint count; uint firstDirection; } pc;
 
 #include "sweep_access.glsl"

@@ -13,16 +13,17 @@
  * P, max pooling, cropping and the factor are specialization constants: the block loops unroll, and
  * what is not used is compiled out (lavapipe runs both sides of a branch).
  */
+#include "bindings.h"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(constant_id = 0) const int VS_POOL_P = 2;
 layout(constant_id = 1) const uint VS_POOL_MAX = 0u;
 layout(constant_id = 2) const uint VS_POOL_CROP = 0u;
 layout(constant_id = 3) const uint VS_POOL_FACTOR = 0u;
-layout(binding = 0, r32f) uniform readonly image3D uVolume;
+layout(binding = VS_POOL_VOLUME, r32f) uniform readonly image3D uVolume;
 #define VS_TF_TEXELS
-layout(binding = 1) uniform samplerBuffer uTF; /* r32f: the table's floats (volume_access.glsl) */
-layout(binding = 2, r32f) uniform writeonly image3D uPooled;
-layout(binding = 3, r32f) uniform readonly image3D uFactor; /* read only with VS_POOL_FACTOR */
+layout(binding = VS_POOL_TF) uniform samplerBuffer uTF; /* r32f: the table's floats (volume_access.glsl) */
+layout(binding = VS_POOL_POOLED, r32f) uniform writeonly image3D uPooled;
+layout(binding = VS_POOL_FACTOR_IMAGE, r32f) uniform readonly image3D uFactor; /* read only with VS_POOL_FACTOR */
 layout(push_constant) uniform Push
 {
   ivec4 dims;   /* voxels per axis */

@@ -5,9 +5,10 @@
  * the texels its trilinear footprint reads ([i B - 1, (i + 1) B], clamped). 0 means the
  * pooled interpolant is 0 throughout the brick, so the march skips it whole.
  */
+#include "bindings.h"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
-layout(binding = 0, r32f) uniform readonly image3D uPooled;
-layout(binding = 1, r32f) uniform writeonly image3D uOccupancy;
+layout(binding = VS_OCCUPANCY_POOLED, r32f) uniform readonly image3D uPooled;
+layout(binding = VS_OCCUPANCY_OUTPUT, r32f) uniform writeonly image3D uOccupancy;
 layout(push_constant) uniform Push
 {
   ivec4 pooled; /* pooled texels per axis */

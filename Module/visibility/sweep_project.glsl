@@ -10,6 +10,7 @@
  * image of known format (on lavapipe, measured no faster than a format-less store; kept so
  * the sweeps do not need shaderStorageImageWriteWithoutFormat for the grid).
  */
+#include "bindings.h"
 #include "sweep_params.h"
 
 layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
@@ -17,10 +18,10 @@ layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
  * loops unroll and the weights stay in registers; 0 = any number (a loop). */
 layout(constant_id = 0) const int VS_TAPS = 4;
 const int VS_TAPS_ARRAY = VS_TAPS > 0 ? VS_TAPS : 1;
-layout(std430, binding = 0) readonly buffer Globals { VsSweepGlobals G; };
-layout(std430, binding = 1) readonly buffer Directions { VsSweepDirection uDir[]; };
-layout(binding = 2) uniform samplerBuffer uFiltered; /* r32f texels: gathered, as sweep_filter.comp's uStack */
-layout(binding = 3, VS_VIS_FORMAT) uniform writeonly image3D uVisibility;
+layout(std430, binding = VS_PROJECT_GLOBALS) readonly buffer Globals { VsSweepGlobals G; };
+layout(std430, binding = VS_PROJECT_DIRECTIONS) readonly buffer Directions { VsSweepDirection uDir[]; };
+layout(binding = VS_PROJECT_FILTERED) uniform samplerBuffer uFiltered; /* r32f texels: gathered, as sweep_filter.comp's uStack */
+layout(binding = VS_PROJECT_VISIBILITY, VS_VIS_FORMAT) uniform writeonly image3D uVisibility;
 layout(push_constant) uniform Push { uint firstSlice; uint count; uint firstDirection; } pc;
 
 /* One invocation per cell row along a (cell index along b, slice) of one direction: the slice's

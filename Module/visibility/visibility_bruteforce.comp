@@ -6,18 +6,19 @@
  * rays from random points of the cell towards random directions of the direction's
  * octahedral texel — what a visibility cell means. The reference for the sweeps.
  */
+#include "bindings.h"
 #include "sweep_params.h"
 #include "octahedral.h"
 #include "rng.h"
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
-layout(binding = 0, r32f) uniform readonly image3D uVolume;
+layout(binding = VS_BRUTE_VOLUME, r32f) uniform readonly image3D uVolume;
 #define VS_TF_TEXELS
-layout(binding = 1) uniform samplerBuffer uTF; /* r32f: the table's floats (volume_access.glsl) */
-layout(binding = 2, r32f) uniform readonly image3D uMajorant;
-layout(std430, binding = 3) readonly buffer Globals { VsSweepGlobals G; };
-layout(binding = 4) uniform writeonly image3D uVisibility;
-layout(binding = 5, r32f) uniform readonly image3D uFactor; /* read only with VS_SWEEP_FACTOR (sweep_access.glsl) */
+layout(binding = VS_BRUTE_TF) uniform samplerBuffer uTF; /* r32f: the table's floats (volume_access.glsl) */
+layout(binding = VS_BRUTE_MAJORANT, r32f) uniform readonly image3D uMajorant;
+layout(std430, binding = VS_BRUTE_GLOBALS) readonly buffer Globals { VsSweepGlobals G; };
+layout(binding = VS_BRUTE_VISIBILITY) uniform writeonly image3D uVisibility;
+layout(binding = VS_BRUTE_FACTOR_IMAGE, r32f) uniform readonly image3D uFactor; /* read only with VS_SWEEP_FACTOR (sweep_access.glsl) */
 #define VS_FACTOR_IMAGE
 layout(push_constant) uniform Push { uint firstCell; uint firstDirection; } pc;
 

@@ -1,4 +1,5 @@
 #include "vsDirectionTable.h"
+#include "sampling/bindings.h"
 #include "sampling/direction_table.h"
 #include "sampling/strategies.h"
 #include "vsBatch.h"
@@ -74,7 +75,9 @@ std::shared_ptr<ComputePipeline> DirectionTable::Pipeline(
   const std::shared_ptr<Context>& context, vk::Format format, uint32_t D, uint32_t map)
 {
   using B = BindingType;
-  const std::vector<B> bindings{ B::StorageImage, B::StorageBuffer, B::StorageBuffer, B::StorageBuffer };
+  const std::vector<B> bindings = BindingTypes(shared::VS_TABLE_BINDING_COUNT,
+    { { shared::VS_TABLE_VISIBILITY, B::StorageImage }, { shared::VS_TABLE_MIPS, B::StorageBuffer },
+      { shared::VS_TABLE_OUTPUT, B::StorageBuffer }, { shared::VS_TABLE_SOURCES, B::StorageBuffer } });
   const std::vector<uint32_t> specialization{ D,
     map == shared::VS_STRATEGY_VISIBILITY ? map : uint32_t(shared::VS_STRATEGY_COMBINED) };
   const std::string name = std::string("direction table (") +
@@ -113,7 +116,10 @@ bool DirectionTable::Update(
   }
   std::shared_ptr<ComputePipeline> pipeline = Pipeline(this->Context_, grid.Image().Format(), D, map);
   DescriptorSet set(*pipeline);
-  set.Bind(0, grid.Image()).Bind(1, environment.Mips()).Bind(2, *this->Nodes_).Bind(3, grid.DirectionSourceBuffer());
+  set.Bind(shared::VS_TABLE_VISIBILITY, grid.Image())
+    .Bind(shared::VS_TABLE_MIPS, environment.Mips())
+    .Bind(shared::VS_TABLE_OUTPUT, *this->Nodes_)
+    .Bind(shared::VS_TABLE_SOURCES, grid.DirectionSourceBuffer());
   uint32_t epsilonBits;
   std::memcpy(&epsilonBits, &epsilon, sizeof(epsilonBits));
   const uint32_t push[8] = { cells[0], cells[1], cells[2], 0u, 0u, epsilonBits, 0u, 0u };

@@ -1,4 +1,5 @@
 #include "vsPooledExtinction.h"
+#include "sampling/bindings.h"
 #include "vsBatch.h"
 #include "vsContext.h"
 #include "vsDeviceVolume.h"
@@ -108,12 +109,17 @@ void PooledExtinction::Start(const Key& key, const DeviceVolume& volume)
     const uint32_t cropped = key.Pooling.CropFlags ? 1u : 0u;
     const uint32_t scaled = key.ExtinctionFactor ? 1u : 0u;
     this->Pool_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_pool),
-      std::vector<B>{ B::StorageImage, B::UniformTexelBuffer, B::StorageImage, B::StorageImage }, sizeof(PoolPush),
+      BindingTypes(shared::VS_POOL_BINDING_COUNT,
+        { { shared::VS_POOL_VOLUME, B::StorageImage }, { shared::VS_POOL_TF, B::UniformTexelBuffer },
+          { shared::VS_POOL_POOLED, B::StorageImage }, { shared::VS_POOL_FACTOR_IMAGE, B::StorageImage } }),
+      sizeof(PoolPush),
       "sweep pool (P " + std::to_string(factor) + (key.Pooling.Max ? ", max" : ", mean") +
         (cropped ? ", cropped" : "") + (scaled ? ", gradient opacity)" : ")"),
       { factor, key.Pooling.Max ? 1u : 0u, cropped, scaled });
     this->OccupancyPipeline_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_pool_occupancy),
-      std::vector<B>{ B::StorageImage, B::StorageImage }, sizeof(OccupancyPush), "sweep pool occupancy");
+      BindingTypes(shared::VS_OCCUPANCY_BINDING_COUNT,
+        { { shared::VS_OCCUPANCY_POOLED, B::StorageImage }, { shared::VS_OCCUPANCY_OUTPUT, B::StorageImage } }),
+      sizeof(OccupancyPush), "sweep pool occupancy");
   }
   const uint32_t brick = BrickTexels(factor);
   for (int i = 0; i < 3; ++i)
@@ -138,8 +144,10 @@ double PooledExtinction::PoolSlices(
   const DeviceVolume& volume, const TransferFunctionTable& tf, uint32_t z0, uint32_t z1)
 {
   DescriptorSet set(*this->Pool_);
-  set.Bind(0, volume.Image()).BindTexels(1, tf.Lut(), vk::Format::eR32Sfloat).Bind(2, *this->Pooled_);
-  set.Bind(3, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
+  set.Bind(shared::VS_POOL_VOLUME, volume.Image())
+    .BindTexels(shared::VS_POOL_TF, tf.Lut(), vk::Format::eR32Sfloat)
+    .Bind(shared::VS_POOL_POOLED, *this->Pooled_);
+  set.Bind(shared::VS_POOL_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   const Key& key = this->Key_;
   auto t = tf.Params();
   PoolPush pp{ glm::ivec4(int(key.Dims[0]), int(key.Dims[1]), int(key.Dims[2]), key.Pooling.Max ? 1 : 0),
@@ -159,7 +167,7 @@ double PooledExtinction::PoolSlices(
 double PooledExtinction::Finish()
 {
   DescriptorSet set(*this->OccupancyPipeline_);
-  set.Bind(0, *this->Pooled_).Bind(1, *this->Occupancy_);
+  set.Bind(shared::VS_OCCUPANCY_POOLED, *this->Pooled_).Bind(shared::VS_OCCUPANCY_OUTPUT, *this->Occupancy_);
   OccupancyPush op{ glm::ivec4(this->PooledDims_, 0),
     glm::ivec4(this->Bricks_, int(BrickTexels(this->Key_.Pooling.Factor))) };
   Batch cmd(this->Context_);

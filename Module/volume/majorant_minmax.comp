@@ -1,4 +1,5 @@
 #version 460
+#extension GL_GOOGLE_include_directive : require
 /*
  * Per brick of B^3 voxels, the range of the scalars its trilinear samples can take:
  * min and max over voxels [bB, (b+1)B] (inclusive: a sample in the brick interpolates
@@ -7,9 +8,10 @@
  * smallest extinction is 0). The host turns ranges into majorants with the transfer function,
  * so a transfer-function change needs no pass over the voxels.
  */
+#include "bindings.h"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
-layout(binding = 0, r32f) uniform readonly image3D uVolume;
-layout(std430, binding = 1) writeonly buffer Ranges { vec4 uRange[]; };
+layout(binding = VS_RANGES_VOLUME, r32f) uniform readonly image3D uVolume;
+layout(std430, binding = VS_RANGES_OUTPUT) writeonly buffer Ranges { vec4 uRange[]; };
 layout(push_constant) uniform Push { uvec4 bricks; ivec4 dims; } pc; /* bricks.w = brick size */
 
 void main()

@@ -1,10 +1,10 @@
 /*
  * volume_access.glsl — GLSL-only helpers to read the volume and classify it.
  * The including shader declares, before including this file:
- *   layout(binding = VS_BINDING_VOLUME, r32f) uniform readonly image3D uVolume;
- *   layout(std430, binding = VS_BINDING_TF) readonly buffer TransferFunction { vec4 uTF[]; };
+ *   layout(binding = VS_<PASS>_VOLUME, r32f) uniform readonly image3D uVolume;   (bindings.h)
+ *   layout(std430, binding = VS_<PASS>_TF) readonly buffer TransferFunction { vec4 uTF[]; };
  * or, with VS_TF_TEXELS defined, the same table as a texel buffer of its floats (r32f texels):
- *   layout(binding = VS_BINDING_TF) uniform samplerBuffer uTF;
+ *   layout(binding = VS_<PASS>_TF) uniform samplerBuffer uTF;
  * (lavapipe loads an r32f texel buffer at per-lane indices with one vector gather per float, a
  * storage buffer with a scalar loop over the SIMD lanes: the render kernel classifies at every
  * tracking step, and its null-collision tests need only the extinction, one float of four).
@@ -12,7 +12,7 @@
  * extinction and zero albedo (NaN/Inf voxels are empty space).
  * With VS_FACTOR_IMAGE defined, the includer also declares the extinction factor per voxel (the
  * gradient opacity, vsDeviceVolume.h), read by vs_sample_factor:
- *   layout(binding = ..., r32f) uniform readonly image3D uFactor;
+ *   layout(binding = VS_<PASS>_FACTOR, r32f) uniform readonly image3D uFactor;
  */
 #include "interpolation.h"
 #include "ray_box.glsl"

@@ -1,4 +1,5 @@
 #include "vsMajorantGrid.h"
+#include "sampling/bindings.h"
 #include "vsBatch.h"
 #include "vsBuffer.h"
 #include "vsContext.h"
@@ -138,11 +139,13 @@ void MajorantGrid::UpdateRanges(const DeviceVolume& volume, const float* hostSca
   else
   {
     auto shared = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_majorant_minmax),
-      { BindingType::StorageImage, BindingType::StorageBuffer }, 32, "majorant ranges");
+      BindingTypes(shared::VS_RANGES_BINDING_COUNT,
+        { { shared::VS_RANGES_VOLUME, BindingType::StorageImage }, { shared::VS_RANGES_OUTPUT, BindingType::StorageBuffer } }),
+      32, "majorant ranges");
     const ComputePipeline& pipeline = *shared;
     Buffer ranges(this->Context_, count * 4 * sizeof(float), "brick ranges");
     DescriptorSet set(pipeline);
-    set.Bind(0, volume.Image()).Bind(1, ranges);
+    set.Bind(shared::VS_RANGES_VOLUME, volume.Image()).Bind(shared::VS_RANGES_OUTPUT, ranges);
     struct
     {
       uint32_t bricks[4];

@@ -4,6 +4,9 @@
 #include "vsError.h"
 #include "vsImage.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace vs
 {
 namespace
@@ -20,6 +23,30 @@ vk::DescriptorType ToVk(BindingType t)
       return vk::DescriptorType::eStorageImage;
   }
 }
+}
+
+std::vector<BindingType> BindingTypes(uint32_t count, std::initializer_list<std::pair<uint32_t, BindingType>> types)
+{
+  std::vector<BindingType> bindings(count);
+  std::vector<bool> given(count, false);
+  for (const auto& [binding, type] : types)
+  {
+    if (binding >= count || given[binding])
+    {
+      throw std::logic_error("descriptor binding " + std::to_string(binding) +
+        (binding >= count ? " is outside the set's " + std::to_string(count) + " bindings" : " is given twice"));
+    }
+    bindings[binding] = type;
+    given[binding] = true;
+  }
+  for (uint32_t binding = 0; binding < count; ++binding)
+  {
+    if (!given[binding])
+    {
+      throw std::logic_error("descriptor binding " + std::to_string(binding) + " has no type");
+    }
+  }
+  return bindings;
 }
 
 ComputePipeline::ComputePipeline(std::shared_ptr<Context> context, const uint32_t* spirv,

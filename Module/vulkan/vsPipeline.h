@@ -9,6 +9,8 @@
 
 #include <memory>
 #include <string>
+#include <initializer_list>
+#include <utility>
 #include <vector>
 
 namespace vs
@@ -24,6 +26,13 @@ enum class BindingType
   /** A Buffer read through its TexelView (GLSL: samplerBuffer / usamplerBuffer, texelFetch). */
   UniformTexelBuffer
 };
+
+/** A shader's descriptor set layout from its bindings named in bindings.h: each type at its binding
+ *  number, e.g. `BindingTypes(VS_RANGES_BINDING_COUNT, { { VS_RANGES_VOLUME, BindingType::StorageImage },
+ *  { VS_RANGES_OUTPUT, BindingType::StorageBuffer } })`. A number outside [0, count), given twice or
+ *  left out is a programming error (std::logic_error naming it). */
+VISSWEEPCORE_EXPORT std::vector<BindingType> BindingTypes(
+  uint32_t count, std::initializer_list<std::pair<uint32_t, BindingType>> types);
 
 class VISSWEEPCORE_EXPORT ComputePipeline
 {

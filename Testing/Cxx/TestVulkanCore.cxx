@@ -5,8 +5,10 @@
 #include "vsContext.h"
 #include "vsError.h"
 #include "vsImage.h"
+#include "vsPipeline.h"
 #include "vsReduceSum.h"
 
+#include "sampling/bindings.h"
 #include "sampling/rng.h"
 
 #include <gtest/gtest.h>
@@ -43,6 +45,22 @@ TEST(VulkanCore, ReduceSumMatchesCpu)
     double gpu = vs::ReduceSum(ctx).Sum(v);
     EXPECT_NEAR(gpu, cpu, 1e-5 * cpu + 1e-6) << "n = " << n;
   }
+}
+
+// A set layout is listed by the names of bindings.h: each type lands at its number, and a set with
+// a number left out, given twice or outside the count is refused (a shader and its host code that
+// disagree fail at the pipeline's creation, not as a wrong descriptor at run time).
+TEST(VulkanCore, BindingTypesPlaceEachTypeAtItsNamedNumber)
+{
+  using B = vs::BindingType;
+  const auto types = vs::BindingTypes(vs::shared::VS_RANGES_BINDING_COUNT,
+    { { vs::shared::VS_RANGES_OUTPUT, B::StorageBuffer }, { vs::shared::VS_RANGES_VOLUME, B::StorageImage } });
+  ASSERT_EQ(types.size(), 2u);
+  EXPECT_EQ(types[0], B::StorageImage);
+  EXPECT_EQ(types[1], B::StorageBuffer);
+  EXPECT_THROW(vs::BindingTypes(3, { { 0, B::StorageImage }, { 2, B::StorageBuffer } }), std::logic_error);
+  EXPECT_THROW(vs::BindingTypes(2, { { 0, B::StorageImage }, { 0, B::StorageBuffer } }), std::logic_error);
+  EXPECT_THROW(vs::BindingTypes(2, { { 0, B::StorageImage }, { 2, B::StorageBuffer } }), std::logic_error);
 }
 
 TEST(VulkanCore, BufferRoundTrip)

@@ -1,0 +1,105 @@
+/*
+ * bindings.h — the descriptor binding numbers of every compute shader, named once for both sides:
+ * the GLSL declares `layout(binding = VS_MC_VOLUME, ...)`, the host binds `set.Bind(VS_MC_VOLUME,
+ * ...)` and lists the binding's type at the same name (vs::BindingTypes, vsPipeline.h). A shader's
+ * bindings are numbered from 0 without gaps (one descriptor set per pass), except where a variant
+ * leaves one unused (said beside it).
+ */
+#ifndef VS_BINDINGS_H
+#define VS_BINDINGS_H
+#include "vs_prelude.h"
+
+VS_NAMESPACE_BEGIN
+
+/* The Monte Carlo render kernel (render/mc_resources.glsl, render/vsMonteCarloPass.cxx). */
+VS_CONST uint VS_MC_VOLUME = 0u;         /* r32f image: the scalar volume */
+VS_CONST uint VS_MC_TF = 1u;             /* r32f texel buffer: the transfer function's floats */
+VS_CONST uint VS_MC_BRICKS = 2u;         /* rgba32f image: majorant, control, empty distance per brick */
+VS_CONST uint VS_MC_VISIBILITY = 3u;     /* the visibility grid (its storage format) */
+VS_CONST uint VS_MC_PARAMS = 4u;         /* storage buffer: VsRenderParams */
+VS_CONST uint VS_MC_ENV = 5u;            /* rgba32f texel buffer: the environment's radiance */
+VS_CONST uint VS_MC_MIPS = 6u;           /* r32f texel buffer: its luminance mip pyramid */
+VS_CONST uint VS_MC_DEPTH = 7u;          /* storage buffer: the opaque geometry's depth per pixel */
+VS_CONST uint VS_MC_SUM = 8u;            /* storage buffers: the accumulators */
+VS_CONST uint VS_MC_COMPENSATION = 9u;
+VS_CONST uint VS_MC_SQUARES = 10u;
+VS_CONST uint VS_MC_PROGRESS = 11u;      /* storage buffer: samples per pixel, then the short count */
+VS_CONST uint VS_MC_TABLE = 12u;         /* r32ui texel buffer: the direction table */
+VS_CONST uint VS_MC_RETIRED = 13u;       /* declared by no variant (was the empty-space distance, now in
+                                            VS_MC_BRICKS): a placeholder, so the numbers after it stay */
+VS_CONST uint VS_MC_LOOKUPS = 14u;       /* storage buffer: the counting variant's counters */
+VS_CONST uint VS_MC_QUADS = 15u;         /* r32ui image: the 8-bit volume's quads */
+VS_CONST uint VS_MC_FACTOR_IMAGE = 16u;        /* r32f image: the extinction factor per voxel */
+VS_CONST uint VS_MC_BINDING_COUNT = 17u;
+
+/* The emission-absorption pass (render/ea_render.comp, render/vsEmissionAbsorptionPass.cxx). */
+VS_CONST uint VS_EA_VOLUME = 0u;
+VS_CONST uint VS_EA_TF = 1u;             /* storage buffer: the transfer function's vec4 entries */
+VS_CONST uint VS_EA_PARAMS = 2u;         /* storage buffer: VsFrameParams */
+VS_CONST uint VS_EA_DEPTH = 3u;
+VS_CONST uint VS_EA_RESULT = 4u;
+VS_CONST uint VS_EA_FACTOR_IMAGE = 5u;
+VS_CONST uint VS_EA_BINDING_COUNT = 6u;
+
+/* The sweeps' march along each direction (visibility/sweep_march.glsl: the full-resolution volume
+ * or, VS_SWEEP_POOLED, the pooled extinction volume and its occupancy). */
+VS_CONST uint VS_SWEEP_VOLUME = 0u;      /* the volume, or the pooled extinction */
+VS_CONST uint VS_SWEEP_TF = 1u;
+VS_CONST uint VS_SWEEP_MAJORANT = 2u;    /* the majorant bricks, or the pooled volume's occupancy */
+VS_CONST uint VS_SWEEP_GLOBALS = 3u;     /* storage buffer: VsSweepGlobals */
+VS_CONST uint VS_SWEEP_DIRECTIONS = 4u;  /* storage buffer: VsSweepDirection per direction */
+VS_CONST uint VS_SWEEP_STATE = 5u;       /* storage buffer: visibility per ray between chunks */
+VS_CONST uint VS_SWEEP_STACK = 6u;       /* storage buffer: the kernel stack */
+VS_CONST uint VS_SWEEP_FACTOR_IMAGE = 7u; /* full resolution only: the extinction factor */
+VS_CONST uint VS_SWEEP_BINDING_COUNT = 8u;
+VS_CONST uint VS_SWEEP_POOLED_BINDING_COUNT = 7u;
+
+/* The sweeps' filter of the kernel stack (visibility/sweep_filter.comp). */
+VS_CONST uint VS_FILTER_GLOBALS = 0u;
+VS_CONST uint VS_FILTER_DIRECTIONS = 1u;
+VS_CONST uint VS_FILTER_STACK = 2u;      /* r32f texel buffer: the kernel stack */
+VS_CONST uint VS_FILTER_FILTERED = 3u;   /* storage buffer */
+VS_CONST uint VS_FILTER_BINDING_COUNT = 4u;
+
+/* The sweeps' projection of the filtered stack into the grid (visibility/sweep_project.glsl). */
+VS_CONST uint VS_PROJECT_GLOBALS = 0u;
+VS_CONST uint VS_PROJECT_DIRECTIONS = 1u;
+VS_CONST uint VS_PROJECT_FILTERED = 2u;  /* r32f texel buffer: sweep_filter.comp's output */
+VS_CONST uint VS_PROJECT_VISIBILITY = 3u; /* the grid's image (its storage format) */
+VS_CONST uint VS_PROJECT_BINDING_COUNT = 4u;
+
+/* The pooled extinction volume (visibility/sweep_pool.comp) and its occupancy
+ * (visibility/sweep_pool_occupancy.comp). */
+VS_CONST uint VS_POOL_VOLUME = 0u;
+VS_CONST uint VS_POOL_TF = 1u;
+VS_CONST uint VS_POOL_POOLED = 2u;
+VS_CONST uint VS_POOL_FACTOR_IMAGE = 3u;
+VS_CONST uint VS_POOL_BINDING_COUNT = 4u;
+VS_CONST uint VS_OCCUPANCY_POOLED = 0u;
+VS_CONST uint VS_OCCUPANCY_OUTPUT = 1u;
+VS_CONST uint VS_OCCUPANCY_BINDING_COUNT = 2u;
+
+/* Brute-force visibility, the sweeps' reference (visibility/visibility_bruteforce.comp). */
+VS_CONST uint VS_BRUTE_VOLUME = 0u;
+VS_CONST uint VS_BRUTE_TF = 1u;
+VS_CONST uint VS_BRUTE_MAJORANT = 2u;
+VS_CONST uint VS_BRUTE_GLOBALS = 3u;
+VS_CONST uint VS_BRUTE_VISIBILITY = 4u;
+VS_CONST uint VS_BRUTE_FACTOR_IMAGE = 5u;
+VS_CONST uint VS_BRUTE_BINDING_COUNT = 6u;
+
+/* The direction table (visibility/direction_table.glsl, visibility/vsDirectionTable.cxx). */
+VS_CONST uint VS_TABLE_VISIBILITY = 0u;
+VS_CONST uint VS_TABLE_MIPS = 1u;
+VS_CONST uint VS_TABLE_OUTPUT = 2u;
+VS_CONST uint VS_TABLE_SOURCES = 3u;
+VS_CONST uint VS_TABLE_BINDING_COUNT = 4u;
+
+/* The majorant bricks' scalar ranges (volume/majorant_minmax.comp, volume/vsMajorantGrid.cxx). */
+VS_CONST uint VS_RANGES_VOLUME = 0u;
+VS_CONST uint VS_RANGES_OUTPUT = 1u;
+VS_CONST uint VS_RANGES_BINDING_COUNT = 2u;
+
+VS_NAMESPACE_END
+
+#endif
