@@ -69,7 +69,8 @@ class ProjectFiles(unittest.TestCase):
 
     def test_library_needs_no_test_only_vtk_module(self):
         test_only = re.compile(r"VTK::(RenderingImage|TestingRendering)\b")
-        for rel in ("Module/vtk.module", "Filters/vtk.module", "Rendering/vtk.module",
+        for rel in ("Module/vtk.module", "Bridge/vtk.module", "Filters/vtk.module", "Rendering/vtk.module", "vtk.module",
+                    "Bridge/CMakeLists.txt",
                     "Module/CMakeLists.txt", "Filters/CMakeLists.txt", "Rendering/CMakeLists.txt",
                     "Examples/Tool/CMakeLists.txt", "Benchmarks/CMakeLists.txt"):
             if os.path.isfile(os.path.join(SOURCE, rel)):

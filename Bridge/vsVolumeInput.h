@@ -8,7 +8,7 @@
 // Hidden from VTK's wrappers: plain C++ for the module's own classes.
 #if !defined(__VTK_WRAP__)
 
-#include "vissweepFiltersModule.h"
+#include "vissweepBridgeModule.h"
 #include "vsTransferFunctionTable.h"
 #include "vsVolumeGeometry.h"
 
@@ -30,29 +30,29 @@ class vtkVolumeProperty;
 namespace vs
 {
 /** Returns an empty string when `image` can be rendered, else the reason. */
-VISSWEEPFILTERS_EXPORT std::string CheckImage(vtkImageData* image, vtkDataArray* scalars);
+VISSWEEPBRIDGE_EXPORT std::string CheckImage(vtkImageData* image, vtkDataArray* scalars);
 
 /** Returns an empty string when `geometry` (from ComputeGeometry) can be rendered, else the
  *  reason: every index-to-world number finite in float, no axis of zero or sub-1e-30 length
  *  (zero spacing, a singular direction or prop matrix). Axes of one point are fine: they are
  *  one voxel thick (VolumeGeometry's box), so 1 x 1 x 1 and 1 x 1 x N volumes render. */
-VISSWEEPFILTERS_EXPORT std::string CheckGeometry(const VolumeGeometry& geometry);
+VISSWEEPBRIDGE_EXPORT std::string CheckGeometry(const VolumeGeometry& geometry);
 
 /** The newest modification time of the given objects (null entries ignored): what decides
  *  whether an error seen again is news (reported once per change, not once per Render()). */
-VISSWEEPFILTERS_EXPORT vtkMTimeType NewestModification(std::initializer_list<vtkObject*> objects);
+VISSWEEPBRIDGE_EXPORT vtkMTimeType NewestModification(std::initializer_list<vtkObject*> objects);
 
 /** Returns an empty string when `property` can be used, else the reason. */
-VISSWEEPFILTERS_EXPORT std::string CheckProperty(vtkVolumeProperty* property);
+VISSWEEPBRIDGE_EXPORT std::string CheckProperty(vtkVolumeProperty* property);
 
 /** Voxel centres at array indices; `volumeMatrix` (may be null) is the prop's model matrix. */
-VISSWEEPFILTERS_EXPORT VolumeGeometry ComputeGeometry(vtkImageData* image, vtkMatrix4x4* volumeMatrix);
+VISSWEEPBRIDGE_EXPORT VolumeGeometry ComputeGeometry(vtkImageData* image, vtkMatrix4x4* volumeMatrix);
 
 /** The geometry with its index box cut down to VTK's cropping subvolume: `planes` =
  *  (xmin, xmax, ymin, ymax, zmin, zmax) in data coordinates (vtkVolumeMapper's
  *  CroppingRegionPlanes). For an image with a rotated direction matrix the box is the
  *  index-space bounds of the cropping box. May return an empty box (BoxMin > BoxMax). */
-VISSWEEPFILTERS_EXPORT VolumeGeometry CropGeometry(const VolumeGeometry& geometry, vtkImageData* image,
+VISSWEEPBRIDGE_EXPORT VolumeGeometry CropGeometry(const VolumeGeometry& geometry, vtkImageData* image,
   const double planes[6]);
 
 /** The geometry cropped to VTK's cropping regions: `planes` as in CropGeometry, `flags` VTK's
@@ -61,7 +61,7 @@ VISSWEEPFILTERS_EXPORT VolumeGeometry CropGeometry(const VolumeGeometry& geometr
  *  that one box (VTK_CROP_FENCE, _CROSS, their inversions, any other union) the geometry carries
  *  the planes and flags (VolumeGeometry::CropFlags) and the passes treat points of hidden regions
  *  as empty space. No visible region: an empty box. */
-VISSWEEPFILTERS_EXPORT VolumeGeometry CropRegions(const VolumeGeometry& geometry, vtkImageData* image,
+VISSWEEPBRIDGE_EXPORT VolumeGeometry CropRegions(const VolumeGeometry& geometry, vtkImageData* image,
   const double planes[6], int flags);
 
 /** The clipping planes (world (n, w), kept where dot(n, x) + w >= 0) that matter for the volume's
@@ -69,14 +69,14 @@ VISSWEEPFILTERS_EXPORT VolumeGeometry CropRegions(const VolumeGeometry& geometry
  *  nothing), a plane that removes the whole box is the only one returned, and an empty box needs
  *  none. Throws InputError when more than VS_MAX_CLIP_PLANES (8, vtkGPUVolumeRayCastMapper's
  *  limit) planes cut the box. */
-VISSWEEPFILTERS_EXPORT std::vector<glm::dvec4> EffectiveClipPlanes(
+VISSWEEPBRIDGE_EXPORT std::vector<glm::dvec4> EffectiveClipPlanes(
   const std::vector<glm::dvec4>& planes, const VolumeGeometry& geometry);
 
 /** The scalars as floats, x fastest (component 0). */
-VISSWEEPFILTERS_EXPORT std::vector<float> ScalarsAsFloat(vtkDataArray* scalars);
+VISSWEEPBRIDGE_EXPORT std::vector<float> ScalarsAsFloat(vtkDataArray* scalars);
 
 /** The transfer function of component 0, sampled over [smin, smax] widened to the TF's points. */
-VISSWEEPFILTERS_EXPORT TransferFunctionSamples SampleTransferFunction(vtkVolumeProperty* property, float smin, float smax,
+VISSWEEPBRIDGE_EXPORT TransferFunctionSamples SampleTransferFunction(vtkVolumeProperty* property, float smin, float smax,
   double densityScale, size_t entries = 4096);
 }
 

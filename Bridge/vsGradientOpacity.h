@@ -10,7 +10,7 @@
 #define vsGradientOpacity_h
 
 #if !defined(__VTK_WRAP__)
-#include "vissweepFiltersModule.h"
+#include "vissweepBridgeModule.h"
 
 #include <array>
 #include <cstddef>
@@ -25,12 +25,12 @@ namespace vs
 /** Whether the property's gradient opacity (component 0) changes anything: set,
  * not disabled, and not 1 everywhere (a function that is not clamped is 0
  * outside its points: effective). */
-VISSWEEPFILTERS_EXPORT bool HasEffectiveGradientOpacity(vtkVolumeProperty* property);
+VISSWEEPBRIDGE_EXPORT bool HasEffectiveGradientOpacity(vtkVolumeProperty* property);
 
 /** What g depends on besides the scalars: the function's points and clamping,
  * and the spacing (empty when the gradient opacity is not effective). Equal
  * signatures give equal factors. */
-VISSWEEPFILTERS_EXPORT std::vector<double> GradientOpacitySignature(
+VISSWEEPBRIDGE_EXPORT std::vector<double> GradientOpacitySignature(
   vtkVolumeProperty* property, const double spacing[3]);
 
 /** The factor per voxel (x fastest): GO(|grad s|) in [0, 1]; 0 at non-finite
@@ -38,7 +38,7 @@ VISSWEEPFILTERS_EXPORT std::vector<double> GradientOpacitySignature(
  * one is empty space). GO is read from a table of `entries` samples over [0,
  * largest magnitude], linear between them (as VTK's GPU mapper reads its
  * gradient-opacity texture). */
-VISSWEEPFILTERS_EXPORT std::vector<float> GradientOpacityFactor(const float* scalars, std::array<uint32_t, 3> dims,
+VISSWEEPBRIDGE_EXPORT std::vector<float> GradientOpacityFactor(const float* scalars, std::array<uint32_t, 3> dims,
   const double spacing[3], vtkPiecewiseFunction* gradientOpacity, size_t entries = 4096);
 } // namespace vs
 #endif // __VTK_WRAP__

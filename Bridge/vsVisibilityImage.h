@@ -7,7 +7,7 @@
 #define vsVisibilityImage_h
 
 #if !defined(__VTK_WRAP__)
-#include "vissweepFiltersModule.h"
+#include "vissweepBridgeModule.h"
 
 class vtkImageData;
 
@@ -17,7 +17,7 @@ class VisibilityGrid;
 struct VolumeGeometry;
 
 /** Fills `out` from `grid`; `physical` is the volume's geometry without any prop matrix. */
-VISSWEEPFILTERS_EXPORT void VisibilityGridToImage(
+VISSWEEPBRIDGE_EXPORT void VisibilityGridToImage(
   const VisibilityGrid& grid, const VolumeGeometry& physical, vtkImageData* out);
 }
 #endif

@@ -15,7 +15,7 @@
 #define vsVolumeScene_h
 
 #if !defined(__VTK_WRAP__)
-#include "vissweepFiltersModule.h"
+#include "vissweepBridgeModule.h"
 #include "vsVolumeGeometry.h"
 
 #include "vtkType.h"
@@ -39,7 +39,7 @@ class MajorantGrid;
 class TransferFunctionTable;
 struct TransferFunctionSamples;
 
-class VISSWEEPFILTERS_EXPORT VolumeScene
+class VISSWEEPBRIDGE_EXPORT VolumeScene
 {
 public:
   struct Changes

@@ -10,7 +10,7 @@
 #define vsFloatRange_h
 
 #if !defined(__VTK_WRAP__)
-#include "vissweepFiltersModule.h"
+#include "vissweepBridgeModule.h"
 
 #include <limits>
 #include <string>
@@ -20,7 +20,7 @@ class vtkVolumeProperty;
 
 namespace vs
 {
-class VISSWEEPFILTERS_EXPORT FloatRange
+class VISSWEEPBRIDGE_EXPORT FloatRange
 {
 public:
   /** The largest magnitude a float holds (3.40282e+38) and its smallest normal number (1.17549e-38). */
