@@ -43,7 +43,7 @@ void camera_reservoir(vec3 o, vec3 d, float t0, float t1, inout VsRng rng, uint 
         vec4 c = vs_classify(kernel_sample(x), gTF);
         c.w *= kernel_factor(x);
         vec3 ws = T * c.rgb * (c.w / mu);
-        float si = dot(ws, vec3(0.2126, 0.7152, 0.0722));
+        float si = vs_luminance(ws);
         if (si > 0.0)
         {
           S += si;
