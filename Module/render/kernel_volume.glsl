@@ -58,19 +58,6 @@ vec2 ray_interval(vec3 o, vec3 d)
 {
   vec2 t = vs_intersect_box(o, d, gBoxMin, gBoxMax);
   for (uint i = 0u; i < gClipCount; ++i)
-  {
-    vec4 plane = gClipPlanes[i];
-    float dn = dot(plane.xyz, d);
-    float on = dot(plane.xyz, o) + plane.w;
-    if (abs(dn) < 1e-20)
-    {
-      if (on < 0.0)
-        t = vec2(1.0, 0.0);
-    }
-    else if (dn > 0.0)
-      t.x = max(t.x, -on / dn);
-    else
-      t.y = min(t.y, -on / dn);
-  }
+    t = vs_clip_by_plane(gClipPlanes[i], o, d, t);
   return t;
 }

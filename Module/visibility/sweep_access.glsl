@@ -19,6 +19,7 @@
 #ifndef VS_SWEEP_POOLED
 #include "volume_access.glsl"
 #endif
+#include "ray_box.glsl"
 #include "brick_walk.h"
 
 ivec3 gDims;
@@ -53,28 +54,13 @@ vec2 vs_clip_interval(vec3 o, vec3 d)
 {
   vec2 t = vec2(-1e30, 1e30);
   for (uint i = 0u; i < gClipCount; ++i)
-  {
-    float dn = dot(G.clipPlanes[i].xyz, d);
-    float on = dot(G.clipPlanes[i].xyz, o) + G.clipPlanes[i].w;
-    if (abs(dn) < 1e-20)
-    {
-      if (on < 0.0)
-        return vec2(1.0, 0.0);
-      continue;
-    }
-    float th = -on / dn;
-    if (dn > 0.0)
-      t.x = max(t.x, th);
-    else
-      t.y = min(t.y, th);
-  }
+    t = vs_clip_by_plane(G.clipPlanes[i], o, d, t);
   return t;
 }
 
 #ifdef VS_SWEEP_POOLED
 layout(constant_id = 0) const uint VS_SWEEP_NEAREST = 0u; /* 1: nearest-neighbour reconstruction */
 
-#include "ray_box.glsl"
 
 /* Pooled extinction at pooled-texel point q (clamped to the volume): trilinear, or under nearest
  * interpolation the texel holding q, whose P^3 voxels' nearest-neighbour cells are exactly the

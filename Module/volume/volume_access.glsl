@@ -239,20 +239,6 @@ float vs_nearest_max_extinction(vec3 f0, vec3 f1, vec4 c0, vec4 c1, vec4 tf)
 vec2 vs_clip_planes(vec3 o, vec3 d, vec2 t, vec4 planes[VS_MAX_CLIP_PLANES], uint count)
 {
   for (uint i = 0u; i < count; ++i)
-  {
-    float dn = dot(planes[i].xyz, d);
-    float on = dot(planes[i].xyz, o) + planes[i].w;
-    if (abs(dn) < 1e-20)
-    {
-      if (on < 0.0)
-        return vec2(1.0, 0.0);
-      continue;
-    }
-    float th = -on / dn;
-    if (dn > 0.0)
-      t.x = max(t.x, th);
-    else
-      t.y = min(t.y, th);
-  }
+    t = vs_clip_by_plane(planes[i], o, d, t);
   return t;
 }
