@@ -1,6 +1,8 @@
 #include "vtkVisibilitySweepVolumeMapper.h"
 
 #include "vsMapperInternals.h"
+#include "vsAccumulationSignature.h"
+#include "vsFrameGeometry.h"
 #include "vsContext.h"
 #include "vsDeviceEnvironment.h"
 #include "vsDeviceVolume.h"
@@ -95,65 +97,6 @@ bool IsProjection(int blendMode)
 {
   return blendMode == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND || blendMode == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND ||
     blendMode == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND || blendMode == vtkVolumeMapper::ADDITIVE_BLEND;
-}
-
-// Equal up to rounding: VTK recomputes the camera matrices on some passes (e.g. while
-// vtkWindowToImageFilter grabs the window) with last-bit differences that are no change.
-bool NearlyEqual(const std::vector<double>& a, const std::vector<double>& b)
-{
-  if (a.size() != b.size())
-  {
-    return false;
-  }
-  for (size_t i = 0; i < a.size(); ++i)
-  {
-    if (std::abs(a[i] - b[i]) > 1e-6 * std::max({ 1.0, std::abs(a[i]), std::abs(b[i]) }))
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-// Every value of the render parameters, integers by value: reinterpreting them as floats
-// made small integers (the strategy, the cell mode) denormals that NearlyEqual took for 0,
-// so switching Uniform -> Environment kept accumulating into the old image.
-std::vector<double> RenderSignature(const vs::shared::VsRenderParams& p)
-{
-  // Not in the signature: directionSources, which MonteCarloPass sets from the grid as it fills in
-  // (samples of every stage of the grid are averaged; VisibilityGridUpdater).
-  static_assert(sizeof(vs::shared::VsRenderParams) ==
-      2 * 64 + (16 + vs::shared::VS_MAX_CLIP_PLANES) * 16 + vs::shared::VS_MAX_RENDER_DIRECTIONS * 4,
-    "a member was added to VsRenderParams: add it to the signature");
-  std::vector<double> s;
-  auto addMat = [&s](const glm::mat4& m) { s.insert(s.end(), &m[0][0], &m[0][0] + 16); };
-  auto addVec = [&s](const glm::vec4& v) { s.insert(s.end(), { v.x, v.y, v.z, v.w }); };
-  auto addUint = [&s](const glm::uvec4& v) { s.insert(s.end(), { double(v.x), double(v.y), double(v.z), double(v.w) }); };
-  addMat(p.invViewProj);
-  addMat(p.worldToIndex);
-  for (const auto& v : { p.boxMin, p.boxMax, p.dims, p.tf, p.background, p.sampling2, p.cellSize, p.tracking, p.cropLo,
-         p.cropHi, p.mixture })
-  {
-    addVec(v);
-  }
-  for (const auto& v : { p.viewport, p.sampling, p.grid, p.bricks, p.crop })
-  {
-    addUint(v);
-  }
-  for (const auto& v : p.clipPlanes)
-  {
-    addVec(v);
-  }
-  return s;
-}
-
-glm::dmat4 ToGlm(vtkMatrix4x4* m)
-{
-  glm::dmat4 g;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c)
-      g[c][r] = m->GetElement(r, c);
-  return g;
 }
 
 // What an accumulator of n samples of alpha 1 (a pixel that sees the environment in the opaque
@@ -421,107 +364,6 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
   }
 }
 
-namespace
-{
-// The camera and volume placement as the shaders want them.
-struct View
-{
-  vs::Viewport Port;
-  glm::mat4 InvViewProj;
-};
-
-// The device gets the camera as a float matrix: a camera value beyond float's range (issue 13,
-// item 5) is refused naming it, and so is a matrix whose float form is not finite.
-View MakeView(vtkRenderer* ren)
-{
-  View v;
-  v.Port = vs::WindowCompositor::GetViewport(ren);
-  vtkCamera* camera = ren->GetActiveCamera();
-  const std::string problem = vs::FloatRange::CheckCamera(camera);
-  if (!problem.empty())
-  {
-    throw vs::InputError(problem);
-  }
-  double aspect = v.Port.Height > 0 ? double(v.Port.Width) / double(v.Port.Height) : 1.0;
-  v.InvViewProj = glm::mat4(glm::inverse(ToGlm(camera->GetCompositeProjectionTransformMatrix(aspect, -1, 1))));
-  const float* m = glm::value_ptr(v.InvViewProj);
-  if (!std::all_of(m, m + 16, [](float x) { return std::isfinite(x); }))
-  {
-    throw vs::InputError("the camera's inverse view-projection matrix does not fit in float (check its position, "
-                         "focal point, clipping range and parallel scale)");
-  }
-  return v;
-}
-
-// Before the window's depth is read back and before any pass allocates: the viewport must fit the
-// device's limits and the host's memory (issue 13, item 7).
-void CheckViewport(const vs::Context& context, const vs::Viewport& port)
-{
-  if (port.Width > 0 && port.Height > 0)
-  {
-    vs::RenderTargetLimits::Check(context, uint32_t(port.Width), uint32_t(port.Height));
-  }
-}
-
-// World clipping planes (n, w): kept where dot(n, x) + w >= 0, those that cut the (cropped) box
-// of `geometry` (vs::EffectiveClipPlanes: planes that clip nothing are dropped, at most 8 may cut it).
-std::vector<glm::dvec4> WorldPlanes(vtkPlaneCollection* planes, const vs::VolumeGeometry& geometry)
-{
-  std::vector<glm::dvec4> out;
-  if (!planes)
-  {
-    return out;
-  }
-  vtkPlane* plane;
-  vtkCollectionSimpleIterator it;
-  for (planes->InitTraversal(it); (plane = planes->GetNextPlane(it));)
-  {
-    // The normal is normalised in double (a normal of 1e300 was an infinity in float, and the
-    // plane was ignored); the origin must fit a float, and so must the plane's offset.
-    double normal[3], n[3], o[3];
-    plane->GetNormal(normal);
-    plane->GetOrigin(o);
-    const std::string index = std::to_string(out.size());
-    if (!vs::FloatRange::Normalize(normal, n))
-    {
-      throw vs::InputError("clipping plane " + index + " has a zero or non-finite normal");
-    }
-    for (int i = 0; i < 3; ++i)
-    {
-      const std::string problem = vs::FloatRange::Check(o[i]);
-      if (!problem.empty())
-      {
-        std::ostringstream os;
-        os << "clipping plane " << index << "'s origin (" << "xyz"[i] << " = " << o[i] << ") is " << problem;
-        throw vs::InputError(os.str());
-      }
-    }
-    const double w = -(n[0] * o[0] + n[1] * o[1] + n[2] * o[2]);
-    if (!vs::FloatRange::Check(w).empty())
-    {
-      throw vs::InputError("clipping plane " + index + "'s offset from the origin does not fit in float");
-    }
-    out.emplace_back(n[0], n[1], n[2], w);
-  }
-  return vs::EffectiveClipPlanes(out, geometry);
-}
-}
-
-namespace
-{
-// The volume's geometry with VTK's cropping regions applied (vs::CropRegions).
-vs::VolumeGeometry CroppedGeometry(vtkVolumeMapper* mapper, const vs::VolumeGeometry& full)
-{
-  if (!mapper->GetCropping())
-  {
-    return full;
-  }
-  // Any region flags: a union of the 27 boxes; one box (the subvolume, VTK's default) crops the box only.
-  return vs::CropRegions(full, vtkImageData::SafeDownCast(mapper->GetInput()), mapper->GetCroppingRegionPlanes(),
-    mapper->GetCroppingRegionFlags());
-}
-}
-
 void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol)
 {
   std::vector<float> rgba = this->EmissionAbsorptionImage(ren, vol);
@@ -549,7 +391,7 @@ void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume
   {
     // The voxel where each covered pixel's ray crosses the selection opacity, marched on the host.
     vs::VoxelPicker::Volume v;
-    v.Geometry = CroppedGeometry(this, I.Scene->Geometry());
+    v.Geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
     int cellFlag = 0;
     v.Scalars = vtkAbstractMapper::GetScalars(vtkImageData::SafeDownCast(this->GetInput()), this->ScalarMode,
       this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
@@ -558,7 +400,7 @@ void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume
     v.UnitDistance = property ? property->GetScalarOpacityUnitDistance(0) : 1.0;
     v.DensityScale = this->DensityScale;
     v.Nearest = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
-    v.WorldPlanes = WorldPlanes(this->ClippingPlanes, v.Geometry);
+    v.WorldPlanes = vs::FrameGeometry::WorldPlanes(this->ClippingPlanes, v.Geometry);
     v.Factor = I.Scene->HasGradientOpacity() ? &I.Scene->HostFactor() : nullptr;
     std::vector<bool> covered(rgba.size() / 4);
     for (size_t i = 0; i < covered.size(); ++i)
@@ -567,7 +409,7 @@ void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume
     }
     const double aspect = vp.Height > 0 ? double(vp.Width) / double(vp.Height) : 1.0;
     const glm::dmat4 invViewProj =
-      glm::inverse(ToGlm(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1)));
+      glm::inverse(vs::FrameGeometry::ToGlm(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1)));
     const std::vector<vtkIdType> ids = vs::VoxelPicker::Ids(v, invViewProj, vp.Width, vp.Height,
       vs::WindowCompositor::ReadDepth(ren, vp), covered, vs::SelectionMask::Threshold,
       vs::SelectionMask::AsksForCellIds(selector));
@@ -590,14 +432,14 @@ void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume
 std::vector<float> vtkVisibilitySweepVolumeMapper::EmissionAbsorptionImage(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
-  const vs::VolumeGeometry geometry = CroppedGeometry(this, I.Scene->Geometry());
-  View view = MakeView(ren);
+  const vs::VolumeGeometry geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
+  vs::CameraView view = vs::FrameGeometry::MakeView(ren);
   vs::Viewport vp = view.Port;
   if (vp.Width <= 0 || vp.Height <= 0)
   {
     return {};
   }
-  CheckViewport(*I.Context, vp);
+  vs::FrameGeometry::CheckViewport(*I.Context, vp);
   std::vector<float> depth = vs::WindowCompositor::ReadDepth(ren, vp);
   vs::shared::VsFrameParams p{};
   p.invViewProj = view.InvViewProj;
@@ -611,7 +453,7 @@ std::vector<float> vtkVisibilitySweepVolumeMapper::EmissionAbsorptionImage(vtkRe
   p.viewport = glm::uvec4(vp.Width, vp.Height, I.Frame++, static_cast<uint32_t>(this->Seed));
   double step = this->SampleDistance > 0.0 ? this->SampleDistance : 0.5 * geometry.MinSpacing;
   p.march = glm::vec4(float(step), 0.995f, 0.0f, 0.0f);
-  auto planes = WorldPlanes(this->ClippingPlanes, geometry);
+  auto planes = vs::FrameGeometry::WorldPlanes(this->ClippingPlanes, geometry);
   for (size_t i = 0; i < planes.size(); ++i)
   {
     p.clipPlanes[i] = glm::vec4(planes[i]);
@@ -732,12 +574,12 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   Internals& I = *this->Impl;
   this->LastRenderComplete = false;
   I.SwitchView(ren); // one accumulator per renderer
-  const vs::VolumeGeometry geometry = CroppedGeometry(this, I.Scene->Geometry());
+  const vs::VolumeGeometry geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
   const bool croppedAway = glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax));
   // The camera and the image size first: nothing is uploaded, swept or read back for a view
   // that cannot render.
-  View view = MakeView(ren);
-  CheckViewport(*I.Context, view.Port);
+  vs::CameraView view = vs::FrameGeometry::MakeView(ren);
+  vs::FrameGeometry::CheckViewport(*I.Context, view.Port);
 
   // The environment: port 1, or a constant white sky.
   vtkImageData* envImage = nullptr;
@@ -789,7 +631,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   }
 
   // The visibility grid, only for the strategies that use it.
-  const std::vector<glm::dvec4> planes = WorldPlanes(this->ClippingPlanes, geometry);
+  const std::vector<glm::dvec4> planes = vs::FrameGeometry::WorldPlanes(this->ClippingPlanes, geometry);
   const bool emptyVolume = I.Scene->Majorants().MaxMajorant() <= 0.0f || croppedAway;
   const bool autoStrategy = this->SamplingStrategy == Auto;
   // Auto skips the grid of a volume too thin to shadow: with the largest extinction along the
@@ -988,14 +830,14 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     // Everything the accumulated image depends on; any difference restarts accumulation. The
     // grid's generation, not its sweeps: a grid filling in (or updated lazily) changes the pdf,
     // never the mean, so samples of every stage average into one estimate.
-    std::vector<double> signature = RenderSignature(p);
+    std::vector<double> signature = vs::AccumulationSignature::Of(p);
     signature.push_back(double(I.Scene->TableBuilds()));
     signature.push_back(double(I.Scene->Uploads()));
     signature.push_back(double(I.Scene->FactorBuilds())); // a new gradient-opacity factor
     signature.push_back(double(this->EnvironmentUploadCount));
     signature.push_back(double(I.Grid && needGrid ? I.Grid->Generation() : 0));
     signature.insert(signature.end(), depth.begin(), depth.end());
-    if (!NearlyEqual(signature, I.ImageSignature) || I.MC->Width() != w || I.MC->Height() != h)
+    if (!vs::AccumulationSignature::NearlyEqual(signature, I.ImageSignature) || I.MC->Width() != w || I.MC->Height() != h)
     {
       I.MC->Reset(w, h);
       if (I.MCGrid)
@@ -1235,7 +1077,7 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
   r.Parameters.NearestInterpolation = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
   r.Parameters.ExtinctionPooling = uint32_t(this->ExtinctionPooling);
   r.Geometry = I.GridGeometry;
-  r.WorldPlanes = WorldPlanes(this->ClippingPlanes, I.GridGeometry);
+  r.WorldPlanes = vs::FrameGeometry::WorldPlanes(this->ClippingPlanes, I.GridGeometry);
   const int side = int(r.Parameters.DirectionResolution);
   if (this->LightWeightedDirections && I.EnvironmentSource && I.EnvironmentSource->Size >= side)
   {
@@ -1496,7 +1338,7 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetVisibilityGrid()
     try
     {
       // In data coordinates (no prop matrix), over the box the grid covers (cropped or not).
-      vs::VisibilityGridToImage(*I.Grid->Grid(), CroppedGeometry(this, vs::ComputeGeometry(input, nullptr)), image);
+      vs::VisibilityGridToImage(*I.Grid->Grid(), vs::FrameGeometry::CroppedGeometry(this, vs::ComputeGeometry(input, nullptr)), image);
     }
     catch (const std::exception& e)
     {
