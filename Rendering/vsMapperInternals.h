@@ -9,6 +9,7 @@
 #include "vtkVisibilitySweepVolumeMapper.h"
 
 #include "vsContext.h"
+#include "vsCoverageComposite.h"
 #include "vsDeviceEnvironment.h"
 #include "vsDirectionTable.h"
 #include "vsEmissionAbsorptionPass.h"
@@ -90,9 +91,7 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   // The pixels of Radiance that see the environment under the coverage alpha (background.w = 2):
   // their "Alpha" (and variance) are set to what the opaque image had, so GetRadiance() is unchanged.
   std::vector<uint8_t> EnvironmentPixels;
-  // The environment's display colour per pixel (rgb) behind the last composited view, and what for.
-  std::vector<float> BackgroundDisplay;
-  std::vector<double> BackgroundKey;
+  vs::CoverageComposite Composite; // the display image, over the environment's display colour
   vtkSmartPointer<vtkImageData> VisibilityImage;
   // One accumulator per renderer (two views of one volume): MC, MCGrid, Interactive, ImageSignature
   // and Selector above are the current view's; the other views' wait here (SwitchView).
