@@ -16,6 +16,7 @@
 #include "vsEnvironmentMap.h"
 #include "vsMonteCarloPass.h"
 #include "vsPeelingDeferral.h"
+#include "vsPipelinePrewarm.h"
 #include "vsPropertyChecks.h"
 #include "vsStrategySelector.h"
 #include "vsVisibilityGridUpdater.h"
@@ -28,7 +29,6 @@
 
 #include <glm/glm.hpp>
 
-#include <future>
 #include <memory>
 #include <string>
 #include <utility>
@@ -44,33 +44,15 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::unique_ptr<vs::MonteCarloPass> MC, Interactive;
   std::unique_ptr<vs::MonteCarloPass> MCGrid; // Auto: the TwoStep samples (MC holds Environment's)
   std::shared_ptr<vs::DirectionTable> Table;   // the grid strategies' direction table, shared by the passes
-  std::future<void> Prewarm;                   // the first frame's render pipeline, made while the scene uploads
-  bool PrewarmStarted = false;
+  vs::PipelinePrewarm Prewarm;     // the first frame's render pipeline, made while the scene uploads
   /** Auto: TwoStep's pipeline, made on another thread once the grid has swept a direction, so the
    *  first TwoStep frame does not wait for its creation (a TwoStep frame that comes first waits in
    *  the context's pipeline cache). */
-  std::future<void> GridPrewarm;
-  bool GridPrewarmStarted = false;
-  /** Waits for a prewarm (its errors are the render's to report: it makes the pipeline again). */
-  static void Join(std::future<void>& prewarm)
-  {
-    if (prewarm.valid())
-    {
-      try
-      {
-        prewarm.get();
-      }
-      catch (...)
-      {
-      }
-    }
-  }
-  void JoinPrewarm() { Join(this->Prewarm); }
-  void JoinGridPrewarm() { Join(this->GridPrewarm); }
+  vs::PipelinePrewarm GridPrewarm;
   ~Internals()
   {
-    this->JoinPrewarm();
-    this->JoinGridPrewarm();
+    this->Prewarm.Join();
+    this->GridPrewarm.Join();
   }
   std::unique_ptr<vs::MonteCarloPass> Tile;   // the tiles of a tiled render (the views' accumulators stay)
   vs::PeelingDeferral Peeling; // inside VTK's depth peeling of volumes: draw at the frame's end instead

@@ -4,6 +4,7 @@
 #include "vsAccumulationSignature.h"
 #include "vsFrameGeometry.h"
 #include "vsCoverageComposite.h"
+#include "vsPipelinePrewarm.h"
 #include "vsContext.h"
 #include "vsDeviceEnvironment.h"
 #include "vsDeviceVolume.h"
@@ -67,12 +68,6 @@
 #include <future>
 #include <sstream>
 
-#if defined(__linux__)
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-#endif
-
 vtkStandardNewMacro(vtkVisibilitySweepVolumeMapper);
 
 namespace
@@ -82,16 +77,6 @@ static_assert(vs::shared::VS_BLEND_MAXIMUM == vtkVolumeMapper::MAXIMUM_INTENSITY
     vs::shared::VS_BLEND_AVERAGE == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND &&
     vs::shared::VS_BLEND_ADDITIVE == vtkVolumeMapper::ADDITIVE_BLEND,
   "the shaders' blend modes are VTK's values");
-
-// Lets the calling thread run only on CPU time no other thread of the process wants (Linux: a
-// thread has its own nice value). For work that is ahead of need: a caller that needs its result
-// waits for it (std::call_once in Context::Pipeline), and while it waits the CPU is the thread's.
-void YieldTheCpuToOtherThreads()
-{
-#if defined(__linux__)
-  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 19);
-#endif
-}
 
 // The blend modes rendered as projections through the emission-absorption path.
 bool IsProjection(int blendMode)
@@ -169,8 +154,8 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
   {
     this->GetVisibilityGrid(); // completes a grid still filling in, then downloads it
   }
-  I.JoinPrewarm();
-  I.JoinGridPrewarm();
+  I.Prewarm.Join();
+  I.GridPrewarm.Join();
   I.Environment.reset();
   I.EnvironmentSource.reset();
   I.Grid.reset();
@@ -257,7 +242,7 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     {
       I.Scene = std::make_unique<vs::VolumeScene>(I.Context);
     }
-    if (!I.PrewarmStarted && this->RenderMode == MonteCarlo && !projection && vol && vol->GetProperty())
+    if (!I.Prewarm.Started() && this->RenderMode == MonteCarlo && !projection && vol && vol->GetProperty())
     {
       this->StartPrewarm(input, vol, scalars);
     }
@@ -436,7 +421,7 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume
 {
   Internals& I = *this->Impl;
   vtkVolumeProperty* property = volume->GetProperty();
-  I.PrewarmStarted = true;
+  I.Prewarm.MarkStarted();
   if (this->Cropping)
   {
     return; // the pipeline depends on the regions the geometry keeps: made when known
@@ -459,54 +444,9 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume
   // A pass of its own: the pipeline lands in the context's cache, where the view's pass finds it
   // (waiting for it if the render gets there first); the view's passes come and go (SwitchView).
   const bool table = this->DirectionTable;
-  // Whether the device volume will be integer-coded (vsDeviceVolume.h quads): integer scalars of one
-  // component spanning at most 255 (the upload decides; a wrong guess only wastes this thread's work).
-  bool quads = false;
-  if (scalars && scalars->GetNumberOfComponents() == 1 && scalars->GetDataType() != VTK_FLOAT &&
-    scalars->GetDataType() != VTK_DOUBLE &&
-    uint64_t(scalars->GetNumberOfTuples()) * 4 <= vs::DeviceVolume::kMaxQuadBytes)
-  {
-    double range[2];
-    scalars->GetRange(range, 0);
-    quads = range[1] - range[0] <= 255.0;
-  }
-  // The cell walk of optically thick bricks (MonteCarloPass::NeedsCellWalk) from the transfer
-  // function's largest extinction over the scalars' range: the largest majorant the upload will
-  // find when some brick reaches the function's peak, as it usually does (a wrong guess costs the
-  // first frame a compile of its own, ~0.2 s: blind_sunrise's first frames did before).
-  // Only for input the scene update will accept: sampling a property without functions would
-  // give it default ones (a change, and its error logged again).
-  bool cellWalk = false;
-  if (vs::CheckImage(input, scalars).empty() && vs::CheckProperty(property).empty())
-  {
-    try
-    {
-      const vs::VolumeGeometry geometry = vs::ComputeGeometry(input, volume->GetMatrix());
-      if (!vs::CheckGeometry(geometry).empty())
-      {
-        throw vs::InputError(vs::CheckGeometry(geometry));
-      }
-      double range[2];
-      scalars->GetRange(range, 0);
-      const vs::TransferFunctionSamples samples = vs::VolumeScene::SampleRenderedTransferFunction(
-        property, float(range[0]), float(range[1]), this->DensityScale, geometry);
-      float extinction = 0.0f;
-      for (size_t i = 3; i < samples.Entries.size(); i += 4)
-      {
-        extinction = std::max(extinction, samples.Entries[i]);
-      }
-      p.worldToIndex = glm::mat4(geometry.WorldToIndex);
-      cellWalk = vs::MonteCarloPass::NeedsCellWalk(double(extinction), vs::MajorantGrid::DefaultBrickSize, p);
-    }
-    catch (const std::exception&)
-    {
-      // The scene update refuses this input with its own error: no guess needed.
-    }
-  }
-  I.Prewarm = std::async(std::launch::async, [context = I.Context, p, table, quads, cellWalk]() {
-    vs::MonteCarloPass pass(context);
-    pass.Prewarm(p, table, quads, cellWalk);
-  });
+  const bool quads = vs::PipelinePrewarm::GuessQuads(scalars);
+  const bool cellWalk = vs::PipelinePrewarm::GuessCellWalk(input, scalars, volume, this->DensityScale, p);
+  I.Prewarm.Start(I.Context, p, table, quads, cellWalk, false);
 }
 
 void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol)
@@ -713,10 +653,10 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     }
   }
 
-  I.JoinPrewarm();
-  if (autoStrategy && grid && !I.GridPrewarmStarted && I.Grid->SweptDirections() > 0)
+  I.Prewarm.Join();
+  if (autoStrategy && grid && !I.GridPrewarm.Started() && I.Grid->SweptDirections() > 0)
   {
-    I.GridPrewarmStarted = true;
+    I.GridPrewarm.MarkStarted();
     vs::shared::VsRenderParams q = p;
     q.sampling.x = uint32_t(TwoStep);
     q.crop.w = I.Scene->Volume().Factor() ? 1u : 0u; // as MonteCarloPass::Render sets it
@@ -725,11 +665,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     const bool table = this->DirectionTable;
     // On a CPU device the compile would take cores from the frames rendering meanwhile (Auto's
     // paths per device second fell 10-20% in its first seconds): it takes only what they leave.
-    I.GridPrewarm = std::async(std::launch::async, [context = I.Context, q, table, quads, cellWalk]() {
-      YieldTheCpuToOtherThreads();
-      vs::MonteCarloPass pass(context);
-      pass.Prewarm(q, table, quads, cellWalk);
-    });
+    I.GridPrewarm.Start(I.Context, q, table, quads, cellWalk, true);
   }
   vs::MonteCarloPass* pass = nullptr;
   if (interactive)
