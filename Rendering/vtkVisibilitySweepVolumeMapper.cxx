@@ -5,6 +5,8 @@
 #include "vsFrameGeometry.h"
 #include "vsCoverageComposite.h"
 #include "vsPipelinePrewarm.h"
+#include "vsCombinedAccumulators.h"
+#include "vsRadianceImage.h"
 #include "vsContext.h"
 #include "vsDeviceEnvironment.h"
 #include "vsDeviceVolume.h"
@@ -802,12 +804,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   }
   if (autoStrategy && !interactive && !tiled && spp > 0 && !emptyVolume)
   {
-    double meanSquare = 0.0;
-    for (size_t i = 0; i < mean.size(); i += 4)
-    {
-      meanSquare += (double(mean[i]) * mean[i] + double(mean[i + 1]) * mean[i + 1] + double(mean[i + 2]) * mean[i + 2]) / 3.0;
-    }
-    meanSquare /= std::max<double>(1.0, double(mean.size() / 4));
+    const double meanSquare = vs::CombinedAccumulators::MeanSquare(mean);
     // The cost per sample without the direction table's build, which (like the sweeps) is the
     // grid's update, made once per grid state, not per sample.
     I.Selector.SetGridComplete(I.Grid && I.Grid->IsComplete());
@@ -821,22 +818,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     {
       I.Radiance = vtkSmartPointer<vtkImageData>::New();
     }
-    I.Radiance->Initialize();
-    I.Radiance->SetDimensions(int(w), int(h), 1);
-    vtkNew<vtkFloatArray> rgb;
-    rgb->SetName("Radiance");
-    rgb->SetNumberOfComponents(3);
-    rgb->SetNumberOfTuples(vtkIdType(w) * h);
-    vtkNew<vtkFloatArray> alpha;
-    alpha->SetName("Alpha");
-    alpha->SetNumberOfTuples(vtkIdType(w) * h);
-    for (vtkIdType i = 0; i < vtkIdType(w) * h; ++i)
-    {
-      rgb->SetTuple3(i, mean[4 * i], mean[4 * i + 1], mean[4 * i + 2]);
-      alpha->SetValue(i, environmentPixels.empty() || !environmentPixels[i] ? mean[4 * i + 3] : opaqueAlpha);
-    }
-    I.Radiance->GetPointData()->SetScalars(rgb);
-    I.Radiance->GetPointData()->AddArray(alpha);
+    vs::RadianceImage::Fill(I.Radiance, mean, w, h, environmentPixels, opaqueAlpha);
     I.EnvironmentPixels = environmentPixels;
   }
   // Composited over the background: the environment's display colour behind each pixel (made again
@@ -1033,62 +1015,22 @@ const char* vtkVisibilitySweepVolumeMapper::GetUpdateSchemeAsString()
 
 uint32_t vtkVisibilitySweepVolumeMapper::AccumulatedSamplesOf(bool autoStrategy)
 {
-  Internals& I = *this->Impl;
-  uint32_t n = I.MC ? I.MC->Samples() : 0u;
-  return n + (autoStrategy && I.MCGrid ? I.MCGrid->Samples() : 0u);
+  return vs::CombinedAccumulators::Samples(this->Impl->MC.get(), this->Impl->MCGrid.get(), autoStrategy);
 }
 
-// The mean of all samples: Auto's two accumulators weighted by their sample counts (equal weight
-// per sample: both are unbiased estimates of the same image).
 std::vector<float> vtkVisibilitySweepVolumeMapper::CombinedMean(bool autoStrategy)
 {
-  Internals& I = *this->Impl;
-  std::vector<float> mean = I.MC->Mean();
-  if (!autoStrategy || !I.MCGrid || I.MCGrid->Samples() == 0)
-  {
-    return mean;
-  }
-  const double ne = I.MC->Samples(), ng = I.MCGrid->Samples();
-  const std::vector<float> g = I.MCGrid->Mean();
-  for (size_t i = 0; i < mean.size() && i < g.size(); ++i)
-  {
-    mean[i] = float((ne * double(mean[i]) + ng * double(g[i])) / (ne + ng));
-  }
-  return mean;
+  return vs::CombinedAccumulators::Mean(*this->Impl->MC, this->Impl->MCGrid.get(), autoStrategy);
 }
 
-// Per-sample variance of the combined mean, such that variance / samples is its squared standard
-// error: (n_e v_e + n_g v_g) / (n_e + n_g).
 std::vector<double> vtkVisibilitySweepVolumeMapper::CombinedVariance(bool autoStrategy)
 {
-  Internals& I = *this->Impl;
-  std::vector<double> var = I.MC->Variance();
-  if (!autoStrategy || !I.MCGrid || I.MCGrid->Samples() == 0)
-  {
-    return var;
-  }
-  const double ne = I.MC->Samples(), ng = I.MCGrid->Samples();
-  const std::vector<double> g = I.MCGrid->Variance();
-  for (size_t i = 0; i < var.size() && i < g.size(); ++i)
-  {
-    var[i] = (ne * var[i] + ng * g[i]) / (ne + ng);
-  }
-  return var;
+  return vs::CombinedAccumulators::Variance(*this->Impl->MC, this->Impl->MCGrid.get(), autoStrategy);
 }
 
-// The alpha the opaque image's pixels that see the environment have (CombinedMean of accumulators
-// whose alpha samples are all 1).
 float vtkVisibilitySweepVolumeMapper::OpaqueAlpha(bool autoStrategy)
 {
-  Internals& I = *this->Impl;
-  const uint32_t ne = I.MC ? I.MC->Samples() : 0u;
-  const float a = vs::CoverageComposite::OpaqueMean(ne);
-  if (!autoStrategy || !I.MCGrid || I.MCGrid->Samples() == 0)
-  {
-    return a;
-  }
-  const double ng = I.MCGrid->Samples();
-  return float((double(ne) * double(a) + ng * double(vs::CoverageComposite::OpaqueMean(I.MCGrid->Samples()))) / (double(ne) + ng));
+  return vs::CombinedAccumulators::OpaqueAlpha(this->Impl->MC.get(), this->Impl->MCGrid.get(), autoStrategy);
 }
 
 bool vtkVisibilitySweepVolumeMapper::GetShowsEnvironmentAsBackground()
@@ -1111,27 +1053,9 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)
     {
       const bool autoStrategy = this->SamplingStrategy == Auto;
       std::vector<double> var = this->CombinedVariance(autoStrategy);
-      if (!I.EnvironmentPixels.empty())
-      {
-        // The alpha's variance of the opaque image where the pixel sees the environment
-        // (CombinedVariance of accumulators whose alpha samples are all 1).
-        const uint32_t ne = I.MC->Samples(), ng = autoStrategy && I.MCGrid ? I.MCGrid->Samples() : 0u;
-        const double v = ng == 0 ? vs::CoverageComposite::OpaqueVariance(ne)
-                                 : (double(ne) * vs::CoverageComposite::OpaqueVariance(ne) + double(ng) * vs::CoverageComposite::OpaqueVariance(ng)) / (double(ne) + ng);
-        for (size_t i = 0; i < I.EnvironmentPixels.size() && 4 * i + 3 < var.size(); ++i)
-        {
-          if (I.EnvironmentPixels[i])
-          {
-            var[4 * i + 3] = v;
-          }
-        }
-      }
-      vtkNew<vtkDoubleArray> v;
-      v->SetName("Variance");
-      v->SetNumberOfComponents(4);
-      v->SetNumberOfTuples(vtkIdType(var.size() / 4));
-      std::copy(var.begin(), var.end(), v->GetPointer(0));
-      I.Radiance->GetPointData()->AddArray(v);
+      const uint32_t ne = I.MC->Samples(), ng = autoStrategy && I.MCGrid ? I.MCGrid->Samples() : 0u;
+      vs::RadianceImage::AddVariance(
+        I.Radiance, std::move(var), I.EnvironmentPixels, vs::CombinedAccumulators::OpaqueAlphaVariance(ne, ng));
     }
     catch (const std::exception& e)
     {
