@@ -14,6 +14,7 @@
 #include "vsDirectionTable.h"
 #include "vsEmissionAbsorptionPass.h"
 #include "vsEnvironmentMap.h"
+#include "vsMapperEnvironment.h"
 #include "vsMonteCarloPass.h"
 #include "vsPeelingDeferral.h"
 #include "vsPipelinePrewarm.h"
@@ -57,16 +58,11 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::unique_ptr<vs::MonteCarloPass> Tile;   // the tiles of a tiled render (the views' accumulators stay)
   vs::PeelingDeferral Peeling; // inside VTK's depth peeling of volumes: draw at the frame's end instead
   std::unique_ptr<vs::VisibilityGridUpdater> Grid;
-  std::unique_ptr<vs::DeviceEnvironment> Environment;
-  std::shared_ptr<const vs::EnvironmentMap> EnvironmentSource;
-  vtkMTimeType EnvironmentTime = 0;
-  bool DefaultEnvironment = false;
+  vs::MapperEnvironment Environment; // port 1's map (or a white sky) on the device
   bool GridNeedsFull = true;          // extinction or geometry changed since the last full sweep
   vs::VolumeGeometry GridGeometry;    // the geometry the grid is computed for (set each frame)
   vs::GridUpdateRequest LastGridRequest;
   vs::StrategySelector Selector;      // Auto: Environment or TwoStep, frame by frame
-  std::vector<glm::vec3> LightDirections; // per grid texel, where its light comes from
-  std::pair<int, int> LightDirectionsKey{ -1, -1 }; // (environment upload, D) they were made for
   double LastRenderSeconds = 0.0;     // device seconds of the last Monte Carlo frame (the sweep budget)
   std::vector<double> ImageSignature; // what the accumulated image was rendered for
   vtkSmartPointer<vtkImageData> Radiance;

@@ -7,6 +7,7 @@
 #include "vsPipelinePrewarm.h"
 #include "vsCombinedAccumulators.h"
 #include "vsRadianceImage.h"
+#include "vsMapperEnvironment.h"
 #include "vsContext.h"
 #include "vsDeviceEnvironment.h"
 #include "vsDeviceVolume.h"
@@ -158,8 +159,7 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
   }
   I.Prewarm.Join();
   I.GridPrewarm.Join();
-  I.Environment.reset();
-  I.EnvironmentSource.reset();
+  I.Environment.Release();
   I.Grid.reset();
   I.Interactive.reset();
   I.MC.reset();
@@ -171,14 +171,10 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
   I.HasCurrentView = false;
   I.EA.reset();
   I.Scene.reset();
-  I.EnvironmentTime = 0;
-  I.DefaultEnvironment = false;
   I.GridNeedsFull = true;
   I.LastGridRequest = vs::GridUpdateRequest();
   I.Selector.ResetGrid();
   I.LastRenderSeconds = 0.0;
-  I.LightDirections.clear();
-  I.LightDirectionsKey = { -1, -1 };
   I.ImageSignature.clear();
 }
 
@@ -481,34 +477,8 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     throw vs::InputError("DirectionResolution " + std::to_string(side) +
       " is not supported by the renderer: use 2, 4, 8 or 16 directions per side");
   }
-  if (!I.Environment || (envImage && envImage->GetMTime() != I.EnvironmentTime) || (!envImage && !I.DefaultEnvironment))
+  if (I.Environment.Update(I.Context, envImage, side))
   {
-    std::shared_ptr<const vs::EnvironmentMap> map;
-    if (envImage)
-    {
-      std::string error;
-      map = vtkEnvironmentMapAlgorithm::EnvironmentMapFromImage(envImage, &error);
-      if (!map)
-      {
-        throw vs::InputError("the environment input is not an environment map: " + error);
-      }
-    }
-    else
-    {
-      map = std::make_shared<vs::EnvironmentMap>(vs::EnvironmentMap::Constant(16, glm::vec3(1.0f)));
-    }
-    I.Environment.reset();
-    I.EnvironmentSource = map;
-    I.Environment = std::make_unique<vs::DeviceEnvironment>(I.Context, *map, std::max(8, side));
-    I.EnvironmentTime = envImage ? envImage->GetMTime() : 0;
-    I.DefaultEnvironment = envImage == nullptr;
-    ++this->EnvironmentUploadCount;
-  }
-  else if (I.Environment->Size() < side)
-  {
-    // The direction resolution grew past the map's: the product needs importance level log2(D).
-    I.Environment.reset();
-    I.Environment = std::make_unique<vs::DeviceEnvironment>(I.Context, *I.EnvironmentSource, side);
     ++this->EnvironmentUploadCount;
   }
 
@@ -611,7 +581,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   }
   // The signature sees the user's strategy: Auto's frame-by-frame choice does not restart accumulation.
   p.sampling = glm::uvec4(uint32_t(autoStrategy && !emptyVolume ? int(Auto) : effective), 1u, uint32_t(this->CellMode),
-    uint32_t(I.Environment->FinestLevel()));
+    uint32_t(I.Environment.Device().FinestLevel()));
   // TwoStep on a flat grid is rendered as Environment sampling, without building a direction table
   // for it (27-170 ms on the MRIs) or paying the table's descent per sample. (Auto waits for a grid
   // that is not flat: `ready` above.)
@@ -622,7 +592,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   }
   this->EffectiveStrategy = effective;
   // The variance's squares are of radiance relative to the brightest light (no underflow for dim maps).
-  const double brightest = I.Environment->MaxLuminance() * this->EnvironmentIntensity;
+  const double brightest = I.Environment.Device().MaxLuminance() * this->EnvironmentIntensity;
   const float squareScale = brightest > 0.0 && std::isfinite(1.0 / brightest) && 1.0 / brightest < 1e37
     ? float(1.0 / brightest) : 1.0f;
   p.sampling2 = glm::vec4(float(this->VisibilityEpsilon), float(this->EnvironmentIntensity),
@@ -761,7 +731,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     pass->SetTableRebuildRatio(
       I.Grid && I.Grid->PendingDirections() > 0 ? vs::MonteCarloPass::kTableRebuildRatio : 0.0);
     pass->Render(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), gridFrame ? grid : nullptr,
-      *I.Environment, p, depth);
+      I.Environment.Device(), p, depth);
     this->LastDeviceSeconds = pass->LastSeconds();
     if (!tiled)
     {
@@ -829,7 +799,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   {
     const float scale = float(this->EnvironmentIntensity * this->Exposure);
     I.Composite.UpdateBackground(
-      *I.EnvironmentSource, p.invViewProj, w, h, scale, this->ToneMapping, this->EnvironmentUploadCount);
+      I.Environment.Map(), p.invViewProj, w, h, scale, this->ToneMapping, this->EnvironmentUploadCount);
   }
   const std::vector<float> display =
     I.Composite.Display(mean, environmentPixels, opaqueAlpha, composite, exposure, this->ToneMapping);
@@ -871,7 +841,7 @@ std::vector<uint8_t> vtkVisibilitySweepVolumeMapper::RequiredDirections(int side
   std::vector<uint8_t> required(size_t(side) * side, 1);
   if (this->SkipUnlitDirections && (this->SamplingStrategy == Combined || this->SamplingStrategy == TwoStep))
   {
-    const std::vector<float> importance = I.Environment->ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
+    const std::vector<float> importance = I.Environment.Device().ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
     for (size_t n = 0; n < required.size() && n < importance.size(); ++n)
     {
       required[n] = importance[n] > 0.0f;
@@ -900,19 +870,13 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
   r.Geometry = I.GridGeometry;
   r.WorldPlanes = vs::FrameGeometry::WorldPlanes(this->ClippingPlanes, I.GridGeometry);
   const int side = int(r.Parameters.DirectionResolution);
-  if (this->LightWeightedDirections && I.EnvironmentSource && I.EnvironmentSource->Size >= side)
+  if (this->LightWeightedDirections && I.Environment.HasLightDirections(side))
   {
-    const std::pair<int, int> key(this->EnvironmentUploadCount, side);
-    if (I.LightDirectionsKey != key)
-    {
-      I.LightDirections = vs::LightWeightedDirections(*I.EnvironmentSource, uint32_t(side));
-      I.LightDirectionsKey = key;
-    }
-    r.Parameters.Directions = I.LightDirections;
+    r.Parameters.Directions = I.Environment.LightDirections(this->EnvironmentUploadCount, side);
   }
   r.Required = this->RequiredDirections(side);
   this->UnlitDirections = int(std::count(r.Required.begin(), r.Required.end(), uint8_t(0)));
-  r.Importance = I.Environment->ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
+  r.Importance = I.Environment.Device().ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
   r.DataVersion = uint64_t(I.Scene->Uploads());
   r.FullUpdate = I.GridNeedsFull;
   r.Schedule.Scheme = vs::UpdateScheme(this->UpdateScheme);
