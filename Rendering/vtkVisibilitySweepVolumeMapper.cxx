@@ -1,5 +1,13 @@
 #include "vtkVisibilitySweepVolumeMapper.h"
 
+#include "vsMapperInternals.h"
+#include "vsAccumulationSignature.h"
+#include "vsFrameGeometry.h"
+#include "vsCoverageComposite.h"
+#include "vsPipelinePrewarm.h"
+#include "vsCombinedAccumulators.h"
+#include "vsRadianceImage.h"
+#include "vsMapperEnvironment.h"
 #include "vsContext.h"
 #include "vsDeviceEnvironment.h"
 #include "vsDeviceVolume.h"
@@ -63,165 +71,7 @@
 #include <future>
 #include <sstream>
 
-#if defined(__linux__)
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-#endif
-
 vtkStandardNewMacro(vtkVisibilitySweepVolumeMapper);
-
-struct vtkVisibilitySweepVolumeMapper::Internals
-{
-  std::shared_ptr<vs::Context> Context;
-  std::unique_ptr<vs::VolumeScene> Scene;
-  std::unique_ptr<vs::EmissionAbsorptionPass> EA;
-  std::unique_ptr<vs::MonteCarloPass> MC, Interactive;
-  std::unique_ptr<vs::MonteCarloPass> MCGrid; // Auto: the TwoStep samples (MC holds Environment's)
-  std::shared_ptr<vs::DirectionTable> Table;   // the grid strategies' direction table, shared by the passes
-  std::future<void> Prewarm;                   // the first frame's render pipeline, made while the scene uploads
-  bool PrewarmStarted = false;
-  /** Auto: TwoStep's pipeline, made on another thread once the grid has swept a direction, so the
-   *  first TwoStep frame does not wait for its creation (a TwoStep frame that comes first waits in
-   *  the context's pipeline cache). */
-  std::future<void> GridPrewarm;
-  bool GridPrewarmStarted = false;
-  /** Waits for a prewarm (its errors are the render's to report: it makes the pipeline again). */
-  static void Join(std::future<void>& prewarm)
-  {
-    if (prewarm.valid())
-    {
-      try
-      {
-        prewarm.get();
-      }
-      catch (...)
-      {
-      }
-    }
-  }
-  void JoinPrewarm() { Join(this->Prewarm); }
-  void JoinGridPrewarm() { Join(this->GridPrewarm); }
-  ~Internals()
-  {
-    this->JoinPrewarm();
-    this->JoinGridPrewarm();
-  }
-  std::unique_ptr<vs::MonteCarloPass> Tile;   // the tiles of a tiled render (the views' accumulators stay)
-  vs::PeelingDeferral Peeling; // inside VTK's depth peeling of volumes: draw at the frame's end instead
-  std::unique_ptr<vs::VisibilityGridUpdater> Grid;
-  std::unique_ptr<vs::DeviceEnvironment> Environment;
-  std::shared_ptr<const vs::EnvironmentMap> EnvironmentSource;
-  vtkMTimeType EnvironmentTime = 0;
-  bool DefaultEnvironment = false;
-  bool GridNeedsFull = true;          // extinction or geometry changed since the last full sweep
-  vs::VolumeGeometry GridGeometry;    // the geometry the grid is computed for (set each frame)
-  vs::GridUpdateRequest LastGridRequest;
-  vs::StrategySelector Selector;      // Auto: Environment or TwoStep, frame by frame
-  std::vector<glm::vec3> LightDirections; // per grid texel, where its light comes from
-  std::pair<int, int> LightDirectionsKey{ -1, -1 }; // (environment upload, D) they were made for
-  double LastRenderSeconds = 0.0;     // device seconds of the last Monte Carlo frame (the sweep budget)
-  std::vector<double> ImageSignature; // what the accumulated image was rendered for
-  vtkSmartPointer<vtkImageData> Radiance;
-  // The pixels of Radiance that see the environment under the coverage alpha (background.w = 2):
-  // their "Alpha" (and variance) are set to what the opaque image had, so GetRadiance() is unchanged.
-  std::vector<uint8_t> EnvironmentPixels;
-  // The environment's display colour per pixel (rgb) behind the last composited view, and what for.
-  std::vector<float> BackgroundDisplay;
-  std::vector<double> BackgroundKey;
-  vtkSmartPointer<vtkImageData> VisibilityImage;
-  // One accumulator per renderer (two views of one volume): MC, MCGrid, Interactive, ImageSignature
-  // and Selector above are the current view's; the other views' wait here (SwitchView).
-  struct View
-  {
-    vtkWeakPointer<vtkRenderer> Renderer;
-    std::unique_ptr<vs::MonteCarloPass> MC, MCGrid, Interactive;
-    std::vector<double> ImageSignature;
-    vs::StrategySelector Selector;
-    uint64_t GridGeneration = 0; // the grid its selector knows
-  };
-  vtkWeakPointer<vtkRenderer> CurrentView;
-  bool HasCurrentView = false;
-  std::vector<View> OtherViews;
-  uint64_t GridGeneration() const { return this->Grid ? uint64_t(this->Grid->Generation()) : 0u; }
-  void SwitchView(vtkRenderer* ren);
-  bool ReleaseViewsOf(vtkWindow* win);
-  std::string LastError;
-  vs::PropertyChecks Checks; // the settings VisSweep ignores, warned once per change
-  vtkMTimeType ErrorStamp = 0;        // the inputs' newest modification time when LastError was reported
-  vtkMTimeType RenderStamp = 0;       // the same, for the Render() in progress
-  uint32_t Frame = 0;
-};
-
-// Makes `ren`'s accumulator the current one: the current view's state goes to OtherViews, ren's
-// comes back from there (or starts empty). Views whose renderer was deleted are forgotten.
-void vtkVisibilitySweepVolumeMapper::Internals::SwitchView(vtkRenderer* ren)
-{
-  if (this->HasCurrentView && this->CurrentView.GetPointer() == ren)
-  {
-    return;
-  }
-  if (this->HasCurrentView && this->CurrentView)
-  {
-    View v;
-    v.Renderer = this->CurrentView;
-    v.MC = std::move(this->MC);
-    v.MCGrid = std::move(this->MCGrid);
-    v.Interactive = std::move(this->Interactive);
-    v.ImageSignature = std::move(this->ImageSignature);
-    v.Selector = this->Selector;
-    v.GridGeneration = this->GridGeneration();
-    this->OtherViews.push_back(std::move(v));
-  }
-  this->OtherViews.erase(std::remove_if(this->OtherViews.begin(), this->OtherViews.end(),
-                           [](const View& v) { return !v.Renderer; }),
-    this->OtherViews.end());
-  this->MC.reset();
-  this->MCGrid.reset();
-  this->Interactive.reset();
-  this->ImageSignature.clear();
-  this->Selector = vs::StrategySelector();
-  for (auto it = this->OtherViews.begin(); it != this->OtherViews.end(); ++it)
-  {
-    if (it->Renderer.GetPointer() == ren)
-    {
-      this->MC = std::move(it->MC);
-      this->MCGrid = std::move(it->MCGrid);
-      this->Interactive = std::move(it->Interactive);
-      this->ImageSignature = std::move(it->ImageSignature);
-      this->Selector = it->Selector;
-      if (it->GridGeneration != this->GridGeneration())
-      {
-        this->Selector.ResetGrid(); // a new grid arrived while another view rendered
-      }
-      this->OtherViews.erase(it);
-      break;
-    }
-  }
-  this->CurrentView = ren;
-  this->HasCurrentView = true;
-}
-
-// Forgets the views shown in `win` (and those whose renderer is gone); returns whether views in
-// other windows remain, which keep the shared device state (volume, grid, environment).
-bool vtkVisibilitySweepVolumeMapper::Internals::ReleaseViewsOf(vtkWindow* win)
-{
-  auto inWindow = [win](vtkRenderer* r) { return !r || static_cast<vtkWindow*>(r->GetRenderWindow()) == win; };
-  this->OtherViews.erase(std::remove_if(this->OtherViews.begin(), this->OtherViews.end(),
-                           [&](const View& v) { return inWindow(v.Renderer); }),
-    this->OtherViews.end());
-  if (this->HasCurrentView && inWindow(this->CurrentView))
-  {
-    this->MC.reset();
-    this->MCGrid.reset();
-    this->Interactive.reset();
-    this->ImageSignature.clear();
-    this->Selector = vs::StrategySelector();
-    this->CurrentView = nullptr;
-    this->HasCurrentView = false;
-  }
-  return this->HasCurrentView || !this->OtherViews.empty();
-}
 
 namespace
 {
@@ -231,141 +81,11 @@ static_assert(vs::shared::VS_BLEND_MAXIMUM == vtkVolumeMapper::MAXIMUM_INTENSITY
     vs::shared::VS_BLEND_ADDITIVE == vtkVolumeMapper::ADDITIVE_BLEND,
   "the shaders' blend modes are VTK's values");
 
-// Lets the calling thread run only on CPU time no other thread of the process wants (Linux: a
-// thread has its own nice value). For work that is ahead of need: a caller that needs its result
-// waits for it (std::call_once in Context::Pipeline), and while it waits the CPU is the thread's.
-void YieldTheCpuToOtherThreads()
-{
-#if defined(__linux__)
-  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 19);
-#endif
-}
-
 // The blend modes rendered as projections through the emission-absorption path.
 bool IsProjection(int blendMode)
 {
   return blendMode == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND || blendMode == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND ||
     blendMode == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND || blendMode == vtkVolumeMapper::ADDITIVE_BLEND;
-}
-
-// Equal up to rounding: VTK recomputes the camera matrices on some passes (e.g. while
-// vtkWindowToImageFilter grabs the window) with last-bit differences that are no change.
-bool NearlyEqual(const std::vector<double>& a, const std::vector<double>& b)
-{
-  if (a.size() != b.size())
-  {
-    return false;
-  }
-  for (size_t i = 0; i < a.size(); ++i)
-  {
-    if (std::abs(a[i] - b[i]) > 1e-6 * std::max({ 1.0, std::abs(a[i]), std::abs(b[i]) }))
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-// Every value of the render parameters, integers by value: reinterpreting them as floats
-// made small integers (the strategy, the cell mode) denormals that NearlyEqual took for 0,
-// so switching Uniform -> Environment kept accumulating into the old image.
-std::vector<double> RenderSignature(const vs::shared::VsRenderParams& p)
-{
-  // Not in the signature: directionSources, which MonteCarloPass sets from the grid as it fills in
-  // (samples of every stage of the grid are averaged; VisibilityGridUpdater).
-  static_assert(sizeof(vs::shared::VsRenderParams) ==
-      2 * 64 + (16 + vs::shared::VS_MAX_CLIP_PLANES) * 16 + vs::shared::VS_MAX_RENDER_DIRECTIONS * 4,
-    "a member was added to VsRenderParams: add it to the signature");
-  std::vector<double> s;
-  auto addMat = [&s](const glm::mat4& m) { s.insert(s.end(), &m[0][0], &m[0][0] + 16); };
-  auto addVec = [&s](const glm::vec4& v) { s.insert(s.end(), { v.x, v.y, v.z, v.w }); };
-  auto addUint = [&s](const glm::uvec4& v) { s.insert(s.end(), { double(v.x), double(v.y), double(v.z), double(v.w) }); };
-  addMat(p.invViewProj);
-  addMat(p.worldToIndex);
-  for (const auto& v : { p.boxMin, p.boxMax, p.dims, p.tf, p.background, p.sampling2, p.cellSize, p.tracking, p.cropLo,
-         p.cropHi, p.mixture })
-  {
-    addVec(v);
-  }
-  for (const auto& v : { p.viewport, p.sampling, p.grid, p.bricks, p.crop })
-  {
-    addUint(v);
-  }
-  for (const auto& v : p.clipPlanes)
-  {
-    addVec(v);
-  }
-  return s;
-}
-
-glm::dmat4 ToGlm(vtkMatrix4x4* m)
-{
-  glm::dmat4 g;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c)
-      g[c][r] = m->GetElement(r, c);
-  return g;
-}
-
-// What an accumulator of n samples of alpha 1 (a pixel that sees the environment in the opaque
-// image) averages to, as MonteCarloPass::Mean() computes it (the sum is n exactly), and its
-// per-sample variance as MonteCarloPass::Variance() computes it: under the coverage alpha
-// (background.w = 2) GetRadiance() reports these, as the opaque image did.
-float OpaqueMean(uint32_t n)
-{
-  if (n == 0)
-  {
-    return 0.0f;
-  }
-  const float inv = 1.0f / float(n);
-  return float(n) * inv;
-}
-
-double OpaqueVariance(uint32_t n)
-{
-  if (n < 2)
-  {
-    return 0.0;
-  }
-  const double N = n, m = OpaqueMean(n);
-  return std::max(0.0, (double(float(n)) / N - m * m) * N / (N - 1.0));
-}
-
-// The environment's display colour (rgb in [0, 1]) through the centre of each pixel of a w x h
-// image under invViewProj: bilinear between octahedral texels, as the kernel shows the environment
-// (env_radiance_display) and vtkEnvironmentMapBackground draws it, through the display transform.
-std::vector<float> EnvironmentDisplay(
-  const vs::EnvironmentMap& map, const glm::mat4& invViewProj, uint32_t w, uint32_t h, float scale, bool toneMapping)
-{
-  std::vector<float> out(size_t(w) * h * 3);
-  const glm::dmat4 inv(invViewProj);
-  const uint32_t n = uint32_t(map.Size);
-  for (uint32_t y = 0; y < h; ++y)
-  {
-    for (uint32_t x = 0; x < w; ++x)
-    {
-      const glm::dvec2 ndc((x + 0.5) / w * 2.0 - 1.0, (y + 0.5) / h * 2.0 - 1.0);
-      const glm::dvec4 pn = inv * glm::dvec4(ndc, -1.0, 1.0), pf = inv * glm::dvec4(ndc, 1.0, 1.0);
-      const glm::dvec3 d = glm::dvec3(pf) / pf.w - glm::dvec3(pn) / pn.w;
-      glm::vec3 radiance(0.0f);
-      if (glm::length(d) > 0.0)
-      {
-        const glm::vec2 uv = vs::shared::vs_dir_to_octa(glm::vec3(glm::normalize(d)));
-        for (uint32_t c = 0; c < 4u; ++c)
-        {
-          float weight = 0.0f;
-          const glm::uvec2 t = vs::shared::vs_octa_bilinear_texel(uv, n, c, weight);
-          radiance += weight * map.Texel(int(t.x), int(t.y));
-        }
-      }
-      float* o = out.data() + 3 * (size_t(y) * w + x);
-      for (int k = 0; k < 3; ++k)
-      {
-        o[k] = vs::DisplayValue(scale * radiance[k], toneMapping);
-      }
-    }
-  }
-  return out;
 }
 }
 
@@ -437,10 +157,9 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
   {
     this->GetVisibilityGrid(); // completes a grid still filling in, then downloads it
   }
-  I.JoinPrewarm();
-  I.JoinGridPrewarm();
-  I.Environment.reset();
-  I.EnvironmentSource.reset();
+  I.Prewarm.Join();
+  I.GridPrewarm.Join();
+  I.Environment.Release();
   I.Grid.reset();
   I.Interactive.reset();
   I.MC.reset();
@@ -452,14 +171,10 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
   I.HasCurrentView = false;
   I.EA.reset();
   I.Scene.reset();
-  I.EnvironmentTime = 0;
-  I.DefaultEnvironment = false;
   I.GridNeedsFull = true;
   I.LastGridRequest = vs::GridUpdateRequest();
   I.Selector.ResetGrid();
   I.LastRenderSeconds = 0.0;
-  I.LightDirections.clear();
-  I.LightDirectionsKey = { -1, -1 };
   I.ImageSignature.clear();
 }
 
@@ -525,7 +240,7 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     {
       I.Scene = std::make_unique<vs::VolumeScene>(I.Context);
     }
-    if (!I.PrewarmStarted && this->RenderMode == MonteCarlo && !projection && vol && vol->GetProperty())
+    if (!I.Prewarm.Started() && this->RenderMode == MonteCarlo && !projection && vol && vol->GetProperty())
     {
       this->StartPrewarm(input, vol, scalars);
     }
@@ -572,107 +287,6 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
   }
 }
 
-namespace
-{
-// The camera and volume placement as the shaders want them.
-struct View
-{
-  vs::Viewport Port;
-  glm::mat4 InvViewProj;
-};
-
-// The device gets the camera as a float matrix: a camera value beyond float's range (issue 13,
-// item 5) is refused naming it, and so is a matrix whose float form is not finite.
-View MakeView(vtkRenderer* ren)
-{
-  View v;
-  v.Port = vs::WindowCompositor::GetViewport(ren);
-  vtkCamera* camera = ren->GetActiveCamera();
-  const std::string problem = vs::FloatRange::CheckCamera(camera);
-  if (!problem.empty())
-  {
-    throw vs::InputError(problem);
-  }
-  double aspect = v.Port.Height > 0 ? double(v.Port.Width) / double(v.Port.Height) : 1.0;
-  v.InvViewProj = glm::mat4(glm::inverse(ToGlm(camera->GetCompositeProjectionTransformMatrix(aspect, -1, 1))));
-  const float* m = glm::value_ptr(v.InvViewProj);
-  if (!std::all_of(m, m + 16, [](float x) { return std::isfinite(x); }))
-  {
-    throw vs::InputError("the camera's inverse view-projection matrix does not fit in float (check its position, "
-                         "focal point, clipping range and parallel scale)");
-  }
-  return v;
-}
-
-// Before the window's depth is read back and before any pass allocates: the viewport must fit the
-// device's limits and the host's memory (issue 13, item 7).
-void CheckViewport(const vs::Context& context, const vs::Viewport& port)
-{
-  if (port.Width > 0 && port.Height > 0)
-  {
-    vs::RenderTargetLimits::Check(context, uint32_t(port.Width), uint32_t(port.Height));
-  }
-}
-
-// World clipping planes (n, w): kept where dot(n, x) + w >= 0, those that cut the (cropped) box
-// of `geometry` (vs::EffectiveClipPlanes: planes that clip nothing are dropped, at most 8 may cut it).
-std::vector<glm::dvec4> WorldPlanes(vtkPlaneCollection* planes, const vs::VolumeGeometry& geometry)
-{
-  std::vector<glm::dvec4> out;
-  if (!planes)
-  {
-    return out;
-  }
-  vtkPlane* plane;
-  vtkCollectionSimpleIterator it;
-  for (planes->InitTraversal(it); (plane = planes->GetNextPlane(it));)
-  {
-    // The normal is normalised in double (a normal of 1e300 was an infinity in float, and the
-    // plane was ignored); the origin must fit a float, and so must the plane's offset.
-    double normal[3], n[3], o[3];
-    plane->GetNormal(normal);
-    plane->GetOrigin(o);
-    const std::string index = std::to_string(out.size());
-    if (!vs::FloatRange::Normalize(normal, n))
-    {
-      throw vs::InputError("clipping plane " + index + " has a zero or non-finite normal");
-    }
-    for (int i = 0; i < 3; ++i)
-    {
-      const std::string problem = vs::FloatRange::Check(o[i]);
-      if (!problem.empty())
-      {
-        std::ostringstream os;
-        os << "clipping plane " << index << "'s origin (" << "xyz"[i] << " = " << o[i] << ") is " << problem;
-        throw vs::InputError(os.str());
-      }
-    }
-    const double w = -(n[0] * o[0] + n[1] * o[1] + n[2] * o[2]);
-    if (!vs::FloatRange::Check(w).empty())
-    {
-      throw vs::InputError("clipping plane " + index + "'s offset from the origin does not fit in float");
-    }
-    out.emplace_back(n[0], n[1], n[2], w);
-  }
-  return vs::EffectiveClipPlanes(out, geometry);
-}
-}
-
-namespace
-{
-// The volume's geometry with VTK's cropping regions applied (vs::CropRegions).
-vs::VolumeGeometry CroppedGeometry(vtkVolumeMapper* mapper, const vs::VolumeGeometry& full)
-{
-  if (!mapper->GetCropping())
-  {
-    return full;
-  }
-  // Any region flags: a union of the 27 boxes; one box (the subvolume, VTK's default) crops the box only.
-  return vs::CropRegions(full, vtkImageData::SafeDownCast(mapper->GetInput()), mapper->GetCroppingRegionPlanes(),
-    mapper->GetCroppingRegionFlags());
-}
-}
-
 void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol)
 {
   std::vector<float> rgba = this->EmissionAbsorptionImage(ren, vol);
@@ -700,7 +314,7 @@ void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume
   {
     // The voxel where each covered pixel's ray crosses the selection opacity, marched on the host.
     vs::VoxelPicker::Volume v;
-    v.Geometry = CroppedGeometry(this, I.Scene->Geometry());
+    v.Geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
     int cellFlag = 0;
     v.Scalars = vtkAbstractMapper::GetScalars(vtkImageData::SafeDownCast(this->GetInput()), this->ScalarMode,
       this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
@@ -709,7 +323,7 @@ void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume
     v.UnitDistance = property ? property->GetScalarOpacityUnitDistance(0) : 1.0;
     v.DensityScale = this->DensityScale;
     v.Nearest = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
-    v.WorldPlanes = WorldPlanes(this->ClippingPlanes, v.Geometry);
+    v.WorldPlanes = vs::FrameGeometry::WorldPlanes(this->ClippingPlanes, v.Geometry);
     v.Factor = I.Scene->HasGradientOpacity() ? &I.Scene->HostFactor() : nullptr;
     std::vector<bool> covered(rgba.size() / 4);
     for (size_t i = 0; i < covered.size(); ++i)
@@ -718,7 +332,7 @@ void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume
     }
     const double aspect = vp.Height > 0 ? double(vp.Width) / double(vp.Height) : 1.0;
     const glm::dmat4 invViewProj =
-      glm::inverse(ToGlm(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1)));
+      glm::inverse(vs::FrameGeometry::ToGlm(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1)));
     const std::vector<vtkIdType> ids = vs::VoxelPicker::Ids(v, invViewProj, vp.Width, vp.Height,
       vs::WindowCompositor::ReadDepth(ren, vp), covered, vs::SelectionMask::Threshold,
       vs::SelectionMask::AsksForCellIds(selector));
@@ -741,14 +355,14 @@ void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume
 std::vector<float> vtkVisibilitySweepVolumeMapper::EmissionAbsorptionImage(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
-  const vs::VolumeGeometry geometry = CroppedGeometry(this, I.Scene->Geometry());
-  View view = MakeView(ren);
+  const vs::VolumeGeometry geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
+  vs::CameraView view = vs::FrameGeometry::MakeView(ren);
   vs::Viewport vp = view.Port;
   if (vp.Width <= 0 || vp.Height <= 0)
   {
     return {};
   }
-  CheckViewport(*I.Context, vp);
+  vs::FrameGeometry::CheckViewport(*I.Context, vp);
   std::vector<float> depth = vs::WindowCompositor::ReadDepth(ren, vp);
   vs::shared::VsFrameParams p{};
   p.invViewProj = view.InvViewProj;
@@ -762,7 +376,7 @@ std::vector<float> vtkVisibilitySweepVolumeMapper::EmissionAbsorptionImage(vtkRe
   p.viewport = glm::uvec4(vp.Width, vp.Height, I.Frame++, static_cast<uint32_t>(this->Seed));
   double step = this->SampleDistance > 0.0 ? this->SampleDistance : 0.5 * geometry.MinSpacing;
   p.march = glm::vec4(float(step), 0.995f, 0.0f, 0.0f);
-  auto planes = WorldPlanes(this->ClippingPlanes, geometry);
+  auto planes = vs::FrameGeometry::WorldPlanes(this->ClippingPlanes, geometry);
   for (size_t i = 0; i < planes.size(); ++i)
   {
     p.clipPlanes[i] = glm::vec4(planes[i]);
@@ -805,7 +419,7 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume
 {
   Internals& I = *this->Impl;
   vtkVolumeProperty* property = volume->GetProperty();
-  I.PrewarmStarted = true;
+  I.Prewarm.MarkStarted();
   if (this->Cropping)
   {
     return; // the pipeline depends on the regions the geometry keeps: made when known
@@ -828,54 +442,9 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume
   // A pass of its own: the pipeline lands in the context's cache, where the view's pass finds it
   // (waiting for it if the render gets there first); the view's passes come and go (SwitchView).
   const bool table = this->DirectionTable;
-  // Whether the device volume will be integer-coded (vsDeviceVolume.h quads): integer scalars of one
-  // component spanning at most 255 (the upload decides; a wrong guess only wastes this thread's work).
-  bool quads = false;
-  if (scalars && scalars->GetNumberOfComponents() == 1 && scalars->GetDataType() != VTK_FLOAT &&
-    scalars->GetDataType() != VTK_DOUBLE &&
-    uint64_t(scalars->GetNumberOfTuples()) * 4 <= vs::DeviceVolume::kMaxQuadBytes)
-  {
-    double range[2];
-    scalars->GetRange(range, 0);
-    quads = range[1] - range[0] <= 255.0;
-  }
-  // The cell walk of optically thick bricks (MonteCarloPass::NeedsCellWalk) from the transfer
-  // function's largest extinction over the scalars' range: the largest majorant the upload will
-  // find when some brick reaches the function's peak, as it usually does (a wrong guess costs the
-  // first frame a compile of its own, ~0.2 s: blind_sunrise's first frames did before).
-  // Only for input the scene update will accept: sampling a property without functions would
-  // give it default ones (a change, and its error logged again).
-  bool cellWalk = false;
-  if (vs::CheckImage(input, scalars).empty() && vs::CheckProperty(property).empty())
-  {
-    try
-    {
-      const vs::VolumeGeometry geometry = vs::ComputeGeometry(input, volume->GetMatrix());
-      if (!vs::CheckGeometry(geometry).empty())
-      {
-        throw vs::InputError(vs::CheckGeometry(geometry));
-      }
-      double range[2];
-      scalars->GetRange(range, 0);
-      const vs::TransferFunctionSamples samples = vs::VolumeScene::SampleRenderedTransferFunction(
-        property, float(range[0]), float(range[1]), this->DensityScale, geometry);
-      float extinction = 0.0f;
-      for (size_t i = 3; i < samples.Entries.size(); i += 4)
-      {
-        extinction = std::max(extinction, samples.Entries[i]);
-      }
-      p.worldToIndex = glm::mat4(geometry.WorldToIndex);
-      cellWalk = vs::MonteCarloPass::NeedsCellWalk(double(extinction), vs::MajorantGrid::DefaultBrickSize, p);
-    }
-    catch (const std::exception&)
-    {
-      // The scene update refuses this input with its own error: no guess needed.
-    }
-  }
-  I.Prewarm = std::async(std::launch::async, [context = I.Context, p, table, quads, cellWalk]() {
-    vs::MonteCarloPass pass(context);
-    pass.Prewarm(p, table, quads, cellWalk);
-  });
+  const bool quads = vs::PipelinePrewarm::GuessQuads(scalars);
+  const bool cellWalk = vs::PipelinePrewarm::GuessCellWalk(input, scalars, volume, this->DensityScale, p);
+  I.Prewarm.Start(I.Context, p, table, quads, cellWalk, false);
 }
 
 void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol)
@@ -883,12 +452,12 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   Internals& I = *this->Impl;
   this->LastRenderComplete = false;
   I.SwitchView(ren); // one accumulator per renderer
-  const vs::VolumeGeometry geometry = CroppedGeometry(this, I.Scene->Geometry());
+  const vs::VolumeGeometry geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
   const bool croppedAway = glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax));
   // The camera and the image size first: nothing is uploaded, swept or read back for a view
   // that cannot render.
-  View view = MakeView(ren);
-  CheckViewport(*I.Context, view.Port);
+  vs::CameraView view = vs::FrameGeometry::MakeView(ren);
+  vs::FrameGeometry::CheckViewport(*I.Context, view.Port);
 
   // The environment: port 1, or a constant white sky.
   vtkImageData* envImage = nullptr;
@@ -908,39 +477,13 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     throw vs::InputError("DirectionResolution " + std::to_string(side) +
       " is not supported by the renderer: use 2, 4, 8 or 16 directions per side");
   }
-  if (!I.Environment || (envImage && envImage->GetMTime() != I.EnvironmentTime) || (!envImage && !I.DefaultEnvironment))
+  if (I.Environment.Update(I.Context, envImage, side))
   {
-    std::shared_ptr<const vs::EnvironmentMap> map;
-    if (envImage)
-    {
-      std::string error;
-      map = vtkEnvironmentMapAlgorithm::EnvironmentMapFromImage(envImage, &error);
-      if (!map)
-      {
-        throw vs::InputError("the environment input is not an environment map: " + error);
-      }
-    }
-    else
-    {
-      map = std::make_shared<vs::EnvironmentMap>(vs::EnvironmentMap::Constant(16, glm::vec3(1.0f)));
-    }
-    I.Environment.reset();
-    I.EnvironmentSource = map;
-    I.Environment = std::make_unique<vs::DeviceEnvironment>(I.Context, *map, std::max(8, side));
-    I.EnvironmentTime = envImage ? envImage->GetMTime() : 0;
-    I.DefaultEnvironment = envImage == nullptr;
-    ++this->EnvironmentUploadCount;
-  }
-  else if (I.Environment->Size() < side)
-  {
-    // The direction resolution grew past the map's: the product needs importance level log2(D).
-    I.Environment.reset();
-    I.Environment = std::make_unique<vs::DeviceEnvironment>(I.Context, *I.EnvironmentSource, side);
     ++this->EnvironmentUploadCount;
   }
 
   // The visibility grid, only for the strategies that use it.
-  const std::vector<glm::dvec4> planes = WorldPlanes(this->ClippingPlanes, geometry);
+  const std::vector<glm::dvec4> planes = vs::FrameGeometry::WorldPlanes(this->ClippingPlanes, geometry);
   const bool emptyVolume = I.Scene->Majorants().MaxMajorant() <= 0.0f || croppedAway;
   const bool autoStrategy = this->SamplingStrategy == Auto;
   // Auto skips the grid of a volume too thin to shadow: with the largest extinction along the
@@ -1038,7 +581,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   }
   // The signature sees the user's strategy: Auto's frame-by-frame choice does not restart accumulation.
   p.sampling = glm::uvec4(uint32_t(autoStrategy && !emptyVolume ? int(Auto) : effective), 1u, uint32_t(this->CellMode),
-    uint32_t(I.Environment->FinestLevel()));
+    uint32_t(I.Environment.Device().FinestLevel()));
   // TwoStep on a flat grid is rendered as Environment sampling, without building a direction table
   // for it (27-170 ms on the MRIs) or paying the table's descent per sample. (Auto waits for a grid
   // that is not flat: `ready` above.)
@@ -1049,7 +592,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   }
   this->EffectiveStrategy = effective;
   // The variance's squares are of radiance relative to the brightest light (no underflow for dim maps).
-  const double brightest = I.Environment->MaxLuminance() * this->EnvironmentIntensity;
+  const double brightest = I.Environment.Device().MaxLuminance() * this->EnvironmentIntensity;
   const float squareScale = brightest > 0.0 && std::isfinite(1.0 / brightest) && 1.0 / brightest < 1e37
     ? float(1.0 / brightest) : 1.0f;
   p.sampling2 = glm::vec4(float(this->VisibilityEpsilon), float(this->EnvironmentIntensity),
@@ -1082,10 +625,10 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     }
   }
 
-  I.JoinPrewarm();
-  if (autoStrategy && grid && !I.GridPrewarmStarted && I.Grid->SweptDirections() > 0)
+  I.Prewarm.Join();
+  if (autoStrategy && grid && !I.GridPrewarm.Started() && I.Grid->SweptDirections() > 0)
   {
-    I.GridPrewarmStarted = true;
+    I.GridPrewarm.MarkStarted();
     vs::shared::VsRenderParams q = p;
     q.sampling.x = uint32_t(TwoStep);
     q.crop.w = I.Scene->Volume().Factor() ? 1u : 0u; // as MonteCarloPass::Render sets it
@@ -1094,11 +637,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     const bool table = this->DirectionTable;
     // On a CPU device the compile would take cores from the frames rendering meanwhile (Auto's
     // paths per device second fell 10-20% in its first seconds): it takes only what they leave.
-    I.GridPrewarm = std::async(std::launch::async, [context = I.Context, q, table, quads, cellWalk]() {
-      YieldTheCpuToOtherThreads();
-      vs::MonteCarloPass pass(context);
-      pass.Prewarm(q, table, quads, cellWalk);
-    });
+    I.GridPrewarm.Start(I.Context, q, table, quads, cellWalk, true);
   }
   vs::MonteCarloPass* pass = nullptr;
   if (interactive)
@@ -1139,14 +678,14 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     // Everything the accumulated image depends on; any difference restarts accumulation. The
     // grid's generation, not its sweeps: a grid filling in (or updated lazily) changes the pdf,
     // never the mean, so samples of every stage average into one estimate.
-    std::vector<double> signature = RenderSignature(p);
+    std::vector<double> signature = vs::AccumulationSignature::Of(p);
     signature.push_back(double(I.Scene->TableBuilds()));
     signature.push_back(double(I.Scene->Uploads()));
     signature.push_back(double(I.Scene->FactorBuilds())); // a new gradient-opacity factor
     signature.push_back(double(this->EnvironmentUploadCount));
     signature.push_back(double(I.Grid && needGrid ? I.Grid->Generation() : 0));
     signature.insert(signature.end(), depth.begin(), depth.end());
-    if (!NearlyEqual(signature, I.ImageSignature) || I.MC->Width() != w || I.MC->Height() != h)
+    if (!vs::AccumulationSignature::NearlyEqual(signature, I.ImageSignature) || I.MC->Width() != w || I.MC->Height() != h)
     {
       I.MC->Reset(w, h);
       if (I.MCGrid)
@@ -1192,7 +731,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     pass->SetTableRebuildRatio(
       I.Grid && I.Grid->PendingDirections() > 0 ? vs::MonteCarloPass::kTableRebuildRatio : 0.0);
     pass->Render(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), gridFrame ? grid : nullptr,
-      *I.Environment, p, depth);
+      I.Environment.Device(), p, depth);
     this->LastDeviceSeconds = pass->LastSeconds();
     if (!tiled)
     {
@@ -1231,16 +770,11 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     {
       environmentPixels[i] = depth[i] >= 1.0f ? 1 : 0;
     }
-    opaqueAlpha = interactive || tiled ? OpaqueMean(pass->Samples()) : this->OpaqueAlpha(autoStrategy);
+    opaqueAlpha = interactive || tiled ? vs::CoverageComposite::OpaqueMean(pass->Samples()) : this->OpaqueAlpha(autoStrategy);
   }
   if (autoStrategy && !interactive && !tiled && spp > 0 && !emptyVolume)
   {
-    double meanSquare = 0.0;
-    for (size_t i = 0; i < mean.size(); i += 4)
-    {
-      meanSquare += (double(mean[i]) * mean[i] + double(mean[i + 1]) * mean[i + 1] + double(mean[i + 2]) * mean[i + 2]) / 3.0;
-    }
-    meanSquare /= std::max<double>(1.0, double(mean.size() / 4));
+    const double meanSquare = vs::CombinedAccumulators::MeanSquare(mean);
     // The cost per sample without the direction table's build, which (like the sweeps) is the
     // grid's update, made once per grid state, not per sample.
     I.Selector.SetGridComplete(I.Grid && I.Grid->IsComplete());
@@ -1254,22 +788,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     {
       I.Radiance = vtkSmartPointer<vtkImageData>::New();
     }
-    I.Radiance->Initialize();
-    I.Radiance->SetDimensions(int(w), int(h), 1);
-    vtkNew<vtkFloatArray> rgb;
-    rgb->SetName("Radiance");
-    rgb->SetNumberOfComponents(3);
-    rgb->SetNumberOfTuples(vtkIdType(w) * h);
-    vtkNew<vtkFloatArray> alpha;
-    alpha->SetName("Alpha");
-    alpha->SetNumberOfTuples(vtkIdType(w) * h);
-    for (vtkIdType i = 0; i < vtkIdType(w) * h; ++i)
-    {
-      rgb->SetTuple3(i, mean[4 * i], mean[4 * i + 1], mean[4 * i + 2]);
-      alpha->SetValue(i, environmentPixels.empty() || !environmentPixels[i] ? mean[4 * i + 3] : opaqueAlpha);
-    }
-    I.Radiance->GetPointData()->SetScalars(rgb);
-    I.Radiance->GetPointData()->AddArray(alpha);
+    vs::RadianceImage::Fill(I.Radiance, mean, w, h, environmentPixels, opaqueAlpha);
     I.EnvironmentPixels = environmentPixels;
   }
   // Composited over the background: the environment's display colour behind each pixel (made again
@@ -1279,48 +798,11 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   if (composite)
   {
     const float scale = float(this->EnvironmentIntensity * this->Exposure);
-    std::vector<double> key(glm::value_ptr(p.invViewProj), glm::value_ptr(p.invViewProj) + 16);
-    key.insert(key.end(), { double(w), double(h), double(this->EnvironmentUploadCount), double(scale),
-                            this->ToneMapping ? 1.0 : 0.0 });
-    if (key != I.BackgroundKey || I.BackgroundDisplay.size() != size_t(w) * h * 3)
-    {
-      I.BackgroundDisplay = EnvironmentDisplay(*I.EnvironmentSource, p.invViewProj, w, h, scale, this->ToneMapping);
-      I.BackgroundKey = key;
-    }
+    I.Composite.UpdateBackground(
+      I.Environment.Map(), p.invViewProj, w, h, scale, this->ToneMapping, this->EnvironmentUploadCount);
   }
-  std::vector<float> display(mean.size());
-  for (size_t i = 0; i < mean.size(); i += 4)
-  {
-    const size_t pixel = i / 4;
-    const bool seesEnvironment = !environmentPixels.empty() && environmentPixels[pixel];
-    if (seesEnvironment && composite)
-    {
-      // The tone-mapped full radiance F(L) (the environment seen through the volume included) over
-      // what is behind: drawn with the coverage a as C = F(L) - (1 - a) B, B the environment's
-      // display colour, so that over the skybox (which shows B) the pixel is F(L) as in the opaque
-      // image, and what VTK drew in front of the skybox shows through with the transmittance 1 - a.
-      // C is clamped at 0; it is rarely below: F(L) >= F(T L_env), and the display transform (sRGB
-      // over the filmic curve) is nearly concave with F(0) = 0, so F(T L_env) >= T F(L_env) but for
-      // noise. Where no sample met the volume (a = 0) the pixel is what is behind it.
-      const float a = std::clamp(mean[i + 3], 0.0f, 1.0f);
-      for (int c = 0; c < 3; ++c)
-      {
-        const float full = vs::DisplayValue(exposure * mean[i + c], this->ToneMapping);
-        display[i + c] = a > 0.0f ? std::max(0.0f, full - (1.0f - a) * I.BackgroundDisplay[3 * pixel + c]) : 0.0f;
-      }
-      display[i + 3] = a;
-      continue;
-    }
-    // The opaque image's alpha where this volume paints the environment; else the coverage.
-    float a = std::clamp(seesEnvironment ? opaqueAlpha : mean[i + 3], 0.0f, 1.0f);
-    for (int c = 0; c < 3; ++c)
-    {
-      // Premultiplied: tone map the radiance of the covered part, then weigh by coverage.
-      float l = a > 0.0f ? exposure * mean[i + c] / a : 0.0f;
-      display[i + c] = a * vs::DisplayValue(l, this->ToneMapping);
-    }
-    display[i + 3] = a;
-  }
+  const std::vector<float> display =
+    I.Composite.Display(mean, environmentPixels, opaqueAlpha, composite, exposure, this->ToneMapping);
   if (sub == 1)
   {
     vs::WindowCompositor::Draw(ren, vp, display);
@@ -1359,7 +841,7 @@ std::vector<uint8_t> vtkVisibilitySweepVolumeMapper::RequiredDirections(int side
   std::vector<uint8_t> required(size_t(side) * side, 1);
   if (this->SkipUnlitDirections && (this->SamplingStrategy == Combined || this->SamplingStrategy == TwoStep))
   {
-    const std::vector<float> importance = I.Environment->ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
+    const std::vector<float> importance = I.Environment.Device().ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
     for (size_t n = 0; n < required.size() && n < importance.size(); ++n)
     {
       required[n] = importance[n] > 0.0f;
@@ -1386,21 +868,15 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
   r.Parameters.NearestInterpolation = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
   r.Parameters.ExtinctionPooling = uint32_t(this->ExtinctionPooling);
   r.Geometry = I.GridGeometry;
-  r.WorldPlanes = WorldPlanes(this->ClippingPlanes, I.GridGeometry);
+  r.WorldPlanes = vs::FrameGeometry::WorldPlanes(this->ClippingPlanes, I.GridGeometry);
   const int side = int(r.Parameters.DirectionResolution);
-  if (this->LightWeightedDirections && I.EnvironmentSource && I.EnvironmentSource->Size >= side)
+  if (this->LightWeightedDirections && I.Environment.HasLightDirections(side))
   {
-    const std::pair<int, int> key(this->EnvironmentUploadCount, side);
-    if (I.LightDirectionsKey != key)
-    {
-      I.LightDirections = vs::LightWeightedDirections(*I.EnvironmentSource, uint32_t(side));
-      I.LightDirectionsKey = key;
-    }
-    r.Parameters.Directions = I.LightDirections;
+    r.Parameters.Directions = I.Environment.LightDirections(this->EnvironmentUploadCount, side);
   }
   r.Required = this->RequiredDirections(side);
   this->UnlitDirections = int(std::count(r.Required.begin(), r.Required.end(), uint8_t(0)));
-  r.Importance = I.Environment->ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
+  r.Importance = I.Environment.Device().ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
   r.DataVersion = uint64_t(I.Scene->Uploads());
   r.FullUpdate = I.GridNeedsFull;
   r.Schedule.Scheme = vs::UpdateScheme(this->UpdateScheme);
@@ -1503,62 +979,22 @@ const char* vtkVisibilitySweepVolumeMapper::GetUpdateSchemeAsString()
 
 uint32_t vtkVisibilitySweepVolumeMapper::AccumulatedSamplesOf(bool autoStrategy)
 {
-  Internals& I = *this->Impl;
-  uint32_t n = I.MC ? I.MC->Samples() : 0u;
-  return n + (autoStrategy && I.MCGrid ? I.MCGrid->Samples() : 0u);
+  return vs::CombinedAccumulators::Samples(this->Impl->MC.get(), this->Impl->MCGrid.get(), autoStrategy);
 }
 
-// The mean of all samples: Auto's two accumulators weighted by their sample counts (equal weight
-// per sample: both are unbiased estimates of the same image).
 std::vector<float> vtkVisibilitySweepVolumeMapper::CombinedMean(bool autoStrategy)
 {
-  Internals& I = *this->Impl;
-  std::vector<float> mean = I.MC->Mean();
-  if (!autoStrategy || !I.MCGrid || I.MCGrid->Samples() == 0)
-  {
-    return mean;
-  }
-  const double ne = I.MC->Samples(), ng = I.MCGrid->Samples();
-  const std::vector<float> g = I.MCGrid->Mean();
-  for (size_t i = 0; i < mean.size() && i < g.size(); ++i)
-  {
-    mean[i] = float((ne * double(mean[i]) + ng * double(g[i])) / (ne + ng));
-  }
-  return mean;
+  return vs::CombinedAccumulators::Mean(*this->Impl->MC, this->Impl->MCGrid.get(), autoStrategy);
 }
 
-// Per-sample variance of the combined mean, such that variance / samples is its squared standard
-// error: (n_e v_e + n_g v_g) / (n_e + n_g).
 std::vector<double> vtkVisibilitySweepVolumeMapper::CombinedVariance(bool autoStrategy)
 {
-  Internals& I = *this->Impl;
-  std::vector<double> var = I.MC->Variance();
-  if (!autoStrategy || !I.MCGrid || I.MCGrid->Samples() == 0)
-  {
-    return var;
-  }
-  const double ne = I.MC->Samples(), ng = I.MCGrid->Samples();
-  const std::vector<double> g = I.MCGrid->Variance();
-  for (size_t i = 0; i < var.size() && i < g.size(); ++i)
-  {
-    var[i] = (ne * var[i] + ng * g[i]) / (ne + ng);
-  }
-  return var;
+  return vs::CombinedAccumulators::Variance(*this->Impl->MC, this->Impl->MCGrid.get(), autoStrategy);
 }
 
-// The alpha the opaque image's pixels that see the environment have (CombinedMean of accumulators
-// whose alpha samples are all 1).
 float vtkVisibilitySweepVolumeMapper::OpaqueAlpha(bool autoStrategy)
 {
-  Internals& I = *this->Impl;
-  const uint32_t ne = I.MC ? I.MC->Samples() : 0u;
-  const float a = OpaqueMean(ne);
-  if (!autoStrategy || !I.MCGrid || I.MCGrid->Samples() == 0)
-  {
-    return a;
-  }
-  const double ng = I.MCGrid->Samples();
-  return float((double(ne) * double(a) + ng * double(OpaqueMean(I.MCGrid->Samples()))) / (double(ne) + ng));
+  return vs::CombinedAccumulators::OpaqueAlpha(this->Impl->MC.get(), this->Impl->MCGrid.get(), autoStrategy);
 }
 
 bool vtkVisibilitySweepVolumeMapper::GetShowsEnvironmentAsBackground()
@@ -1581,27 +1017,9 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)
     {
       const bool autoStrategy = this->SamplingStrategy == Auto;
       std::vector<double> var = this->CombinedVariance(autoStrategy);
-      if (!I.EnvironmentPixels.empty())
-      {
-        // The alpha's variance of the opaque image where the pixel sees the environment
-        // (CombinedVariance of accumulators whose alpha samples are all 1).
-        const uint32_t ne = I.MC->Samples(), ng = autoStrategy && I.MCGrid ? I.MCGrid->Samples() : 0u;
-        const double v = ng == 0 ? OpaqueVariance(ne)
-                                 : (double(ne) * OpaqueVariance(ne) + double(ng) * OpaqueVariance(ng)) / (double(ne) + ng);
-        for (size_t i = 0; i < I.EnvironmentPixels.size() && 4 * i + 3 < var.size(); ++i)
-        {
-          if (I.EnvironmentPixels[i])
-          {
-            var[4 * i + 3] = v;
-          }
-        }
-      }
-      vtkNew<vtkDoubleArray> v;
-      v->SetName("Variance");
-      v->SetNumberOfComponents(4);
-      v->SetNumberOfTuples(vtkIdType(var.size() / 4));
-      std::copy(var.begin(), var.end(), v->GetPointer(0));
-      I.Radiance->GetPointData()->AddArray(v);
+      const uint32_t ne = I.MC->Samples(), ng = autoStrategy && I.MCGrid ? I.MCGrid->Samples() : 0u;
+      vs::RadianceImage::AddVariance(
+        I.Radiance, std::move(var), I.EnvironmentPixels, vs::CombinedAccumulators::OpaqueAlphaVariance(ne, ng));
     }
     catch (const std::exception& e)
     {
@@ -1647,7 +1065,7 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetVisibilityGrid()
     try
     {
       // In data coordinates (no prop matrix), over the box the grid covers (cropped or not).
-      vs::VisibilityGridToImage(*I.Grid->Grid(), CroppedGeometry(this, vs::ComputeGeometry(input, nullptr)), image);
+      vs::VisibilityGridToImage(*I.Grid->Grid(), vs::FrameGeometry::CroppedGeometry(this, vs::ComputeGeometry(input, nullptr)), image);
     }
     catch (const std::exception& e)
     {

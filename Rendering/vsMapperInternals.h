@@ -1,0 +1,97 @@
+// vsMapperInternals.h — vtkVisibilitySweepVolumeMapper's private state (its pimpl, Internals),
+// moved out of the mapper's .cxx into this private header so that the mapper's .cxx and
+// vsMapperInternals.cxx (the per-renderer views: SwitchView, ReleaseViewsOf) share one definition.
+// The device state (scene, passes, grid, environment), the accumulators of the current view and
+// the other views', and the host bookkeeping of errors and warnings. Not wrapped.
+#ifndef vsMapperInternals_h
+#define vsMapperInternals_h
+
+#include "vtkVisibilitySweepVolumeMapper.h"
+
+#include "vsContext.h"
+#include "vsCoverageComposite.h"
+#include "vsDeviceEnvironment.h"
+#include "vsDirectionTable.h"
+#include "vsEmissionAbsorptionPass.h"
+#include "vsEnvironmentMap.h"
+#include "vsMapperEnvironment.h"
+#include "vsMonteCarloPass.h"
+#include "vsPeelingDeferral.h"
+#include "vsPipelinePrewarm.h"
+#include "vsPropertyChecks.h"
+#include "vsStrategySelector.h"
+#include "vsVisibilityGridUpdater.h"
+#include "vsVolumeScene.h"
+
+#include "vtkImageData.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkWeakPointer.h"
+
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+class vtkWindow;
+
+struct vtkVisibilitySweepVolumeMapper::Internals
+{
+  std::shared_ptr<vs::Context> Context;
+  std::unique_ptr<vs::VolumeScene> Scene;
+  std::unique_ptr<vs::EmissionAbsorptionPass> EA;
+  std::unique_ptr<vs::MonteCarloPass> MC, Interactive;
+  std::unique_ptr<vs::MonteCarloPass> MCGrid; // Auto: the TwoStep samples (MC holds Environment's)
+  std::shared_ptr<vs::DirectionTable> Table;   // the grid strategies' direction table, shared by the passes
+  vs::PipelinePrewarm Prewarm;     // the first frame's render pipeline, made while the scene uploads
+  /** Auto: TwoStep's pipeline, made on another thread once the grid has swept a direction, so the
+   *  first TwoStep frame does not wait for its creation (a TwoStep frame that comes first waits in
+   *  the context's pipeline cache). */
+  vs::PipelinePrewarm GridPrewarm;
+  ~Internals()
+  {
+    this->Prewarm.Join();
+    this->GridPrewarm.Join();
+  }
+  std::unique_ptr<vs::MonteCarloPass> Tile;   // the tiles of a tiled render (the views' accumulators stay)
+  vs::PeelingDeferral Peeling; // inside VTK's depth peeling of volumes: draw at the frame's end instead
+  std::unique_ptr<vs::VisibilityGridUpdater> Grid;
+  vs::MapperEnvironment Environment; // port 1's map (or a white sky) on the device
+  bool GridNeedsFull = true;          // extinction or geometry changed since the last full sweep
+  vs::VolumeGeometry GridGeometry;    // the geometry the grid is computed for (set each frame)
+  vs::GridUpdateRequest LastGridRequest;
+  vs::StrategySelector Selector;      // Auto: Environment or TwoStep, frame by frame
+  double LastRenderSeconds = 0.0;     // device seconds of the last Monte Carlo frame (the sweep budget)
+  std::vector<double> ImageSignature; // what the accumulated image was rendered for
+  vtkSmartPointer<vtkImageData> Radiance;
+  // The pixels of Radiance that see the environment under the coverage alpha (background.w = 2):
+  // their "Alpha" (and variance) are set to what the opaque image had, so GetRadiance() is unchanged.
+  std::vector<uint8_t> EnvironmentPixels;
+  vs::CoverageComposite Composite; // the display image, over the environment's display colour
+  vtkSmartPointer<vtkImageData> VisibilityImage;
+  // One accumulator per renderer (two views of one volume): MC, MCGrid, Interactive, ImageSignature
+  // and Selector above are the current view's; the other views' wait here (SwitchView).
+  struct View
+  {
+    vtkWeakPointer<vtkRenderer> Renderer;
+    std::unique_ptr<vs::MonteCarloPass> MC, MCGrid, Interactive;
+    std::vector<double> ImageSignature;
+    vs::StrategySelector Selector;
+    uint64_t GridGeneration = 0; // the grid its selector knows
+  };
+  vtkWeakPointer<vtkRenderer> CurrentView;
+  bool HasCurrentView = false;
+  std::vector<View> OtherViews;
+  uint64_t GridGeneration() const { return this->Grid ? uint64_t(this->Grid->Generation()) : 0u; }
+  void SwitchView(vtkRenderer* ren);
+  bool ReleaseViewsOf(vtkWindow* win);
+  std::string LastError;
+  vs::PropertyChecks Checks; // the settings VisSweep ignores, warned once per change
+  vtkMTimeType ErrorStamp = 0;        // the inputs' newest modification time when LastError was reported
+  vtkMTimeType RenderStamp = 0;       // the same, for the Render() in progress
+  uint32_t Frame = 0;
+};
+
+#endif
