@@ -19,6 +19,8 @@
 #ifndef vsEnvironmentMap_h
 #define vsEnvironmentMap_h
 
+#include "sampling/octahedral.h"
+
 #include <glm/glm.hpp>
 
 #include <cstddef>
@@ -48,6 +50,13 @@ struct LatLongImage
 /* The direction at lat-long coordinates (u, v) in [0,1)^2, and its inverse (u in [0,1)). */
 glm::vec3 LatLongToDirection(double u, double v);
 glm::dvec2 DirectionToLatLong(glm::dvec3 dir);
+
+/* The direction at octahedral map coordinates (u, v) in [0,1]^2: vs_octa_to_dir
+ * (sampling/octahedral.h) in float, as the renderer maps them. */
+inline glm::vec3 OctahedralToDirection(double u, double v)
+{
+  return shared::vs_octa_to_dir(glm::vec2(float(u), float(v)));
+}
 
 /* The integral of luminance over the sphere of a lat-long image, each pixel
  * weighted by its exact solid angle (cos theta_top - cos theta_bottom) * 2 pi / W.
