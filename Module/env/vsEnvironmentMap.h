@@ -63,10 +63,10 @@ inline glm::vec3 OctahedralToDirection(double u, double v)
  * Non-finite and negative channels count as 0. */
 double LatLongPower(const LatLongImage& image);
 
-/* The luminance weights of the renderer: (0.2126, 0.7152, 0.0722). */
+/* Luminance with the renderer's weights: vs_luminance (sampling/vs_prelude.h). */
 inline float Luminance(glm::vec3 c)
 {
-  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+  return shared::vs_luminance(c);
 }
 
 class EnvironmentMap
