@@ -218,7 +218,7 @@ void EnvironmentMap::Finalize()
   const double bound = texels ? RingingFraction * lum / double(texels) : 0.0;
   SanitizeRGB(this->Radiance.data(), texels, this->BadTexels, this->NonFiniteTexels, this->RingingTexels, bound);
   const int levels = this->Levels();
-  this->ImportanceMips.assign(levels > 0 ? MipOffset(levels) : 0, 0.0f);
+  this->ImportanceMips.assign(levels > 0 ? MipOffset(levels - 1) + texels : 0, 0.0f);
   this->MeanRadiance = glm::dvec3(0.0);
   this->MeanLuminance = 0.0;
   if (levels == 0)

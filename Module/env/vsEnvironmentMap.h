@@ -20,6 +20,7 @@
 #define vsEnvironmentMap_h
 
 #include "sampling/octahedral.h"
+#include "sampling/warp.h"
 
 #include <glm/glm.hpp>
 
@@ -77,9 +78,9 @@ public:
   /* RGB mean radiance per texel, 3 * Size * Size floats, texel (x, y) at y * Size + x. */
   std::vector<float> Radiance;
   /* Luminance quadtree: levels 0..K (Size = 2^K); level l has 2^l x 2^l nodes,
-   * row-major, starting at MipOffset(l) = (4^l - 1) / 3. Level K holds each
-   * texel's luminance, every coarser node the mean of its 4 children, level 0
-   * the mean luminance of the whole map. */
+   * row-major, starting at MipOffset(l) = (4^l - 1) / 3, so MipOffset(K) + Size^2
+   * floats in all. Level K holds each texel's luminance, every coarser node the
+   * mean of its 4 children, level 0 the mean luminance of the whole map. */
   std::vector<float> ImportanceMips;
   /* Mean RGB radiance over the sphere (= mean over texels: the map is equal-area). */
   glm::dvec3 MeanRadiance = glm::dvec3(0.0);
@@ -101,7 +102,9 @@ public:
   bool Empty() const { return this->Size <= 0; }
   /* Number of pyramid levels, K + 1. */
   int Levels() const;
-  static std::size_t MipOffset(int level) { return ((std::size_t(1) << (2 * level)) - 1) / 3; }
+  /* Where level l (0..15, the levels of the largest map) starts in ImportanceMips: the layout the
+   * renderer reads, vs_env_level_offset (sampling/warp.h). */
+  static std::size_t MipOffset(int level) { return shared::vs_env_level_offset(uint32_t(level)); }
   const float* Mip(int level) const { return this->ImportanceMips.data() + MipOffset(level); }
 
   glm::vec3 Texel(int x, int y) const
