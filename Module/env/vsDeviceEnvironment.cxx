@@ -3,6 +3,7 @@
 #include "vsEnvironmentMap.h"
 #include "vsError.h"
 #include "vsSerial.h"
+#include "sampling/vs_prelude.h"
 
 #include <algorithm>
 #include <string>
@@ -47,6 +48,8 @@ DeviceEnvironment::DeviceEnvironment(std::shared_ptr<Context> context, const Env
   this->Level_ = map->Levels() - 1;
   const size_t texels = size_t(map->Size) * map->Size;
   std::vector<float> rgba(4 * texels, 0.0f);
+  // The luminance in double, with vs_luminance's weights (sampling/vs_prelude.h).
+  const double weights[3] = { VS_LUMINANCE_WEIGHTS };
   for (size_t i = 0; i < texels; ++i)
   {
     for (int c = 0; c < 3; ++c)
@@ -54,7 +57,7 @@ DeviceEnvironment::DeviceEnvironment(std::shared_ptr<Context> context, const Env
       rgba[4 * i + c] = map->Radiance[3 * i + c];
     }
     this->MaxLuminance_ = std::max(this->MaxLuminance_,
-      0.2126 * map->Radiance[3 * i] + 0.7152 * map->Radiance[3 * i + 1] + 0.0722 * map->Radiance[3 * i + 2]);
+      weights[0] * map->Radiance[3 * i] + weights[1] * map->Radiance[3 * i + 1] + weights[2] * map->Radiance[3 * i + 2]);
   }
   this->Radiance_ = std::make_unique<Buffer>(context, rgba.size() * sizeof(float), "environment radiance");
   this->Radiance_->Upload(rgba.data(), rgba.size() * sizeof(float));

@@ -19,6 +19,9 @@
 #ifndef vsEnvironmentMap_h
 #define vsEnvironmentMap_h
 
+#include "sampling/octahedral.h"
+#include "sampling/warp.h"
+
 #include <glm/glm.hpp>
 
 #include <cstddef>
@@ -49,15 +52,22 @@ struct LatLongImage
 glm::vec3 LatLongToDirection(double u, double v);
 glm::dvec2 DirectionToLatLong(glm::dvec3 dir);
 
+/* The direction at octahedral map coordinates (u, v) in [0,1]^2: vs_octa_to_dir
+ * (sampling/octahedral.h) in float, as the renderer maps them. */
+inline glm::vec3 OctahedralToDirection(double u, double v)
+{
+  return shared::vs_octa_to_dir(glm::vec2(float(u), float(v)));
+}
+
 /* The integral of luminance over the sphere of a lat-long image, each pixel
  * weighted by its exact solid angle (cos theta_top - cos theta_bottom) * 2 pi / W.
  * Non-finite and negative channels count as 0. */
 double LatLongPower(const LatLongImage& image);
 
-/* The luminance weights of the renderer: (0.2126, 0.7152, 0.0722). */
+/* Luminance with the renderer's weights: vs_luminance (sampling/vs_prelude.h). */
 inline float Luminance(glm::vec3 c)
 {
-  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+  return shared::vs_luminance(c);
 }
 
 class EnvironmentMap
@@ -68,9 +78,9 @@ public:
   /* RGB mean radiance per texel, 3 * Size * Size floats, texel (x, y) at y * Size + x. */
   std::vector<float> Radiance;
   /* Luminance quadtree: levels 0..K (Size = 2^K); level l has 2^l x 2^l nodes,
-   * row-major, starting at MipOffset(l) = (4^l - 1) / 3. Level K holds each
-   * texel's luminance, every coarser node the mean of its 4 children, level 0
-   * the mean luminance of the whole map. */
+   * row-major, starting at MipOffset(l) = (4^l - 1) / 3, so MipOffset(K) + Size^2
+   * floats in all. Level K holds each texel's luminance, every coarser node the
+   * mean of its 4 children, level 0 the mean luminance of the whole map. */
   std::vector<float> ImportanceMips;
   /* Mean RGB radiance over the sphere (= mean over texels: the map is equal-area). */
   glm::dvec3 MeanRadiance = glm::dvec3(0.0);
@@ -92,7 +102,9 @@ public:
   bool Empty() const { return this->Size <= 0; }
   /* Number of pyramid levels, K + 1. */
   int Levels() const;
-  static std::size_t MipOffset(int level) { return ((std::size_t(1) << (2 * level)) - 1) / 3; }
+  /* Where level l (0..15, the levels of the largest map) starts in ImportanceMips: the layout the
+   * renderer reads, vs_env_level_offset (sampling/warp.h). */
+  static std::size_t MipOffset(int level) { return shared::vs_env_level_offset(uint32_t(level)); }
   const float* Mip(int level) const { return this->ImportanceMips.data() + MipOffset(level); }
 
   glm::vec3 Texel(int x, int y) const

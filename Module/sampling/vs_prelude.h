@@ -78,9 +78,15 @@ VS_FUNC float vs_copysign(float a, float b)
   return b < 0.0f ? -abs(a) : abs(a);
 }
 
+/* The luminance weights of linear Rec. 709 RGB, written once: vs_luminance takes them in float
+ * (GLSL and C++ alike); host code that sums luminance in double takes the same decimals in double
+ * (`const double w[3] = { VS_LUMINANCE_WEIGHTS };`, vsDeviceEnvironment.cxx). A list of decimals
+ * rather than a typed constant, so that each reads them at its own precision. */
+#define VS_LUMINANCE_WEIGHTS 0.2126, 0.7152, 0.0722
+
 VS_FUNC float vs_luminance(vec3 c)
 {
-  return dot(c, vec3(0.2126f, 0.7152f, 0.0722f));
+  return dot(c, vec3(VS_LUMINANCE_WEIGHTS));
 }
 
 VS_NAMESPACE_END

@@ -27,6 +27,7 @@ namespace vs
 class Buffer;
 class ComputePipeline;
 class Context;
+struct DeviceInfo;
 class DeviceVolume;
 class Image3D;
 class MajorantGrid;
@@ -114,6 +115,8 @@ public:
 private:
   void RunSweeps(const DeviceVolume& volume, const TransferFunctionTable& tf, const MajorantGrid& majorants,
     Buffer& globals, const Progress& progress);
+  /** The most floats one of the sweeps' work buffers holds on this device: the plan's budget. */
+  static uint64_t WorkBufferFloats(const DeviceInfo& info);
   void RunBruteForce(const DeviceVolume& volume, const TransferFunctionTable& tf,
     const MajorantGrid& majorants, Buffer& globals, const std::vector<uint32_t>& directions,
     const Progress& progress);
