@@ -255,4 +255,123 @@ int NameIndex(const std::vector<std::string>& names, const std::string& name, co
   }
   return static_cast<int>(it - names.begin());
 }
+SceneSection::SceneSection(const json& value, const std::string& section, const std::string& path)
+  : Value(value)
+  , Section(section)
+  , Path(path)
+{
+  RequireObject(value, path);
+  CheckKeys(value, path, SceneSchemaKeys(section));
+}
+
+const json& SceneSection::operator[](const std::string& key) const
+{
+  if (!this->Entry(key).Required && !this->Has(key))
+  {
+    throw std::logic_error("the scene parser read the absent optional key '" + this->Key(key) + "'");
+  }
+  return Require(this->Value, this->Path, key);
+}
+
+const SceneKey& SceneSection::Typed(const std::string& key, std::initializer_list<SceneType> types) const
+{
+  const SceneKey& e = this->Entry(key);
+  if (std::find(types.begin(), types.end(), e.Type) == types.end())
+  {
+    throw std::logic_error("the scene parser read '" + this->Key(key) + "' as another type than the schema's");
+  }
+  return e;
+}
+
+int SceneSection::Integer(const std::string& key) const
+{
+  const SceneKey& e = this->Typed(key, { SceneType::Integer });
+  return this->Integer(key, static_cast<long long>(e.Min), static_cast<long long>(e.Max));
+}
+
+int SceneSection::Integer(const std::string& key, long long lo, long long hi) const
+{
+  const SceneKey& e = this->Typed(key, { SceneType::Integer });
+  if (e.Range != SceneRange::Closed)
+  {
+    throw std::logic_error("the scene schema gives the integer '" + this->Key(key) + "' a range other than [Min, Max]");
+  }
+  return sceneio::Integer((*this)[key], this->Key(key), lo, hi, e.Noun);
+}
+
+double SceneSection::Number(const std::string& key) const
+{
+  const SceneKey& e = this->Typed(key, { SceneType::Number });
+  const json& v = (*this)[key];
+  const std::string k = this->Key(key);
+  switch (e.Range)
+  {
+    case SceneRange::Any:
+      return sceneio::Number(v, k);
+    case SceneRange::Closed:
+      return NumberIn(v, k, e.Min, e.Max, e.Noun);
+    case SceneRange::LeftOpen:
+    case SceneRange::Open:
+    {
+      const double d = sceneio::Number(v, k);
+      const bool open = e.Range == SceneRange::Open;
+      if (!(d > e.Min && (open ? d < e.Max : d <= e.Max)))
+      {
+        Fail(k, std::string(e.Noun) + " " + Num(d) + " not in (" + Num(e.Min) + ", " + Num(e.Max) + (open ? ")" : "]") +
+            e.Unit);
+      }
+      return d;
+    }
+    case SceneRange::Positive:
+      return Positive(v, k, e.Noun);
+    case SceneRange::PositiveFloat:
+      return PositiveFloat(v, k, e.Noun);
+    case SceneRange::NonNegativeFloat:
+      return FitsFloat(NonNegative(v, k, e.Noun), k);
+  }
+  throw std::logic_error("unknown range of '" + k + "'");
+}
+
+bool SceneSection::Boolean(const std::string& key) const
+{
+  this->Typed(key, { SceneType::Boolean });
+  return sceneio::Boolean((*this)[key], this->Key(key));
+}
+
+std::string SceneSection::String(const std::string& key) const
+{
+  const SceneKey& e = this->Typed(key, { SceneType::String, SceneType::Word });
+  const std::string k = this->Key(key);
+  const std::string s = sceneio::String((*this)[key], k);
+  if (e.Type == SceneType::String)
+  {
+    return s;
+  }
+  const std::vector<std::string>& words = e.Words;
+  // Strategies also in the API's spelling ("TwoStep"), stored as the scene file spells them.
+  const bool strategy = &e == &SceneSchemaKey("render", "strategy");
+  return words[strategy ? StrategyIndex(s, k) : NameIndex(words, s, k, e.Noun)];
+}
+
+Vec3 SceneSection::Vector(const std::string& key) const
+{
+  const SceneKey& e = this->Typed(key, { SceneType::Point, SceneType::Direction, SceneType::Color });
+  const json& v = (*this)[key];
+  switch (e.Type)
+  {
+    case SceneType::Point:
+      return Point3(v, this->Key(key));
+    case SceneType::Direction:
+      return Direction(v, this->Key(key));
+    default:
+      return Color3(v, this->Key(key), e.Noun);
+  }
+}
+
+std::string SceneSection::File(const std::string& key, const std::string& baseDir) const
+{
+  this->Typed(key, { SceneType::File });
+  const std::string k = this->Key(key);
+  return ResolvePath(sceneio::String((*this)[key], k), baseDir, k);
+}
 }

@@ -1,14 +1,17 @@
 // vsSceneValues.h — reading one JSON value of a scene file for the parser (vsSceneFile.cxx):
 // each reader checks the value's type and range and throws std::runtime_error naming the key
-// path ("render.width: width 0 not in [1, 16384]"). Not part of the tool's interface.
+// path ("render.width: width 0 not in [1, 16384]"). SceneSection reads a section's keys by
+// their entries in the schema (vsSceneSchema.h). Not part of the tool's interface.
 #ifndef vsSceneValues_h
 #define vsSceneValues_h
 
 #include "vsSceneFile.h"
+#include "vsSceneSchema.h"
 
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -76,6 +79,77 @@ std::array<double, N> Numbers(const json& v, const std::string& key)
   return a;
 }
 
+/** One object of the scene file read by the schema: its keys are checked against the schema's
+ *  section (the first unknown one fails, listing the known ones) and each value by its entry's
+ *  type and range. `path` names it in errors ("clip_planes[1]" for section "clip_planes[]"). */
+class SceneSection
+{
+public:
+  SceneSection(const json& value, const std::string& section, const std::string& path);
+  SceneSection(const json& value, const std::string& section)
+    : SceneSection(value, section, section)
+  {
+  }
+
+  bool Has(const std::string& key) const { return this->Value.contains(key); }
+  /** The key's path in errors ("render.width"). */
+  std::string Key(const std::string& key) const { return Join(this->Path, key); }
+  const SceneKey& Entry(const std::string& key) const { return SceneSchemaKey(this->Section, key); }
+  /** The raw value; a required key that is absent fails ("missing required key"). */
+  const json& operator[](const std::string& key) const;
+
+  // The value of a key checked by its entry; absent fails as operator[] does.
+  int Integer(const std::string& key) const;
+  /** With bounds that depend on the rest of the scene (the entry's message). */
+  int Integer(const std::string& key, long long lo, long long hi) const;
+  double Number(const std::string& key) const;
+  bool Boolean(const std::string& key) const;
+  /** A String, or a Word as the word list spells it. */
+  std::string String(const std::string& key) const;
+  /** A Point, Direction or Color. */
+  Vec3 Vector(const std::string& key) const;
+  /** A File, resolved against baseDir. */
+  std::string File(const std::string& key, const std::string& baseDir) const;
+
+  // Sets `value` when the key is present; returns whether it was.
+  bool Read(const std::string& key, int& value) const { return this->ReadAs(key, value, &SceneSection::Integer); }
+  bool Read(const std::string& key, double& value) const { return this->ReadAs(key, value, &SceneSection::Number); }
+  bool Read(const std::string& key, bool& value) const { return this->ReadAs(key, value, &SceneSection::Boolean); }
+  bool Read(const std::string& key, std::string& value) const
+  {
+    return this->ReadAs(key, value, &SceneSection::String);
+  }
+  bool Read(const std::string& key, Vec3& value) const { return this->ReadAs(key, value, &SceneSection::Vector); }
+  template <typename T>
+  bool Read(const std::string& key, std::optional<T>& value) const
+  {
+    T v{};
+    if (!this->Read(key, v))
+    {
+      return false;
+    }
+    value = v;
+    return true;
+  }
+
+private:
+  template <typename T>
+  bool ReadAs(const std::string& key, T& value, T (SceneSection::*read)(const std::string&) const) const
+  {
+    if (!this->Has(key))
+    {
+      return false;
+    }
+    value = (this->*read)(key);
+    return true;
+  }
+  /** The key's entry, which must be of one of these types (else std::logic_error: a parser bug). */
+  const SceneKey& Typed(const std::string& key, std::initializer_list<SceneType> types) const;
+
+  const json& Value;
+  std::string Section;
+  std::string Path;
+};
 }
 
 #endif
