@@ -1,13 +1,12 @@
-// vsRenderCommand.h — `vissweep render SCENE.json -o OUT.(exr|png) ...`: builds the VTK
-// pipeline of a scene file (vsSceneFile.h) and renders it progressively offscreen with
+// vsRenderCommand.h — `vissweep render SCENE.json -o OUT.(exr|png) ...`: renders the VTK
+// pipeline of a scene file (vsSceneFile.h, built by vsSceneBuild.h) progressively offscreen with
 // vtkVisibilitySweepVolumeMapper, writing linear EXR and/or tone-mapped PNG and stats.
 #ifndef vsRenderCommand_h
 #define vsRenderCommand_h
 
 #include "vsPendingFile.h"
+#include "vsSceneBuild.h"
 #include "vsSceneFile.h"
-
-#include "vtkSmartPointer.h"
 
 #include <memory>
 #include <string>
@@ -18,28 +17,8 @@ namespace CLI
 class App;
 }
 
-class vtkAlgorithm;
-class vtkImageData;
-class vtkRenderWindow;
-class vtkRenderer;
-class vtkVisibilitySweepVolumeMapper;
-class vtkVolume;
-class vtkVolumeProperty;
-
 namespace vstool
 {
-/** The VTK objects of a scene; keep this alive while rendering. */
-struct SceneObjects
-{
-  vtkSmartPointer<vtkImageData> Image;
-  vtkSmartPointer<vtkVolumeProperty> Property;
-  vtkSmartPointer<vtkAlgorithm> Environment; // vtkEnvironmentMapReader or vtkEnvironmentMapSource (updated)
-  vtkSmartPointer<vtkVisibilitySweepVolumeMapper> Mapper;
-  vtkSmartPointer<vtkVolume> Volume;
-  vtkSmartPointer<vtkRenderer> Renderer;
-  vtkSmartPointer<vtkRenderWindow> Window; // offscreen, scene.Render.Width x Height
-};
-
 /** The options of `vissweep render`. */
 struct RenderOptions
 {
@@ -84,16 +63,6 @@ ProgressiveResult RenderProgressively(
 /** Writes the outputs (.exr: the radiance, .png: the window) under temporary names; commit them. */
 std::vector<std::unique_ptr<PendingFile>> WriteOutputs(
   SceneObjects& objects, const Scene& scene, const std::vector<std::string>& outputs);
-
-/** The transfer functions and unit distance of the scene. */
-vtkSmartPointer<vtkVolumeProperty> MakeVolumeProperty(const Scene& scene);
-/** The environment (reader or procedural source), updated; throws std::runtime_error with the reason. */
-vtkSmartPointer<vtkAlgorithm> MakeEnvironment(const Scene& scene);
-/** Monte Carlo mode, strategy, seed, spp (MaximumSamples = scene spp), density, environment
- *  intensity/visibility, exposure, update scheme, visibility-grid parameters and clipping planes. */
-void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene);
-/** Reads the volume, builds everything, sets the camera; the window is offscreen. Throws std::runtime_error. */
-SceneObjects BuildScene(const Scene& scene);
 
 /** Registers `render` on the tool's top-level app. */
 void AddRender(CLI::App& app);

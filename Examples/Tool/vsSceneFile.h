@@ -4,26 +4,12 @@
 // (ParseScene(ToJson(s), dir) == s). No VTK here: vsRenderCommand builds the
 // pipeline from a Scene.
 //
-// Beyond the basic example of docs/reference.md (all optional):
-//  - volume: "files" (a .vdb sequence, one file per time step) instead of "file",
-//    and "time_step" (which step to render, default 0).
-//  - environment: instead of "file", exactly one procedural environment:
-//    {"constant": [r,g,b]}, {"sun": {"direction": [x,y,z], "radius_deg": r,
-//    "radiance": [r,g,b], "sky": [r,g,b]}}, {"two_tone": {"upper": [..], "lower": [..]}};
-//    "octahedral_size" (0 = automatic). Without "environment": a constant white sky.
-//  - camera: "parallel_scale" (parallel projection when present); the whole section is optional
-//    (without it the view frames the volume, as vtkRenderer::ResetCamera does).
-//  - render: "exposure" and "tone_mapping" (the PNG's display transform); for time ranges
-//    (`vissweep render --frames`), "update_scheme" ("full", "round-robin" (default), "environment-guided",
-//    "static"), "directions_per_frame" (default 4) and "static_interval" (default 16).
-//  - "visibility": {"direction_resolution", "voxels_per_cell", "kernel_resolution",
-//    "filtering", "filter_angle_fraction", "epsilon", "cell_mode", "skip_unlit_directions",
-//    "progressive", "sweep_frame_fraction", "light_weighted_directions", "fill_unswept",
-//    "extinction_pooling"},
-//    each optional.
-//  - "clip_planes": [{"origin": [..], "normal": [..]}, ...].
+// The keys of each section, their types, ranges and defaults: the table of vsSceneSchema.h,
+// which the parser checks values by; docs/reference.md documents the same keys (a test compares).
 #ifndef vsSceneFile_h
 #define vsSceneFile_h
+
+#include "vsSceneSchema.h"
 
 #include <nlohmann/json.hpp>
 
@@ -157,24 +143,14 @@ struct Scene
  *  the scene and normalised when used, so (1e300, 0, 0) is +X. Zero or non-finite: returned as is. */
 Vec3 Normalized(const Vec3& direction);
 
-/** The strategies of the scene file, in the mapper's enum order (uniform = 0 ... two-step = 4). */
-const std::vector<std::string>& SceneStrategies();
 /** The mapper's enum value of a strategy name: the scene file's ("two-step") or the API's
  *  ("TwoStep"; case, '-' and '_' do not matter); throws std::runtime_error naming `key` if unknown. */
 int StrategyIndex(const std::string& name, const std::string& key = "render.strategy");
 
-/** The update schemes of the scene file, in the mapper's enum order (full = 0 ... static = 3). */
-const std::vector<std::string>& SceneUpdateSchemes();
 /** The mapper's enum value of an update scheme name; throws std::runtime_error naming `key` if unknown. */
 int UpdateSchemeIndex(const std::string& name, const std::string& key = "render.update_scheme");
-/** The control extinction names, in the order of vtkVisibilitySweepVolumeMapper::ControlExtinctions. */
-const std::vector<std::string>& SceneControlExtinctions();
 int ControlExtinctionIndex(const std::string& name, const std::string& key = "render.control_extinction");
-/** The transmittance estimator names, in the order of vtkVisibilitySweepVolumeMapper::TransmittanceEstimators. */
-const std::vector<std::string>& SceneTransmittanceEstimators();
 int TransmittanceEstimatorIndex(const std::string& name, const std::string& key = "render.transmittance_estimator");
-/** The sampler names, in the order of vtkVisibilitySweepVolumeMapper::Samplers. */
-const std::vector<std::string>& SceneSamplers();
 int SamplerIndex(const std::string& name, const std::string& key = "render.sampler");
 
 /** Parses a scene; relative paths resolve against baseDir. Throws std::runtime_error naming the key path. */
