@@ -29,6 +29,10 @@
  * and the product map for Combined and TwoStep; Uniform and Environment ignore it.
  * D x D values, row-major, D in {2,4,8,16} (8 by default). K >= log2(D) for TwoStep. A returned pdf of 0 means "no
  * sample" (all-zero map or environment): the caller must skip the sample.
+ *
+ * The environment's importance quadtree (warp.h) is read through VS_MIPS, like the map through
+ * VS_MAP: in C++ every function that reaches it takes the flat array first (VS_MIPS_PARAM,
+ * `const float* mips`); in GLSL the shader's vs_env_mip(i).
  */
 #ifndef VS_STRATEGIES_H
 #define VS_STRATEGIES_H
@@ -66,9 +70,9 @@ VS_FUNC uint vs_log2(uint n)
 
 /* One entry of the Combined/TwoStep product map: the visibility of texel t of
  * the D x D map times the env quadtree node over the same texel. */
-VS_FUNC float vs_product_weight(float visibility, uvec2 t, uint D)
+VS_FUNC float vs_product_weight(VS_MIPS_PARAM float visibility, uvec2 t, uint D)
 {
-  return visibility * vs_env_node(vs_log2(D), t);
+  return visibility * vs_env_node(VS_MIPS_ARG vs_log2(D), t);
 }
 
 /* -------------------------------------------------------------- uniform */
@@ -87,21 +91,21 @@ VS_FUNC float vs_pdf_uniform(vec3 /* dir */)
 /* ---------------------------------------------------------- environment */
 
 /* finestLevel K: the env quadtree's leaves are the 2^K x 2^K texels. */
-VS_FUNC vec3 vs_sample_environment(uint finestLevel, vec2 u, VS_OUT(float) pdf)
+VS_FUNC vec3 vs_sample_environment(VS_MIPS_PARAM uint finestLevel, vec2 u, VS_OUT(float) pdf)
 {
   uvec2 leaf;
   float prob;
   vec2 uLeaf;
-  vs_env_descend(0u, uvec2(0u), finestLevel, u, leaf, prob, uLeaf);
+  vs_env_descend(VS_MIPS_ARG 0u, uvec2(0u), finestLevel, u, leaf, prob, uLeaf);
   uint n = 1u << finestLevel;
   pdf = vs_texel_pdf(prob, n);
   return vs_dir_in_texel(leaf, uLeaf, n);
 }
 
-VS_FUNC float vs_pdf_environment(uint finestLevel, vec3 dir)
+VS_FUNC float vs_pdf_environment(VS_MIPS_PARAM uint finestLevel, vec3 dir)
 {
   uint n = 1u << finestLevel;
-  float prob = vs_env_leaf_prob(0u, uvec2(0u), finestLevel, vs_dir_to_texel(dir, n));
+  float prob = vs_env_leaf_prob(VS_MIPS_ARG 0u, uvec2(0u), finestLevel, vs_dir_to_texel(dir, n));
   return vs_texel_pdf(prob, n);
 }
 
@@ -127,12 +131,12 @@ VS_FUNC float vs_pdf_tabulated(VS_MAP_PARAM uint D, vec3 dir)
 /* Second step: from texel t (probability probTexel) of the D x D product map,
  * descend the env quadtree to a leaf at finestLevel. */
 VS_FUNC vec3 vs_two_step_descend(
-  uvec2 t, float probTexel, vec2 uTexel, uint D, uint finestLevel, VS_OUT(float) pdf)
+  VS_MIPS_PARAM uvec2 t, float probTexel, vec2 uTexel, uint D, uint finestLevel, VS_OUT(float) pdf)
 {
   uvec2 leaf;
   float probLeaf;
   vec2 uLeaf;
-  vs_env_descend(vs_log2(D), t, finestLevel, uTexel, leaf, probLeaf, uLeaf);
+  vs_env_descend(VS_MIPS_ARG vs_log2(D), t, finestLevel, uTexel, leaf, probLeaf, uLeaf);
   uint n = 1u << finestLevel;
   pdf = vs_texel_pdf(probTexel * probLeaf, n);
   return vs_dir_in_texel(leaf, uLeaf, n);
@@ -140,28 +144,28 @@ VS_FUNC vec3 vs_two_step_descend(
 
 /* pdf of dir given the probability of its texel in the D x D product map. */
 VS_FUNC float vs_two_step_pdf_given_texel_prob(
-  float probTexel, uvec2 leaf, uint D, uint finestLevel)
+  VS_MIPS_PARAM float probTexel, uvec2 leaf, uint D, uint finestLevel)
 {
   uint level = vs_log2(D);
   uvec2 t = leaf >> (finestLevel - level);
-  float probLeaf = vs_env_leaf_prob(level, t, finestLevel, leaf);
+  float probLeaf = vs_env_leaf_prob(VS_MIPS_ARG level, t, finestLevel, leaf);
   return vs_texel_pdf(probTexel * probLeaf, 1u << finestLevel);
 }
 
-VS_FUNC vec3 vs_sample_two_step(VS_MAP_PARAM uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
+VS_FUNC vec3 vs_sample_two_step(VS_MIPS_PARAM VS_MAP_PARAM uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
 {
   uvec2 t;
   float prob;
   vec2 uTexel;
   vs_warp(VS_MAP_ARG D, u, t, prob, uTexel);
-  return vs_two_step_descend(t, prob, uTexel, D, finestLevel, pdf);
+  return vs_two_step_descend(VS_MIPS_ARG t, prob, uTexel, D, finestLevel, pdf);
 }
 
-VS_FUNC float vs_pdf_two_step(VS_MAP_PARAM uint D, uint finestLevel, vec3 dir)
+VS_FUNC float vs_pdf_two_step(VS_MIPS_PARAM VS_MAP_PARAM uint D, uint finestLevel, vec3 dir)
 {
   uvec2 leaf = vs_dir_to_texel(dir, 1u << finestLevel);
   float probTexel = vs_warp_prob(VS_MAP_ARG D, leaf >> (finestLevel - vs_log2(D)));
-  return vs_two_step_pdf_given_texel_prob(probTexel, leaf, D, finestLevel);
+  return vs_two_step_pdf_given_texel_prob(VS_MIPS_ARG probTexel, leaf, D, finestLevel);
 }
 
 /* ---------------------------- the same from a map that carries its sum pyramid (warp.h) */
@@ -181,29 +185,30 @@ VS_FUNC float vs_pdf_tabulated_pyramid(VS_MAP_PARAM uint D, vec3 dir)
   return vs_texel_pdf(vs_warp_pyramid_prob(VS_MAP_ARG D, vs_dir_to_texel(dir, D)), D);
 }
 
-VS_FUNC vec3 vs_sample_two_step_pyramid(VS_MAP_PARAM uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
+VS_FUNC vec3 vs_sample_two_step_pyramid(
+  VS_MIPS_PARAM VS_MAP_PARAM uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
 {
   uvec2 t;
   float prob;
   vec2 uTexel;
   vs_warp_pyramid(VS_MAP_ARG D, u, t, prob, uTexel);
-  return vs_two_step_descend(t, prob, uTexel, D, finestLevel, pdf);
+  return vs_two_step_descend(VS_MIPS_ARG t, prob, uTexel, D, finestLevel, pdf);
 }
 
-VS_FUNC float vs_pdf_two_step_pyramid(VS_MAP_PARAM uint D, uint finestLevel, vec3 dir)
+VS_FUNC float vs_pdf_two_step_pyramid(VS_MIPS_PARAM VS_MAP_PARAM uint D, uint finestLevel, vec3 dir)
 {
   uvec2 leaf = vs_dir_to_texel(dir, 1u << finestLevel);
   float probTexel = vs_warp_pyramid_prob(VS_MAP_ARG D, leaf >> (finestLevel - vs_log2(D)));
-  return vs_two_step_pdf_given_texel_prob(probTexel, leaf, D, finestLevel);
+  return vs_two_step_pdf_given_texel_prob(VS_MIPS_ARG probTexel, leaf, D, finestLevel);
 }
 
 /* vs_sample_direction for a map with its pyramid (the render kernel's form). */
 VS_FUNC vec3 vs_sample_direction_pyramid(
-  uint strategy, VS_MAP_PARAM uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
+  VS_MIPS_PARAM uint strategy, VS_MAP_PARAM uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
 {
   if (strategy == VS_STRATEGY_ENVIRONMENT)
   {
-    return vs_sample_environment(finestLevel, u, pdf);
+    return vs_sample_environment(VS_MIPS_ARG finestLevel, u, pdf);
   }
   if (strategy == VS_STRATEGY_VISIBILITY || strategy == VS_STRATEGY_COMBINED)
   {
@@ -211,16 +216,17 @@ VS_FUNC vec3 vs_sample_direction_pyramid(
   }
   if (strategy == VS_STRATEGY_TWO_STEP)
   {
-    return vs_sample_two_step_pyramid(VS_MAP_ARG D, finestLevel, u, pdf);
+    return vs_sample_two_step_pyramid(VS_MIPS_ARG VS_MAP_ARG D, finestLevel, u, pdf);
   }
   return vs_sample_uniform(u, pdf);
 }
 
-VS_FUNC float vs_pdf_direction_pyramid(uint strategy, VS_MAP_PARAM uint D, uint finestLevel, vec3 dir)
+VS_FUNC float vs_pdf_direction_pyramid(
+  VS_MIPS_PARAM uint strategy, VS_MAP_PARAM uint D, uint finestLevel, vec3 dir)
 {
   if (strategy == VS_STRATEGY_ENVIRONMENT)
   {
-    return vs_pdf_environment(finestLevel, dir);
+    return vs_pdf_environment(VS_MIPS_ARG finestLevel, dir);
   }
   if (strategy == VS_STRATEGY_VISIBILITY || strategy == VS_STRATEGY_COMBINED)
   {
@@ -228,7 +234,7 @@ VS_FUNC float vs_pdf_direction_pyramid(uint strategy, VS_MAP_PARAM uint D, uint 
   }
   if (strategy == VS_STRATEGY_TWO_STEP)
   {
-    return vs_pdf_two_step_pyramid(VS_MAP_ARG D, finestLevel, dir);
+    return vs_pdf_two_step_pyramid(VS_MIPS_ARG VS_MAP_ARG D, finestLevel, dir);
   }
   return vs_pdf_uniform(dir);
 }
@@ -236,11 +242,11 @@ VS_FUNC float vs_pdf_direction_pyramid(uint strategy, VS_MAP_PARAM uint D, uint 
 /* ------------------- the same from the cell's precomputed table (direction_table.h) */
 
 VS_FUNC vec3 vs_sample_direction_table(
-  uint strategy, VS_TABLE_PARAM uint base, uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
+  VS_MIPS_PARAM uint strategy, VS_TABLE_PARAM uint base, uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
 {
   if (strategy == VS_STRATEGY_ENVIRONMENT)
   {
-    return vs_sample_environment(finestLevel, u, pdf);
+    return vs_sample_environment(VS_MIPS_ARG finestLevel, u, pdf);
   }
   if (strategy == VS_STRATEGY_UNIFORM)
   {
@@ -252,17 +258,18 @@ VS_FUNC vec3 vs_sample_direction_table(
   vs_warp_table(VS_TABLE_ARG base, D, u, t, prob, uTexel);
   if (strategy == VS_STRATEGY_TWO_STEP)
   {
-    return vs_two_step_descend(t, prob, uTexel, D, finestLevel, pdf);
+    return vs_two_step_descend(VS_MIPS_ARG t, prob, uTexel, D, finestLevel, pdf);
   }
   pdf = vs_texel_pdf(prob, D);
   return vs_dir_in_texel(t, uTexel, D);
 }
 
-VS_FUNC float vs_pdf_direction_table(uint strategy, VS_TABLE_PARAM uint base, uint D, uint finestLevel, vec3 dir)
+VS_FUNC float vs_pdf_direction_table(
+  VS_MIPS_PARAM uint strategy, VS_TABLE_PARAM uint base, uint D, uint finestLevel, vec3 dir)
 {
   if (strategy == VS_STRATEGY_ENVIRONMENT)
   {
-    return vs_pdf_environment(finestLevel, dir);
+    return vs_pdf_environment(VS_MIPS_ARG finestLevel, dir);
   }
   if (strategy == VS_STRATEGY_UNIFORM)
   {
@@ -272,7 +279,7 @@ VS_FUNC float vs_pdf_direction_table(uint strategy, VS_TABLE_PARAM uint base, ui
   {
     uvec2 leaf = vs_dir_to_texel(dir, 1u << finestLevel);
     float probTexel = vs_warp_table_prob(VS_TABLE_ARG base, D, leaf >> (finestLevel - vs_log2(D)));
-    return vs_two_step_pdf_given_texel_prob(probTexel, leaf, D, finestLevel);
+    return vs_two_step_pdf_given_texel_prob(VS_MIPS_ARG probTexel, leaf, D, finestLevel);
   }
   return vs_texel_pdf(vs_warp_table_prob(VS_TABLE_ARG base, D, vs_dir_to_texel(dir, D)), D);
 }
@@ -289,13 +296,13 @@ VS_FUNC float vs_pdf_direction_table(uint strategy, VS_TABLE_PARAM uint base, ui
  * sampling's. alpha = 0 is TwoStep, 1 is Environment sampling. */
 
 /* The second half of either branch: the descent inside texel t (u remapped into it) and the mixture's pdf. */
-VS_FUNC vec3 vs_defensive_finish(uvec2 t, vec2 uTexel, float probGrid, float probEnv, float alpha, uint D,
-  uint finestLevel, VS_OUT(float) pdf)
+VS_FUNC vec3 vs_defensive_finish(VS_MIPS_PARAM uvec2 t, vec2 uTexel, float probGrid, float probEnv, float alpha,
+  uint D, uint finestLevel, VS_OUT(float) pdf)
 {
   uvec2 leaf;
   float probLeaf;
   vec2 uLeaf;
-  vs_env_descend(vs_log2(D), t, finestLevel, uTexel, leaf, probLeaf, uLeaf);
+  vs_env_descend(VS_MIPS_ARG vs_log2(D), t, finestLevel, uTexel, leaf, probLeaf, uLeaf);
   uint n = 1u << finestLevel;
   pdf = vs_texel_pdf((alpha * probEnv + (1.0f - alpha) * probGrid) * probLeaf, n);
   return vs_dir_in_texel(leaf, uLeaf, n);
@@ -314,66 +321,70 @@ VS_FUNC bool vs_defensive_pick(float alpha, VS_INOUT(vec2) u)
 }
 
 /* pdf of dir given its texel's probability under the grid's map. */
-VS_FUNC float vs_defensive_pdf_given_grid_prob(float probGrid, vec3 dir, float alpha, uint D, uint finestLevel)
+VS_FUNC float vs_defensive_pdf_given_grid_prob(
+  VS_MIPS_PARAM float probGrid, vec3 dir, float alpha, uint D, uint finestLevel)
 {
   uint level = vs_log2(D);
   uvec2 leaf = vs_dir_to_texel(dir, 1u << finestLevel);
   uvec2 t = leaf >> (finestLevel - level);
-  float probEnv = vs_env_leaf_prob(0u, uvec2(0u), level, t);
-  float probLeaf = vs_env_leaf_prob(level, t, finestLevel, leaf);
+  float probEnv = vs_env_leaf_prob(VS_MIPS_ARG 0u, uvec2(0u), level, t);
+  float probLeaf = vs_env_leaf_prob(VS_MIPS_ARG level, t, finestLevel, leaf);
   return vs_texel_pdf((alpha * probEnv + (1.0f - alpha) * probGrid) * probLeaf, 1u << finestLevel);
 }
 
 /* From the cell's direction table (the render kernel's default form). */
 VS_FUNC vec3 vs_sample_defensive_table(
-  VS_TABLE_PARAM uint base, uint D, uint finestLevel, float alpha, vec2 u, VS_OUT(float) pdf)
+  VS_MIPS_PARAM VS_TABLE_PARAM uint base, uint D, uint finestLevel, float alpha, vec2 u, VS_OUT(float) pdf)
 {
   uvec2 t;
   float probGrid, probEnv;
   vec2 uTexel;
   if (vs_defensive_pick(alpha, u))
   {
-    vs_env_descend(0u, uvec2(0u), vs_log2(D), u, t, probEnv, uTexel);
+    vs_env_descend(VS_MIPS_ARG 0u, uvec2(0u), vs_log2(D), u, t, probEnv, uTexel);
     probGrid = vs_warp_table_prob(VS_TABLE_ARG base, D, t);
   }
   else
   {
     vs_warp_table(VS_TABLE_ARG base, D, u, t, probGrid, uTexel);
-    probEnv = vs_env_leaf_prob(0u, uvec2(0u), vs_log2(D), t);
+    probEnv = vs_env_leaf_prob(VS_MIPS_ARG 0u, uvec2(0u), vs_log2(D), t);
   }
-  return vs_defensive_finish(t, uTexel, probGrid, probEnv, alpha, D, finestLevel, pdf);
+  return vs_defensive_finish(VS_MIPS_ARG t, uTexel, probGrid, probEnv, alpha, D, finestLevel, pdf);
 }
 
-VS_FUNC float vs_pdf_defensive_table(VS_TABLE_PARAM uint base, uint D, uint finestLevel, float alpha, vec3 dir)
+VS_FUNC float vs_pdf_defensive_table(
+  VS_MIPS_PARAM VS_TABLE_PARAM uint base, uint D, uint finestLevel, float alpha, vec3 dir)
 {
   uvec2 t = vs_dir_to_texel(dir, 1u << finestLevel) >> (finestLevel - vs_log2(D));
-  return vs_defensive_pdf_given_grid_prob(vs_warp_table_prob(VS_TABLE_ARG base, D, t), dir, alpha, D, finestLevel);
+  return vs_defensive_pdf_given_grid_prob(
+    VS_MIPS_ARG vs_warp_table_prob(VS_TABLE_ARG base, D, t), dir, alpha, D, finestLevel);
 }
 
 /* From a map that carries its sum pyramid (the kernel's form without a table). */
 VS_FUNC vec3 vs_sample_defensive_pyramid(
-  VS_MAP_PARAM uint D, uint finestLevel, float alpha, vec2 u, VS_OUT(float) pdf)
+  VS_MIPS_PARAM VS_MAP_PARAM uint D, uint finestLevel, float alpha, vec2 u, VS_OUT(float) pdf)
 {
   uvec2 t;
   float probGrid, probEnv;
   vec2 uTexel;
   if (vs_defensive_pick(alpha, u))
   {
-    vs_env_descend(0u, uvec2(0u), vs_log2(D), u, t, probEnv, uTexel);
+    vs_env_descend(VS_MIPS_ARG 0u, uvec2(0u), vs_log2(D), u, t, probEnv, uTexel);
     probGrid = vs_warp_pyramid_prob(VS_MAP_ARG D, t);
   }
   else
   {
     vs_warp_pyramid(VS_MAP_ARG D, u, t, probGrid, uTexel);
-    probEnv = vs_env_leaf_prob(0u, uvec2(0u), vs_log2(D), t);
+    probEnv = vs_env_leaf_prob(VS_MIPS_ARG 0u, uvec2(0u), vs_log2(D), t);
   }
-  return vs_defensive_finish(t, uTexel, probGrid, probEnv, alpha, D, finestLevel, pdf);
+  return vs_defensive_finish(VS_MIPS_ARG t, uTexel, probGrid, probEnv, alpha, D, finestLevel, pdf);
 }
 
-VS_FUNC float vs_pdf_defensive_pyramid(VS_MAP_PARAM uint D, uint finestLevel, float alpha, vec3 dir)
+VS_FUNC float vs_pdf_defensive_pyramid(VS_MIPS_PARAM VS_MAP_PARAM uint D, uint finestLevel, float alpha, vec3 dir)
 {
   uvec2 t = vs_dir_to_texel(dir, 1u << finestLevel) >> (finestLevel - vs_log2(D));
-  return vs_defensive_pdf_given_grid_prob(vs_warp_pyramid_prob(VS_MAP_ARG D, t), dir, alpha, D, finestLevel);
+  return vs_defensive_pdf_given_grid_prob(
+    VS_MIPS_ARG vs_warp_pyramid_prob(VS_MAP_ARG D, t), dir, alpha, D, finestLevel);
 }
 
 /* ------------------------------------------------------------ dispatch */
@@ -381,11 +392,11 @@ VS_FUNC float vs_pdf_defensive_pyramid(VS_MAP_PARAM uint D, uint finestLevel, fl
 /* Any strategy by its VS_STRATEGY_* id; the map = visibility or product map
  * (Visibility and Combined differ only in what the caller puts into it). */
 VS_FUNC vec3 vs_sample_direction(
-  uint strategy, VS_MAP_PARAM uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
+  VS_MIPS_PARAM uint strategy, VS_MAP_PARAM uint D, uint finestLevel, vec2 u, VS_OUT(float) pdf)
 {
   if (strategy == VS_STRATEGY_ENVIRONMENT)
   {
-    return vs_sample_environment(finestLevel, u, pdf);
+    return vs_sample_environment(VS_MIPS_ARG finestLevel, u, pdf);
   }
   if (strategy == VS_STRATEGY_VISIBILITY || strategy == VS_STRATEGY_COMBINED)
   {
@@ -393,16 +404,16 @@ VS_FUNC vec3 vs_sample_direction(
   }
   if (strategy == VS_STRATEGY_TWO_STEP)
   {
-    return vs_sample_two_step(VS_MAP_ARG D, finestLevel, u, pdf);
+    return vs_sample_two_step(VS_MIPS_ARG VS_MAP_ARG D, finestLevel, u, pdf);
   }
   return vs_sample_uniform(u, pdf);
 }
 
-VS_FUNC float vs_pdf_direction(uint strategy, VS_MAP_PARAM uint D, uint finestLevel, vec3 dir)
+VS_FUNC float vs_pdf_direction(VS_MIPS_PARAM uint strategy, VS_MAP_PARAM uint D, uint finestLevel, vec3 dir)
 {
   if (strategy == VS_STRATEGY_ENVIRONMENT)
   {
-    return vs_pdf_environment(finestLevel, dir);
+    return vs_pdf_environment(VS_MIPS_ARG finestLevel, dir);
   }
   if (strategy == VS_STRATEGY_VISIBILITY || strategy == VS_STRATEGY_COMBINED)
   {
@@ -410,7 +421,7 @@ VS_FUNC float vs_pdf_direction(uint strategy, VS_MAP_PARAM uint D, uint finestLe
   }
   if (strategy == VS_STRATEGY_TWO_STEP)
   {
-    return vs_pdf_two_step(VS_MAP_ARG D, finestLevel, dir);
+    return vs_pdf_two_step(VS_MIPS_ARG VS_MAP_ARG D, finestLevel, dir);
   }
   return vs_pdf_uniform(dir);
 }

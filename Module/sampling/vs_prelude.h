@@ -32,6 +32,9 @@
 #define VS_MAP_PARAM const float *values,
 #define VS_MAP_ARG values,
 #define VS_MAP(i) values[i]
+#define VS_MIPS_PARAM const float *mips,
+#define VS_MIPS_ARG mips,
+#define VS_MIPS(i) mips[i]
 #define VS_TABLE_PARAM const uint32_t *table,
 #define VS_TABLE_ARG table,
 #define VS_TABLE(i) table[i]
@@ -45,6 +48,9 @@
 #define VS_MAP_PARAM
 #define VS_MAP_ARG
 #define VS_MAP(i) vs_map_value(i)
+#define VS_MIPS_PARAM
+#define VS_MIPS_ARG
+#define VS_MIPS(i) vs_env_mip(i)
 #define VS_TABLE_PARAM
 #define VS_TABLE_ARG
 #define VS_TABLE(i) vs_table_value(i)
@@ -56,6 +62,9 @@
  * module-scope array and exposes as `float vs_map_value(uint n)`. GLSL passes arrays
  * by value, and copying a 256-float map into every call made lavapipe spend minutes
  * compiling the render shader. VS_MAP(i) reads entry i either way.
+ * The environment's importance quadtree (warp.h, "env mips") is read the same way: VS_MIPS(i)
+ * is `mips[i]` of a `const float* mips` argument in C++ (VS_MIPS_PARAM / VS_MIPS_ARG, first in
+ * the parameter list), the shader's `float vs_env_mip(uint i)` (its storage buffer) in GLSL.
  * The precomputed direction tables (direction_table.h) are read the same way: VS_TABLE(i)
  * is `table[i]` of a `const uint32_t* table` argument in C++, the shader's
  * `uint vs_table_value(uint i)` (its storage buffer) in GLSL. */

@@ -31,10 +31,12 @@
  *    level l (0 = 1x1 root ... K = finest, 2^l x 2^l nodes, row-major) starts
  *    at (4^l - 1)/3, each node the mean of its 4 children, the leaves the
  *    luminance of the equal-area octahedral environment texels. It is read
- *    through the accessor vs_env_mip(index), which the includer defines (GLSL:
- *    after the #include, reading its SSBO; C++: once per program, in namespace
- *    vs::shared). prob = the product of the chosen children's normalised
- *    weights, so it stays exact even if a stored mean is rounded.
+ *    through VS_MIPS (vs_prelude.h), like the tabulated maps through VS_MAP:
+ *    in C++ the functions take the array as their first argument
+ *    (VS_MIPS_PARAM, `const float* mips`); in GLSL they read the shader's
+ *    accessor vs_env_mip(index), which the includer defines after the
+ *    #include (reading its SSBO). prob = the product of the chosen children's
+ *    normalised weights, so it stays exact even if a stored mean is rounded.
  *
  * Robustness: sides of weight 0 are never chosen; the rescaled sample is
  * clamped to [0, VS_ONE_MINUS_EPSILON]; a tree (or subtree) of total weight 0
@@ -214,8 +216,10 @@ VS_FUNC float vs_warp_pyramid_prob(VS_MAP_PARAM uint n, uvec2 t)
 
 /* ------------------------------------------ environment importance tree */
 
-/* Defined by the includer: entry `index` of the flat env mip array. */
+#ifndef __cplusplus
+/* Defined by the includer: entry `index` of the flat env mip array (vs_prelude.h). */
 float vs_env_mip(uint index);
+#endif
 
 /* Where level l starts in the flat array: 1 + 4 + ... + 4^(l-1). */
 VS_FUNC uint vs_env_level_offset(uint level)
@@ -223,30 +227,30 @@ VS_FUNC uint vs_env_level_offset(uint level)
   return ((1u << (2u * level)) - 1u) / 3u;
 }
 
-VS_FUNC float vs_env_node(uint level, uvec2 node)
+VS_FUNC float vs_env_node(VS_MIPS_PARAM uint level, uvec2 node)
 {
-  return vs_env_mip(vs_env_level_offset(level) + (node.y << level) + node.x);
+  return VS_MIPS(vs_env_level_offset(level) + (node.y << level) + node.x);
 }
 
 /* The four children (order x + 2y) of node at level, read at level + 1. */
-VS_FUNC vec4 vs_env_children(uint level, uvec2 node)
+VS_FUNC vec4 vs_env_children(VS_MIPS_PARAM uint level, uvec2 node)
 {
   uint row = vs_env_level_offset(level + 1u) + ((2u * node.y) << (level + 1u)) + 2u * node.x;
   uint nextRow = row + (1u << (level + 1u));
-  return vec4(vs_env_mip(row), vs_env_mip(row + 1u), vs_env_mip(nextRow), vs_env_mip(nextRow + 1u));
+  return vec4(VS_MIPS(row), VS_MIPS(row + 1u), VS_MIPS(nextRow), VS_MIPS(nextRow + 1u));
 }
 
 /* Descend from startNode at startLevel to a leaf at finestLevel (>= startLevel).
  * leaf: the chosen node at finestLevel; prob: its probability given startNode
  * (0 if the subtree has no weight); uRemapped: uniform within the leaf. */
-VS_FUNC void vs_env_descend(uint startLevel, uvec2 startNode, uint finestLevel, vec2 u,
+VS_FUNC void vs_env_descend(VS_MIPS_PARAM uint startLevel, uvec2 startNode, uint finestLevel, vec2 u,
   VS_OUT(uvec2) leaf, VS_OUT(float) prob, VS_OUT(vec2) uRemapped)
 {
   uvec2 node = startNode;
   prob = 1.0f;
   for (uint level = startLevel; level < finestLevel; ++level)
   {
-    vec4 w = vs_env_children(level, node);
+    vec4 w = vs_env_children(VS_MIPS_ARG level, node);
     uvec2 c = vs_warp_choose_child(w, u);
     prob *= vs_quad_child_prob(w, c);
     node = 2u * node + c;
@@ -258,7 +262,7 @@ VS_FUNC void vs_env_descend(uint startLevel, uvec2 startNode, uint finestLevel, 
 /* The probability vs_env_descend gives `leaf` (a node at finestLevel) when
  * started at startNode; 0 outside startNode's subtree. Bit-identical to the
  * prob the descent returns. */
-VS_FUNC float vs_env_leaf_prob(uint startLevel, uvec2 startNode, uint finestLevel, uvec2 leaf)
+VS_FUNC float vs_env_leaf_prob(VS_MIPS_PARAM uint startLevel, uvec2 startNode, uint finestLevel, uvec2 leaf)
 {
   if (any(notEqual(leaf >> (finestLevel - startLevel), startNode)))
   {
@@ -269,7 +273,7 @@ VS_FUNC float vs_env_leaf_prob(uint startLevel, uvec2 startNode, uint finestLeve
   {
     uvec2 node = leaf >> (finestLevel - level);
     uvec2 c = (leaf >> (finestLevel - level - 1u)) & uvec2(1u);
-    prob *= vs_quad_child_prob(vs_env_children(level, node), c);
+    prob *= vs_quad_child_prob(vs_env_children(VS_MIPS_ARG level, node), c);
   }
   return prob;
 }

@@ -15,9 +15,8 @@
 //     the pdf is 0 — except for the few that the float round trip
 //     uv -> direction -> uv moves across a texel edge (within 1e-5 in uv).
 //
-// Also the plumbing for the environment quadtree accessor vs_env_mip(index)
-// that warp.h declares: BuildEnvMips() and ScopedEnvMips. The accessor itself
-// is defined once for the test program, in TestSamplingWarp.cxx.
+// Also BuildEnvMips(): the flat environment quadtree array of warp.h, which the
+// tests pass to the shared functions as their first argument (VS_MIPS_PARAM).
 #ifndef VS_TEST_CHI_SQUARE_H
 #define VS_TEST_CHI_SQUARE_H
 
@@ -339,30 +338,6 @@ inline std::vector<float> BuildEnvMips(const std::vector<float>& leaves, unsigne
   }
   return mips;
 }
-
-// The mips vs_env_mip() currently reads (see TestSamplingWarp.cxx).
-inline const std::vector<float>*& ActiveEnvMips()
-{
-  static const std::vector<float>* active = nullptr;
-  return active;
-}
-
-// Makes vs_env_mip() read `mips` for the lifetime of this object.
-class ScopedEnvMips
-{
-public:
-  explicit ScopedEnvMips(const std::vector<float>& mips)
-    : Previous(ActiveEnvMips())
-  {
-    ActiveEnvMips() = &mips;
-  }
-  ~ScopedEnvMips() { ActiveEnvMips() = this->Previous; }
-  ScopedEnvMips(const ScopedEnvMips&) = delete;
-  ScopedEnvMips& operator=(const ScopedEnvMips&) = delete;
-
-private:
-  const std::vector<float>* Previous;
-};
 
 } // namespace vstest
 

@@ -165,12 +165,11 @@ Scene MakeScene(const NamedMap& vis, const NamedEnv& env, uint D, uint K)
   s.K = K;
   s.visibility = vis.make(D);
   s.mips = vstest::BuildEnvMips(env.make(K), K);
-  vstest::ScopedEnvMips scope(s.mips);
   for (uint y = 0; y < D; ++y)
   {
     for (uint x = 0; x < D; ++x)
     {
-      s.product[y * D + x] = vs_product_weight(s.visibility[y * D + x], uvec2(x, y), D);
+      s.product[y * D + x] = vs_product_weight(s.mips.data(), s.visibility[y * D + x], uvec2(x, y), D);
     }
   }
   return s;
@@ -185,28 +184,28 @@ Map ValuesFor(uint strategy, const Scene& s)
 // sample() and pdf() of a strategy through the dispatchers.
 struct Sampler
 {
+  const float* mips; // the scene's env mips (warp.h)
   uint strategy;
   Map values;
   uint D, K;
 
   vec3 Sample(vec2 u, float& pdf)
   {
-    return vs_sample_direction(strategy, values.data(), D, K, u, pdf);
+    return vs_sample_direction(mips, strategy, values.data(), D, K, u, pdf);
   }
   float Pdf(vec3 dir)
   {
-    return vs_pdf_direction(strategy, values.data(), D, K, dir);
+    return vs_pdf_direction(mips, strategy, values.data(), D, K, dir);
   }
 };
 
 Sampler MakeSampler(uint strategy, const Scene& s)
 {
-  return Sampler{ strategy, ValuesFor(strategy, s), s.D, s.K };
+  return Sampler{ s.mips.data(), strategy, ValuesFor(strategy, s), s.D, s.K };
 }
 
 testing::AssertionResult StrategyMatchesPdf(uint strategy, const Scene& s)
 {
-  vstest::ScopedEnvMips scope(s.mips);
   Sampler sampler = MakeSampler(strategy, s);
   vstest::SamplerTestOptions o;
   o.bins =
@@ -238,7 +237,6 @@ std::vector<float> WithPyramid(const Map& values, uint D)
 // The same strategy through the pyramid form of the map (the render kernel's, warp.h).
 testing::AssertionResult PyramidStrategyMatchesPdf(uint strategy, const Scene& s)
 {
-  vstest::ScopedEnvMips scope(s.mips);
   const std::vector<float> v = WithPyramid(ValuesFor(strategy, s), s.D);
   vstest::SamplerTestOptions o;
   o.bins = 64;
@@ -247,8 +245,9 @@ testing::AssertionResult PyramidStrategyMatchesPdf(uint strategy, const Scene& s
   o.seed = strategy * 100u + s.D + s.K + 7u;
   o.edgeResolution = int(std::max(s.D, 1u << s.K));
   return vstest::SamplerMatchesPdf(
-           [&](vec2 u, float& pdf) { return vs_sample_direction_pyramid(strategy, v.data(), s.D, s.K, u, pdf); },
-           [&](vec3 d) { return vs_pdf_direction_pyramid(strategy, v.data(), s.D, s.K, d); }, o)
+           [&](vec2 u, float& pdf)
+           { return vs_sample_direction_pyramid(s.mips.data(), strategy, v.data(), s.D, s.K, u, pdf); },
+           [&](vec3 d) { return vs_pdf_direction_pyramid(s.mips.data(), strategy, v.data(), s.D, s.K, d); }, o)
          << " (pyramid, " << StrategyName(strategy) << ", " << s.name << ")";
 }
 
@@ -274,7 +273,6 @@ std::vector<uint32_t> TableOf(const Map& values, uint D, uint pad)
 // The same strategy through the cell's precomputed table (the render kernel's default form).
 testing::AssertionResult TableStrategyMatchesPdf(uint strategy, const Scene& s)
 {
-  vstest::ScopedEnvMips scope(s.mips);
   const uint pad = 5;
   const std::vector<uint32_t> table = TableOf(ValuesFor(strategy, s), s.D, pad);
   if (table.size() != pad + 2 * vs_table_nodes(s.D))
@@ -289,15 +287,16 @@ testing::AssertionResult TableStrategyMatchesPdf(uint strategy, const Scene& s)
   o.seed = strategy * 100u + s.D + s.K + 11u;
   o.edgeResolution = int(std::max(s.D, 1u << s.K));
   return vstest::SamplerMatchesPdf(
-           [&](vec2 u, float& pdf) { return vs_sample_direction_table(strategy, table.data(), pad, s.D, s.K, u, pdf); },
-           [&](vec3 d) { return vs_pdf_direction_table(strategy, table.data(), pad, s.D, s.K, d); }, o)
+           [&](vec2 u, float& pdf)
+           { return vs_sample_direction_table(s.mips.data(), strategy, table.data(), pad, s.D, s.K, u, pdf); },
+           [&](vec3 d) { return vs_pdf_direction_table(s.mips.data(), strategy, table.data(), pad, s.D, s.K, d); },
+           o)
          << " (table, " << StrategyName(strategy) << ", " << s.name << ")";
 }
 
 // The defensive mixture of TwoStep with Environment sampling, from the table or the pyramid.
 testing::AssertionResult DefensiveMatchesPdf(const Scene& s, float alpha, bool table)
 {
-  vstest::ScopedEnvMips scope(s.mips);
   const Map values = ValuesFor(VS_STRATEGY_TWO_STEP, s);
   const std::vector<uint32_t> t = TableOf(values, s.D, 3);
   const std::vector<float> v = WithPyramid(values, s.D);
@@ -309,12 +308,12 @@ testing::AssertionResult DefensiveMatchesPdf(const Scene& s, float alpha, bool t
   o.edgeResolution = int(std::max(s.D, 1u << s.K));
   return vstest::SamplerMatchesPdf(
            [&](vec2 u, float& pdf) {
-             return table ? vs_sample_defensive_table(t.data(), 3u, s.D, s.K, alpha, u, pdf)
-                          : vs_sample_defensive_pyramid(v.data(), s.D, s.K, alpha, u, pdf);
+             return table ? vs_sample_defensive_table(s.mips.data(), t.data(), 3u, s.D, s.K, alpha, u, pdf)
+                          : vs_sample_defensive_pyramid(s.mips.data(), v.data(), s.D, s.K, alpha, u, pdf);
            },
            [&](vec3 d) {
-             return table ? vs_pdf_defensive_table(t.data(), 3u, s.D, s.K, alpha, d)
-                          : vs_pdf_defensive_pyramid(v.data(), s.D, s.K, alpha, d);
+             return table ? vs_pdf_defensive_table(s.mips.data(), t.data(), 3u, s.D, s.K, alpha, d)
+                          : vs_pdf_defensive_pyramid(s.mips.data(), v.data(), s.D, s.K, alpha, d);
            },
            o)
     << " (defensive, alpha " << alpha << (table ? ", table, " : ", pyramid, ") << s.name << ")";
@@ -364,7 +363,6 @@ TEST(SamplingStrategies, TableKeepsEveryTexelOfTheMap)
       for (uint D : { 2u, 4u, 8u, 16u })
       {
         Scene s = MakeScene(vis, env, D, 6);
-        vstest::ScopedEnvMips scope(s.mips);
         for (uint strategy : { VS_STRATEGY_VISIBILITY, VS_STRATEGY_TWO_STEP })
         {
           const Map values = ValuesFor(strategy, s);
@@ -423,7 +421,7 @@ TEST(SamplingStrategies, DefensiveTwoStepIsBoundedByEnvironmentSampling)
   for (const NamedEnv& light : kEnvironments)
   {
     Scene s = MakeScene(kVisibilityMaps[1], light, 8, 6);
-    vstest::ScopedEnvMips scope(s.mips);
+    const float* mips = s.mips.data();
     const Map values = ValuesFor(VS_STRATEGY_TWO_STEP, s);
     const std::vector<float> v = WithPyramid(values, 8);
     const std::vector<uint32_t> t = TableOf(values, 8, 0);
@@ -431,15 +429,18 @@ TEST(SamplingStrategies, DefensiveTwoStepIsBoundedByEnvironmentSampling)
     for (int i = 0; i < 2000; ++i)
     {
       const vec3 d = vs_sample_uniform_sphere(vs_rng_vec2(rng));
-      const float env = vs_pdf_environment(6u, d);
+      const float env = vs_pdf_environment(mips, 6u, d);
       for (float alpha : { 0.1f, 0.3f })
       {
-        ASSERT_GE(vs_pdf_defensive_table(t.data(), 0u, 8u, 6u, alpha, d), alpha * env * (1.0f - 1e-5f)) << light.name;
-        ASSERT_GE(vs_pdf_defensive_pyramid(v.data(), 8u, 6u, alpha, d), alpha * env * (1.0f - 1e-5f)) << light.name;
+        ASSERT_GE(vs_pdf_defensive_table(mips, t.data(), 0u, 8u, 6u, alpha, d), alpha * env * (1.0f - 1e-5f))
+          << light.name;
+        ASSERT_GE(vs_pdf_defensive_pyramid(mips, v.data(), 8u, 6u, alpha, d), alpha * env * (1.0f - 1e-5f))
+          << light.name;
       }
-      EXPECT_NEAR(vs_pdf_defensive_pyramid(v.data(), 8u, 6u, 0.0f, d), vs_pdf_two_step_pyramid(v.data(), 8u, 6u, d),
-        1e-6f * (1.0f + vs_pdf_two_step_pyramid(v.data(), 8u, 6u, d)));
-      EXPECT_NEAR(vs_pdf_defensive_pyramid(v.data(), 8u, 6u, 1.0f, d), env, 1e-5f * (1.0f + env));
+      EXPECT_NEAR(vs_pdf_defensive_pyramid(mips, v.data(), 8u, 6u, 0.0f, d),
+        vs_pdf_two_step_pyramid(mips, v.data(), 8u, 6u, d),
+        1e-6f * (1.0f + vs_pdf_two_step_pyramid(mips, v.data(), 8u, 6u, d)));
+      EXPECT_NEAR(vs_pdf_defensive_pyramid(mips, v.data(), 8u, 6u, 1.0f, d), env, 1e-5f * (1.0f + env));
     }
   }
 }
@@ -519,7 +520,6 @@ TEST(SamplingStrategies, PdfsIntegrateToOne)
       for (uint D : { 4u, 8u, 16u })
       {
         Scene s = MakeScene(vis, env, D, 7);
-        vstest::ScopedEnvMips scope(s.mips);
         for (uint strategy = 0; strategy < 5; ++strategy)
         {
           Sampler sampler = MakeSampler(strategy, s);
@@ -537,7 +537,6 @@ TEST(SamplingStrategies, SampledPdfIsPdfOfDirection)
 {
   // Far from texel edges the two agree bit for bit (same arithmetic).
   Scene s = MakeScene(kVisibilityMaps[3], kEnvironments[1], 8, 6);
-  vstest::ScopedEnvMips scope(s.mips);
   VsRng rng = vs_rng_init(uvec2(5u, 5u), 5u, 5u);
   for (uint strategy = 0; strategy < 5; ++strategy)
   {
@@ -562,7 +561,7 @@ TEST(SamplingStrategies, SampledPdfIsPdfOfDirection)
 TEST(SamplingStrategies, DispatchMatchesNamedFunctions)
 {
   Scene s = MakeScene(kVisibilityMaps[2], kEnvironments[1], 8, 6);
-  vstest::ScopedEnvMips scope(s.mips);
+  const float* mips = s.mips.data();
   Map vis = s.visibility, prod = s.product;
   VsRng rng = vs_rng_init(uvec2(2u, 5u), 5u, 5u);
   for (int i = 0; i < 500; ++i)
@@ -572,33 +571,34 @@ TEST(SamplingStrategies, DispatchMatchesNamedFunctions)
     vec3 named[5], dispatched[5];
     float namedPdf[5], dispatchedPdf[5];
     named[0] = vs_sample_uniform(u, namedPdf[0]);
-    named[1] = vs_sample_environment(6u, u, namedPdf[1]);
+    named[1] = vs_sample_environment(mips, 6u, u, namedPdf[1]);
     named[2] = vs_sample_tabulated(vis.data(), 8u, u, namedPdf[2]);
     named[3] = vs_sample_tabulated(prod.data(), 8u, u, namedPdf[3]);
-    named[4] = vs_sample_two_step(prod.data(), 8u, 6u, u, namedPdf[4]);
+    named[4] = vs_sample_two_step(mips, prod.data(), 8u, 6u, u, namedPdf[4]);
     for (uint st = 0; st < 5; ++st)
     {
       Map values = ValuesFor(st, s);
-      dispatched[st] = vs_sample_direction(st, values.data(), 8u, 6u, u, dispatchedPdf[st]);
+      dispatched[st] = vs_sample_direction(mips, st, values.data(), 8u, 6u, u, dispatchedPdf[st]);
       ASSERT_EQ(named[st], dispatched[st]) << StrategyName(st);
       ASSERT_EQ(namedPdf[st], dispatchedPdf[st]) << StrategyName(st);
     }
     vec3 d = named[4];
-    EXPECT_EQ(vs_pdf_uniform(d), vs_pdf_direction(0u, vis.data(), 8u, 6u, d));
-    EXPECT_EQ(vs_pdf_environment(6u, d), vs_pdf_direction(1u, vis.data(), 8u, 6u, d));
-    EXPECT_EQ(vs_pdf_tabulated(vis.data(), 8u, d), vs_pdf_direction(2u, vis.data(), 8u, 6u, d));
-    EXPECT_EQ(vs_pdf_tabulated(prod.data(), 8u, d), vs_pdf_direction(3u, prod.data(), 8u, 6u, d));
-    EXPECT_EQ(vs_pdf_two_step(prod.data(), 8u, 6u, d), vs_pdf_direction(4u, prod.data(), 8u, 6u, d));
+    EXPECT_EQ(vs_pdf_uniform(d), vs_pdf_direction(mips, 0u, vis.data(), 8u, 6u, d));
+    EXPECT_EQ(vs_pdf_environment(mips, 6u, d), vs_pdf_direction(mips, 1u, vis.data(), 8u, 6u, d));
+    EXPECT_EQ(vs_pdf_tabulated(vis.data(), 8u, d), vs_pdf_direction(mips, 2u, vis.data(), 8u, 6u, d));
+    EXPECT_EQ(vs_pdf_tabulated(prod.data(), 8u, d), vs_pdf_direction(mips, 3u, prod.data(), 8u, 6u, d));
+    EXPECT_EQ(
+      vs_pdf_two_step(mips, prod.data(), 8u, 6u, d), vs_pdf_direction(mips, 4u, prod.data(), 8u, 6u, d));
     // The same at D = 16.
     Map vis16 = RandomVisibility(16);
     EXPECT_EQ(vs_sample_tabulated(vis16.data(), 16u, u, p0),
-      vs_sample_direction(2u, vis16.data(), 16u, 6u, u, p1));
+      vs_sample_direction(mips, 2u, vis16.data(), 16u, 6u, u, p1));
     EXPECT_EQ(p0, p1);
-    EXPECT_EQ(vs_sample_two_step(vis16.data(), 16u, 6u, u, p0),
-      vs_sample_direction(4u, vis16.data(), 16u, 6u, u, p1));
+    EXPECT_EQ(vs_sample_two_step(mips, vis16.data(), 16u, 6u, u, p0),
+      vs_sample_direction(mips, 4u, vis16.data(), 16u, 6u, u, p1));
     EXPECT_EQ(p0, p1);
-    EXPECT_EQ(
-      vs_pdf_two_step(vis16.data(), 16u, 6u, d), vs_pdf_direction(4u, vis16.data(), 16u, 6u, d));
+    EXPECT_EQ(vs_pdf_two_step(mips, vis16.data(), 16u, 6u, d),
+      vs_pdf_direction(mips, 4u, vis16.data(), 16u, 6u, d));
   }
 }
 
@@ -607,19 +607,18 @@ TEST(SamplingStrategies, NothingToSampleGivesPdfZero)
 {
   const uint K = 6, n = 1u << K;
   std::vector<float> mips = vstest::BuildEnvMips(std::vector<float>(n * n, 0.0f), K);
-  vstest::ScopedEnvMips scope(mips);
   Map zero{};
   for (uint strategy = 1; strategy < 5; ++strategy)
   {
     for (vec2 u : { vec2(0.0f), vec2(0.5f, 0.2f), vec2(VS_ONE_MINUS_EPSILON) })
     {
       float pdf8 = -1.0f, pdf16 = -1.0f;
-      vec3 a = vs_sample_direction(strategy, zero.data(), 8u, K, u, pdf8);
-      vec3 b = vs_sample_direction(strategy, zero.data(), 16u, K, u, pdf16);
+      vec3 a = vs_sample_direction(mips.data(), strategy, zero.data(), 8u, K, u, pdf8);
+      vec3 b = vs_sample_direction(mips.data(), strategy, zero.data(), 16u, K, u, pdf16);
       EXPECT_EQ(pdf8, 0.0f) << StrategyName(strategy);
       EXPECT_EQ(pdf16, 0.0f) << StrategyName(strategy);
       EXPECT_TRUE(std::isfinite(glm::length(a)) && std::isfinite(glm::length(b)));
-      EXPECT_EQ(vs_pdf_direction(strategy, zero.data(), 8u, K, a), 0.0f);
+      EXPECT_EQ(vs_pdf_direction(mips.data(), strategy, zero.data(), 8u, K, a), 0.0f);
     }
   }
 }
@@ -629,7 +628,6 @@ TEST(SamplingStrategies, NothingToSampleGivesPdfZero)
 TEST(SamplingStrategies, TwoStepAvoidsUnlitLeaves)
 {
   Scene s = MakeScene(kVisibilityMaps[2], kEnvironments[3], 8, 6);
-  vstest::ScopedEnvMips scope(s.mips);
   const uint n = 64, leafLevelOffset = vs_env_level_offset(6u);
   Sampler sampler = MakeSampler(VS_STRATEGY_TWO_STEP, s);
   VsRng rng = vs_rng_init(uvec2(3u, 3u), 3u, 3u);
@@ -700,11 +698,10 @@ TEST(SamplingStrategies, EstimatorsAreUnbiased)
       visibility[i] += 0.01f;
     }
     std::vector<float> mips = vstest::BuildEnvMips(leaves, K);
-    vstest::ScopedEnvMips scope(mips);
     Map product{};
     for (uint i = 0; i < D * D; ++i)
     {
-      product[i] = vs_product_weight(visibility[i], uvec2(i % D, i / D), D);
+      product[i] = vs_product_weight(mips.data(), visibility[i], uvec2(i % D, i / D), D);
     }
     for (uint strategy = 0; strategy < 5; ++strategy)
     {
@@ -715,7 +712,7 @@ TEST(SamplingStrategies, EstimatorsAreUnbiased)
       for (int i = 0; i < samples; ++i)
       {
         float pdf;
-        vec3 d = vs_sample_direction(strategy, values.data(), 8u, K, vs_rng_vec2(rng), pdf);
+        vec3 d = vs_sample_direction(mips.data(), strategy, values.data(), 8u, K, vs_rng_vec2(rng), pdf);
         uvec2 leaf = vs_dir_to_texel(d, N);
         double f = pdf > 0.0f ? leaves[leaf.y * N + leaf.x] * TrueVisibility(d) / pdf : 0.0;
         sum += f;

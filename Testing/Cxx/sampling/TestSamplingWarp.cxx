@@ -13,14 +13,6 @@
 #include <functional>
 #include <vector>
 
-// The env-mip accessor warp.h declares, for the whole test program: it reads
-// the mips installed by vstest::ScopedEnvMips (bounds-checked, so a wrong index
-// fails the test instead of reading garbage).
-float vs::shared::vs_env_mip(glm::uint index)
-{
-  return vstest::ActiveEnvMips()->at(index);
-}
-
 using namespace vs::shared;
 
 namespace
@@ -449,7 +441,8 @@ std::vector<float> TestEnvLeaves()
 
 // Chi-square of the descent from (level, node): position (leaf + uRemapped)
 // histogrammed at twice the leaf resolution of the subtree.
-void ExpectDescentMatchesLeaves(const std::vector<float>& leaves, uint level, uvec2 node)
+void ExpectDescentMatchesLeaves(
+  const std::vector<float>& mips, const std::vector<float>& leaves, uint level, uvec2 node)
 {
   SCOPED_TRACE(
     testing::Message() << "start level " << level << " node " << node.x << "," << node.y);
@@ -480,13 +473,13 @@ void ExpectDescentMatchesLeaves(const std::vector<float>& leaves, uint level, uv
     uvec2 leaf;
     float prob;
     vec2 ur;
-    vs_env_descend(level, node, kLevels, vs_rng_vec2(rng), leaf, prob, ur);
+    vs_env_descend(mips.data(), level, node, kLevels, vs_rng_vec2(rng), leaf, prob, ur);
     uvec2 local = leaf - origin;
     float value = leaves[leaf.y * n + leaf.x];
     bool valid = local.x < side && local.y < side && value > 0.0f && ur.x >= 0.0f && ur.x < 1.0f &&
                  ur.y >= 0.0f && ur.y < 1.0f &&
                  std::abs(prob - value / total) <= 1e-5 * value / total &&
-                 prob == vs_env_leaf_prob(level, node, kLevels, leaf);
+                 prob == vs_env_leaf_prob(mips.data(), level, node, kLevels, leaf);
     if (!valid)
     {
       ++invalid;
@@ -518,37 +511,34 @@ TEST(SamplingWarp, EnvMipsAreMeans)
 {
   std::vector<float> leaves = TestEnvLeaves();
   std::vector<float> mips = vstest::BuildEnvMips(leaves, kLevels);
-  vstest::ScopedEnvMips scope(mips);
   double mean = 0.0;
   for (float v : leaves)
   {
     mean += v;
   }
   mean /= leaves.size();
-  EXPECT_NEAR(vs_env_node(0u, uvec2(0u)), mean, 1e-5 * mean);
-  EXPECT_EQ(vs_env_node(kLevels, uvec2(7u, 9u)), leaves[9 * 32 + 7]);
-  EXPECT_EQ(vs_env_node(1u, uvec2(0u, 1u)), 0.0f);
-  EXPECT_EQ(vs_env_node(3u, uvec2(5u, 1u)), 0.0f);
-  vec4 c = vs_env_children(2u, uvec2(1u, 3u));
-  EXPECT_EQ(c.y, vs_env_node(3u, uvec2(3u, 6u)));
-  EXPECT_EQ(c.z, vs_env_node(3u, uvec2(2u, 7u)));
+  EXPECT_NEAR(vs_env_node(mips.data(), 0u, uvec2(0u)), mean, 1e-5 * mean);
+  EXPECT_EQ(vs_env_node(mips.data(), kLevels, uvec2(7u, 9u)), leaves[9 * 32 + 7]);
+  EXPECT_EQ(vs_env_node(mips.data(), 1u, uvec2(0u, 1u)), 0.0f);
+  EXPECT_EQ(vs_env_node(mips.data(), 3u, uvec2(5u, 1u)), 0.0f);
+  vec4 c = vs_env_children(mips.data(), 2u, uvec2(1u, 3u));
+  EXPECT_EQ(c.y, vs_env_node(mips.data(), 3u, uvec2(3u, 6u)));
+  EXPECT_EQ(c.z, vs_env_node(mips.data(), 3u, uvec2(2u, 7u)));
 }
 
 TEST(SamplingWarp, EnvDescentMatchesLeaves)
 {
   std::vector<float> leaves = TestEnvLeaves();
   std::vector<float> mips = vstest::BuildEnvMips(leaves, kLevels);
-  vstest::ScopedEnvMips scope(mips);
-  ExpectDescentMatchesLeaves(leaves, 0u, uvec2(0u));
-  ExpectDescentMatchesLeaves(leaves, 2u, uvec2(3u, 0u)); // contains the zero level-3 node
-  ExpectDescentMatchesLeaves(leaves, 3u, uvec2(6u, 2u));
+  ExpectDescentMatchesLeaves(mips, leaves, 0u, uvec2(0u));
+  ExpectDescentMatchesLeaves(mips, leaves, 2u, uvec2(3u, 0u)); // contains the zero level-3 node
+  ExpectDescentMatchesLeaves(mips, leaves, 3u, uvec2(6u, 2u));
 }
 
 TEST(SamplingWarp, EnvLeafProbSumsToOneInsideTheStartNode)
 {
   std::vector<float> leaves = TestEnvLeaves();
   std::vector<float> mips = vstest::BuildEnvMips(leaves, kLevels);
-  vstest::ScopedEnvMips scope(mips);
   const uint n = 1u << kLevels;
   struct Start
   {
@@ -565,7 +555,7 @@ TEST(SamplingWarp, EnvLeafProbSumsToOneInsideTheStartNode)
     {
       for (uint x = 0; x < n; ++x)
       {
-        float p = vs_env_leaf_prob(s.level, s.node, kLevels, uvec2(x, y));
+        float p = vs_env_leaf_prob(mips.data(), s.level, s.node, kLevels, uvec2(x, y));
         ASSERT_TRUE(std::isfinite(p));
         if (uvec2(x, y) >> (kLevels - s.level) != s.node)
         {
@@ -582,13 +572,12 @@ TEST(SamplingWarp, EnvDescentIntoZeroSubtreeGivesProbZero)
 {
   std::vector<float> leaves = TestEnvLeaves();
   std::vector<float> mips = vstest::BuildEnvMips(leaves, kLevels);
-  vstest::ScopedEnvMips scope(mips);
   for (vec2 u : { vec2(0.0f), vec2(0.4f, 0.8f), vec2(VS_ONE_MINUS_EPSILON) })
   {
     uvec2 leaf;
     float prob;
     vec2 ur;
-    vs_env_descend(1u, uvec2(0u, 1u), kLevels, u, leaf, prob, ur);
+    vs_env_descend(mips.data(), 1u, uvec2(0u, 1u), kLevels, u, leaf, prob, ur);
     EXPECT_EQ(prob, 0.0f);
     EXPECT_EQ(leaf >> (kLevels - 1u), uvec2(0u, 1u));
     EXPECT_TRUE(std::isfinite(ur.x) && std::isfinite(ur.y));
@@ -599,15 +588,14 @@ TEST(SamplingWarp, EnvDescentFromALeafIsTheLeaf)
 {
   std::vector<float> leaves = TestEnvLeaves();
   std::vector<float> mips = vstest::BuildEnvMips(leaves, kLevels);
-  vstest::ScopedEnvMips scope(mips);
   uvec2 leaf;
   float prob;
   vec2 ur;
-  vs_env_descend(kLevels, uvec2(4u, 30u), kLevels, vec2(0.25f, 0.75f), leaf, prob, ur);
+  vs_env_descend(mips.data(), kLevels, uvec2(4u, 30u), kLevels, vec2(0.25f, 0.75f), leaf, prob, ur);
   EXPECT_EQ(leaf, uvec2(4u, 30u));
   EXPECT_EQ(prob, 1.0f);
   EXPECT_EQ(ur, vec2(0.25f, 0.75f));
-  EXPECT_EQ(vs_env_leaf_prob(kLevels, uvec2(4u, 30u), kLevels, uvec2(4u, 30u)), 1.0f);
+  EXPECT_EQ(vs_env_leaf_prob(mips.data(), kLevels, uvec2(4u, 30u), kLevels, uvec2(4u, 30u)), 1.0f);
 }
 
 // Leaves of 1e-30 and a tree whose only light is one 1e-30 leaf.
@@ -620,14 +608,13 @@ TEST(SamplingWarp, EnvTinyLeavesStayFinite)
   for (const std::vector<float>& leaves : { lone, tiny })
   {
     std::vector<float> mips = vstest::BuildEnvMips(leaves, kLevels);
-    vstest::ScopedEnvMips scope(mips);
     VsRng rng = vs_rng_init(uvec2(2u, 2u), 2u, 2u);
     for (int i = 0; i < 2000; ++i)
     {
       uvec2 leaf;
       float prob;
       vec2 ur;
-      vs_env_descend(0u, uvec2(0u), kLevels, vs_rng_vec2(rng), leaf, prob, ur);
+      vs_env_descend(mips.data(), 0u, uvec2(0u), kLevels, vs_rng_vec2(rng), leaf, prob, ur);
       ASSERT_GT(leaves[leaf.y * n + leaf.x], 0.0f);
       ASSERT_TRUE(std::isfinite(prob) && prob > 0.0f);
       ASSERT_TRUE(ur.x >= 0.0f && ur.x < 1.0f && ur.y >= 0.0f && ur.y < 1.0f);
