@@ -3,6 +3,7 @@
 // then the sweeps or the brute-force reference), the brute-force march and Download. The plane
 // sweeps themselves are in vsVisibilityGridSweeps.cxx.
 #include "vsVisibilityGrid.h"
+#include "sampling/bindings.h"
 #include "vsSerial.h"
 #include "vsBatch.h"
 #include "vsBuffer.h"
@@ -342,15 +343,21 @@ void VisibilityGrid::RunBruteForce(const DeviceVolume& volume, const TransferFun
   {
     using B = BindingType;
     this->Brute_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_visibility_bruteforce),
-      std::vector<B>{ B::StorageImage, B::UniformTexelBuffer, B::StorageImage, B::StorageBuffer, B::StorageImage,
-        B::StorageImage },
+      BindingTypes(shared::VS_BRUTE_BINDING_COUNT,
+        { { shared::VS_BRUTE_VOLUME, B::StorageImage }, { shared::VS_BRUTE_TF, B::UniformTexelBuffer },
+          { shared::VS_BRUTE_MAJORANT, B::StorageImage }, { shared::VS_BRUTE_GLOBALS, B::StorageBuffer },
+          { shared::VS_BRUTE_VISIBILITY, B::StorageImage }, { shared::VS_BRUTE_FACTOR_IMAGE, B::StorageImage } }),
       sizeof(SlicePush), extinctionFactor ? "visibility brute force (gradient opacity)" : "visibility brute force",
       { 0u, extinctionFactor });
     this->BruteFactor_ = extinctionFactor;
   }
   DescriptorSet set(*this->Brute_);
-  set.Bind(0, volume.Image()).BindTexels(1, tf.Lut(), vk::Format::eR32Sfloat).Bind(2, majorants.Image()).Bind(3, globals).Bind(4, *this->Image_);
-  set.Bind(5, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
+  set.Bind(shared::VS_BRUTE_VOLUME, volume.Image())
+    .BindTexels(shared::VS_BRUTE_TF, tf.Lut(), vk::Format::eR32Sfloat)
+    .Bind(shared::VS_BRUTE_MAJORANT, majorants.Image())
+    .Bind(shared::VS_BRUTE_GLOBALS, globals)
+    .Bind(shared::VS_BRUTE_VISIBILITY, *this->Image_);
+  set.Bind(shared::VS_BRUTE_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   const auto& c = this->Plan_.Cells;
   const uint32_t cells = c[0] * c[1] * c[2];
   const uint32_t maxGroups = this->Context_->Info().MaxComputeWorkGroupCount[0];

@@ -5,6 +5,7 @@
 // direction sources, the globals every pass reads and the brute-force reference are in
 // vsVisibilityGrid.cxx.
 #include "vsVisibilityGrid.h"
+#include "sampling/bindings.h"
 #include "vsBatch.h"
 #include "vsBuffer.h"
 #include "vsContext.h"
@@ -105,8 +106,11 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
   {
     using B = BindingType;
     this->March_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_march),
-      std::vector<B>{ B::StorageImage, B::UniformTexelBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
-        B::StorageBuffer, B::StorageBuffer, B::StorageImage },
+      BindingTypes(shared::VS_SWEEP_BINDING_COUNT,
+        { { shared::VS_SWEEP_VOLUME, B::StorageImage }, { shared::VS_SWEEP_TF, B::UniformTexelBuffer },
+          { shared::VS_SWEEP_MAJORANT, B::StorageImage }, { shared::VS_SWEEP_GLOBALS, B::StorageBuffer },
+          { shared::VS_SWEEP_DIRECTIONS, B::StorageBuffer }, { shared::VS_SWEEP_STATE, B::StorageBuffer },
+          { shared::VS_SWEEP_STACK, B::StorageBuffer }, { shared::VS_SWEEP_FACTOR_IMAGE, B::StorageImage } }),
       sizeof(ChunkPush), extinctionFactor ? "sweep march (gradient opacity)" : "sweep march", { 0u, extinctionFactor });
     this->MarchFactor_ = extinctionFactor;
   }
@@ -135,10 +139,15 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
   {
     using B = BindingType;
     this->Filter_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_filter),
-      std::vector<B>{ B::StorageBuffer, B::StorageBuffer, B::UniformTexelBuffer, B::StorageBuffer }, sizeof(ChunkPush),
+      BindingTypes(shared::VS_FILTER_BINDING_COUNT,
+        { { shared::VS_FILTER_GLOBALS, B::StorageBuffer }, { shared::VS_FILTER_DIRECTIONS, B::StorageBuffer },
+          { shared::VS_FILTER_STACK, B::UniformTexelBuffer }, { shared::VS_FILTER_FILTERED, B::StorageBuffer } }),
+      sizeof(ChunkPush),
       "sweep filter (" + std::to_string(tapsA) + " taps)", { tapsA });
     // The projection stores into an image of known format (faster on lavapipe than format-less stores).
-    const std::vector<B> bindings{ B::StorageBuffer, B::StorageBuffer, B::UniformTexelBuffer, B::StorageImage };
+    const std::vector<B> bindings = BindingTypes(shared::VS_PROJECT_BINDING_COUNT,
+      { { shared::VS_PROJECT_GLOBALS, B::StorageBuffer }, { shared::VS_PROJECT_DIRECTIONS, B::StorageBuffer },
+        { shared::VS_PROJECT_FILTERED, B::UniformTexelBuffer }, { shared::VS_PROJECT_VISIBILITY, B::StorageImage } });
     this->Project_ = FormatPipeline(this->Context_, this->Parameters_.StorageFormat,
       VS_SPIRV_PER_FORMAT(vs_spirv_sweep_project), bindings, sizeof(ChunkPush), "sweep project",
       ", " + std::to_string(tapsB) + " taps", { tapsB });
@@ -148,8 +157,11 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
   {
     using B = BindingType;
     this->MarchPooled_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_march_pooled),
-      std::vector<B>{ B::StorageImage, B::UniformTexelBuffer, B::StorageImage, B::StorageBuffer, B::StorageBuffer,
-        B::StorageBuffer, B::StorageBuffer },
+      BindingTypes(shared::VS_SWEEP_POOLED_BINDING_COUNT,
+        { { shared::VS_SWEEP_VOLUME, B::StorageImage }, { shared::VS_SWEEP_TF, B::UniformTexelBuffer },
+          { shared::VS_SWEEP_MAJORANT, B::StorageImage }, { shared::VS_SWEEP_GLOBALS, B::StorageBuffer },
+          { shared::VS_SWEEP_DIRECTIONS, B::StorageBuffer }, { shared::VS_SWEEP_STATE, B::StorageBuffer },
+          { shared::VS_SWEEP_STACK, B::StorageBuffer } }),
       sizeof(ChunkPush),
       nearest ? "sweep march (pooled, nearest)" : "sweep march (pooled)", { nearest });
     this->MarchPooledNearest_ = nearest;
@@ -211,18 +223,29 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
   DescriptorSet march(marchPipeline);
   if (pooled)
   {
-    march.Bind(0, this->Pool_->Pooled()).Bind(2, this->Pool_->Occupancy());
+    march.Bind(shared::VS_SWEEP_VOLUME, this->Pool_->Pooled()).Bind(shared::VS_SWEEP_MAJORANT, this->Pool_->Occupancy());
   }
   else
   {
-    march.Bind(0, volume.Image()).Bind(2, majorants.Image());
-    march.Bind(7, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
+    march.Bind(shared::VS_SWEEP_VOLUME, volume.Image()).Bind(shared::VS_SWEEP_MAJORANT, majorants.Image());
+    // unread without a factor
+    march.Bind(shared::VS_SWEEP_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : volume.Image());
   }
-  march.BindTexels(1, tf.Lut(), vk::Format::eR32Sfloat).Bind(3, globals).Bind(4, dirs).Bind(5, state).Bind(6, stack);
+  march.BindTexels(shared::VS_SWEEP_TF, tf.Lut(), vk::Format::eR32Sfloat)
+    .Bind(shared::VS_SWEEP_GLOBALS, globals)
+    .Bind(shared::VS_SWEEP_DIRECTIONS, dirs)
+    .Bind(shared::VS_SWEEP_STATE, state)
+    .Bind(shared::VS_SWEEP_STACK, stack);
   DescriptorSet project(*this->Project_);
-  project.Bind(0, globals).Bind(1, dirs).BindTexels(2, filtered, vk::Format::eR32Sfloat).Bind(3, *this->Image_);
+  project.Bind(shared::VS_PROJECT_GLOBALS, globals)
+    .Bind(shared::VS_PROJECT_DIRECTIONS, dirs)
+    .BindTexels(shared::VS_PROJECT_FILTERED, filtered, vk::Format::eR32Sfloat)
+    .Bind(shared::VS_PROJECT_VISIBILITY, *this->Image_);
   DescriptorSet filter(*this->Filter_);
-  filter.Bind(0, globals).Bind(1, dirs).BindTexels(2, stack, vk::Format::eR32Sfloat).Bind(3, filtered);
+  filter.Bind(shared::VS_FILTER_GLOBALS, globals)
+    .Bind(shared::VS_FILTER_DIRECTIONS, dirs)
+    .BindTexels(shared::VS_FILTER_STACK, stack, vk::Format::eR32Sfloat)
+    .Bind(shared::VS_FILTER_FILTERED, filtered);
 
   for (size_t bi = 0; bi < plan.Batches.size(); ++bi)
   {
