@@ -8,6 +8,7 @@
 #include "vsCombinedAccumulators.h"
 #include "vsRadianceImage.h"
 #include "vsMapperEnvironment.h"
+#include "vsGridSchedule.h"
 #include "vsContext.h"
 #include "vsDeviceEnvironment.h"
 #include "vsDeviceVolume.h"
@@ -814,45 +815,8 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   (void)vol;
 }
 
-namespace
-{
-vs::VisibilityGridParameters GridParameters(int directionResolution, double voxelsPerCell, int kernelResolution,
-  bool filtering, double filterAngleFraction)
-{
-  vs::VisibilityGridParameters gp;
-  gp.DirectionResolution = uint32_t(std::max(0, directionResolution));
-  gp.VoxelsPerCell = voxelsPerCell;
-  gp.KernelResolution = uint32_t(kernelResolution);
-  gp.AutoKernelRaysPerCell = vs::RendererKernelRaysPerCell; // the renderer only samples by the grid
-  gp.Filtering = filtering;
-  gp.FilterAngleFraction = filterAngleFraction;
-  return gp;
-}
-
-}
-
-// The directions this render needs swept: all of them, except that Combined and TwoStep never
-// read the visibility of a direction whose environment importance at the grid's resolution is 0
-// (their product weight is visibility x importance), so with SkipUnlitDirections those are left
-// out (the README's skip rules: directions without environment radiance never need sweeping).
-std::vector<uint8_t> vtkVisibilitySweepVolumeMapper::RequiredDirections(int side)
-{
-  Internals& I = *this->Impl;
-  std::vector<uint8_t> required(size_t(side) * side, 1);
-  if (this->SkipUnlitDirections && (this->SamplingStrategy == Combined || this->SamplingStrategy == TwoStep))
-  {
-    const std::vector<float> importance = I.Environment.Device().ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
-    for (size_t n = 0; n < required.size() && n < importance.size(); ++n)
-    {
-      required[n] = importance[n] > 0.0f;
-    }
-  }
-  return required;
-}
-
-// The grid's update policy lives in vs::VisibilityGridUpdater; the mapper says what the frame needs:
-// the grid's parameters and placement, the directions read (RequiredDirections), the environment's
-// importance (the fill-in order), the data version (lazy updates) and the sweep budget.
+// The grid's update policy lives in vs::VisibilityGridUpdater; vs::GridSchedule says what the frame
+// needs of it (the request).
 void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool autoStrategy)
 {
   Internals& I = *this->Impl;
@@ -862,36 +826,9 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
     return;
   }
   vs::GridUpdateRequest& r = I.LastGridRequest;
-  r.Parameters = GridParameters(this->DirectionResolution,
-    this->VoxelsPerCell > 0.0 ? std::max(1.0, this->VoxelsPerCell) : vs::SweepPlan::AutomaticVoxelsPerCell(I.GridGeometry),
-    this->KernelResolution, this->Filtering, this->FilterAngleFraction);
-  r.Parameters.NearestInterpolation = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
-  r.Parameters.ExtinctionPooling = uint32_t(this->ExtinctionPooling);
-  r.Geometry = I.GridGeometry;
-  r.WorldPlanes = vs::FrameGeometry::WorldPlanes(this->ClippingPlanes, I.GridGeometry);
-  const int side = int(r.Parameters.DirectionResolution);
-  if (this->LightWeightedDirections && I.Environment.HasLightDirections(side))
-  {
-    r.Parameters.Directions = I.Environment.LightDirections(this->EnvironmentUploadCount, side);
-  }
-  r.Required = this->RequiredDirections(side);
+  vs::GridSchedule::FillRequest(this, r, I.GridGeometry, I.Environment, *I.Scene, I.GridNeedsFull, I.Selector,
+    I.LastRenderSeconds, autoStrategy);
   this->UnlitDirections = int(std::count(r.Required.begin(), r.Required.end(), uint8_t(0)));
-  r.Importance = I.Environment.Device().ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
-  r.DataVersion = uint64_t(I.Scene->Uploads());
-  r.FullUpdate = I.GridNeedsFull;
-  r.Schedule.Scheme = vs::UpdateScheme(this->UpdateScheme);
-  r.Schedule.DirectionsPerFrame = uint32_t(this->DirectionsPerFrame);
-  r.Schedule.StaticInterval = uint32_t(this->StaticInterval);
-  r.Schedule.Seed = uint32_t(this->Seed);
-  r.Progressive = this->ProgressiveVisibility;
-  // Auto invests in the grid in proportion to what TwoStep has shown it gains (StrategySelector::SweepFraction).
-  r.BudgetSeconds = (autoStrategy
-      ? I.Selector.SweepFraction(std::min(this->SweepFrameFraction, this->AutoProbeFraction), this->SweepFrameFraction)
-      : this->SweepFrameFraction) * I.LastRenderSeconds;
-  // Auto stops filling in while TwoStep, measured with half of the light's directions swept, loses
-  // to Environment sampling at equal time; lazy updates and invalidations still happen.
-  r.FillIn = !autoStrategy || I.Selector.GridWorthSweeping();
-  r.FillUnswept = this->FillUnsweptDirections;
   if (!I.Grid)
   {
     I.Grid = std::make_unique<vs::VisibilityGridUpdater>(I.Context);

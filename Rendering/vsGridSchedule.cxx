@@ -1,0 +1,89 @@
+// vsGridSchedule.cxx — the visibility grid's request for a frame (see vsGridSchedule.h).
+#include "vsGridSchedule.h"
+
+#include "vtkVisibilitySweepVolumeMapper.h"
+
+#include "vsFrameGeometry.h"
+#include "vsMapperEnvironment.h"
+#include "vsStrategySelector.h"
+#include "vsSweepPlan.h"
+#include "vsVolumeScene.h"
+#include "sampling/interpolation.h"
+#include "sampling/update_order.h"
+
+#include <algorithm>
+
+namespace vs
+{
+VisibilityGridParameters GridSchedule::Parameters(int directionResolution, double voxelsPerCell, int kernelResolution,
+  bool filtering, double filterAngleFraction)
+{
+  vs::VisibilityGridParameters gp;
+  gp.DirectionResolution = uint32_t(std::max(0, directionResolution));
+  gp.VoxelsPerCell = voxelsPerCell;
+  gp.KernelResolution = uint32_t(kernelResolution);
+  gp.AutoKernelRaysPerCell = vs::RendererKernelRaysPerCell; // the renderer only samples by the grid
+  gp.Filtering = filtering;
+  gp.FilterAngleFraction = filterAngleFraction;
+  return gp;
+}
+
+// The directions this render needs swept: all of them, except that Combined and TwoStep never
+// read the visibility of a direction whose environment importance at the grid's resolution is 0
+// (their product weight is visibility x importance), so with SkipUnlitDirections those are left
+// out (the README's skip rules: directions without environment radiance never need sweeping).
+std::vector<uint8_t> GridSchedule::RequiredDirections(vtkVisibilitySweepVolumeMapper* mapper,
+  MapperEnvironment& environment, int side)
+{
+  std::vector<uint8_t> required(size_t(side) * side, 1);
+  if (mapper->GetSkipUnlitDirections() &&
+    (mapper->GetSamplingStrategy() == vtkVisibilitySweepVolumeMapper::Combined ||
+      mapper->GetSamplingStrategy() == vtkVisibilitySweepVolumeMapper::TwoStep))
+  {
+    const std::vector<float> importance = environment.Device().ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
+    for (size_t n = 0; n < required.size() && n < importance.size(); ++n)
+    {
+      required[n] = importance[n] > 0.0f;
+    }
+  }
+  return required;
+}
+
+// The grid's update policy lives in vs::VisibilityGridUpdater; the mapper says what the frame needs:
+// the grid's parameters and placement, the directions read (RequiredDirections), the environment's
+// importance (the fill-in order), the data version (lazy updates) and the sweep budget.
+void GridSchedule::FillRequest(vtkVisibilitySweepVolumeMapper* mapper, GridUpdateRequest& r,
+  const VolumeGeometry& geometry, MapperEnvironment& environment, VolumeScene& scene, bool fullUpdate,
+  StrategySelector& selector, double lastRenderSeconds, bool autoStrategy)
+{
+  r.Parameters = Parameters(mapper->GetDirectionResolution(),
+    mapper->GetVoxelsPerCell() > 0.0 ? std::max(1.0, mapper->GetVoxelsPerCell()) : vs::SweepPlan::AutomaticVoxelsPerCell(geometry),
+    mapper->GetKernelResolution(), mapper->GetFiltering(), mapper->GetFilterAngleFraction());
+  r.Parameters.NearestInterpolation = scene.Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
+  r.Parameters.ExtinctionPooling = uint32_t(mapper->GetExtinctionPooling());
+  r.Geometry = geometry;
+  r.WorldPlanes = vs::FrameGeometry::WorldPlanes(mapper->GetClippingPlanes(), geometry);
+  const int side = int(r.Parameters.DirectionResolution);
+  if (mapper->GetLightWeightedDirections() && environment.HasLightDirections(side))
+  {
+    r.Parameters.Directions = environment.LightDirections(mapper->GetEnvironmentUploadCount(), side);
+  }
+  r.Required = RequiredDirections(mapper, environment, side);
+  r.Importance = environment.Device().ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
+  r.DataVersion = uint64_t(scene.Uploads());
+  r.FullUpdate = fullUpdate;
+  r.Schedule.Scheme = vs::UpdateScheme(mapper->GetUpdateScheme());
+  r.Schedule.DirectionsPerFrame = uint32_t(mapper->GetDirectionsPerFrame());
+  r.Schedule.StaticInterval = uint32_t(mapper->GetStaticInterval());
+  r.Schedule.Seed = uint32_t(mapper->GetSeed());
+  r.Progressive = mapper->GetProgressiveVisibility();
+  // Auto invests in the grid in proportion to what TwoStep has shown it gains (StrategySelector::SweepFraction).
+  r.BudgetSeconds = (autoStrategy
+      ? selector.SweepFraction(std::min(mapper->GetSweepFrameFraction(), mapper->GetAutoProbeFraction()), mapper->GetSweepFrameFraction())
+      : mapper->GetSweepFrameFraction()) * lastRenderSeconds;
+  // Auto stops filling in while TwoStep, measured with half of the light's directions swept, loses
+  // to Environment sampling at equal time; lazy updates and invalidations still happen.
+  r.FillIn = !autoStrategy || selector.GridWorthSweeping();
+  r.FillUnswept = mapper->GetFillUnsweptDirections();
+}
+}
