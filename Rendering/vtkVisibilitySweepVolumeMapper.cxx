@@ -9,13 +9,13 @@
 #include "vsRadianceImage.h"
 #include "vsMapperEnvironment.h"
 #include "vsGridSchedule.h"
+#include "vsEmissionAbsorptionFrame.h"
 #include "vsContext.h"
 #include "vsDeviceEnvironment.h"
 #include "vsDeviceVolume.h"
 #include "vsEmissionAbsorptionPass.h"
 #include "vsEnvironmentBackground.h"
 #include "vsEnvironmentMap.h"
-#include "vsLightDirections.h"
 #include "vsMajorantGrid.h"
 #include "vsDirectionTable.h"
 #include "vsMonteCarloPass.h"
@@ -26,14 +26,10 @@
 #include "vsVoxelPicker.h"
 #include "vsRenderTargetLimits.h"
 #include "vsStrategySelector.h"
-#include "vsSweepPlan.h"
 #include "vsVisibilityGrid.h"
 #include "vsVisibilityGridUpdater.h"
 #include "sampling/interpolation.h"
-#include "sampling/octahedral.h"
-#include "sampling/update_order.h"
 #include "vsVisibilityImage.h"
-#include "vsDisplayTransform.h"
 #include "vsError.h"
 #include "vsFloatRange.h"
 #include "vsGradientOpacity.h"
@@ -43,52 +39,26 @@
 #include "vsWindowCompositor.h"
 
 #include "vtkAlgorithmOutput.h"
-#include "vtkCamera.h"
 #include "vtkCommand.h"
-#include "vtkEnvironmentMapAlgorithm.h"
-#include "vtkDoubleArray.h"
-#include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkInformation.h"
-#include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkPlane.h"
-#include "vtkPlaneCollection.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 #include "vtkWeakPointer.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <future>
-#include <sstream>
 
 vtkStandardNewMacro(vtkVisibilitySweepVolumeMapper);
 
-namespace
-{
-static_assert(vs::shared::VS_BLEND_MAXIMUM == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND &&
-    vs::shared::VS_BLEND_MINIMUM == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND &&
-    vs::shared::VS_BLEND_AVERAGE == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND &&
-    vs::shared::VS_BLEND_ADDITIVE == vtkVolumeMapper::ADDITIVE_BLEND,
-  "the shaders' blend modes are VTK's values");
-
-// The blend modes rendered as projections through the emission-absorption path.
-bool IsProjection(int blendMode)
-{
-  return blendMode == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND || blendMode == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND ||
-    blendMode == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND || blendMode == vtkVolumeMapper::ADDITIVE_BLEND;
-}
-}
+using vs::EmissionAbsorptionFrame;
 
 vtkVisibilitySweepVolumeMapper::vtkVisibilitySweepVolumeMapper()
   : FilterAngleFraction(vs::VisibilityGridParameters().FilterAngleFraction)
@@ -219,7 +189,7 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
   }
   // MIP, MinIP, average and additive are projections, not light transport: the emission-absorption
   // path renders them whatever the RenderMode.
-  const bool projection = IsProjection(this->BlendMode);
+  const bool projection = EmissionAbsorptionFrame::IsProjection(this->BlendMode);
   for (const auto& w : I.Checks.NewWarnings(vs::PropertyChecks::Ignored(
          this, vol ? vol->GetProperty() : nullptr, ren, this->RenderMode == MonteCarlo && !projection, projection)))
   {
@@ -314,26 +284,13 @@ void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume
   if (!rgba.empty() && vs::SelectionMask::AsksForIds(selector))
   {
     // The voxel where each covered pixel's ray crosses the selection opacity, marched on the host.
-    vs::VoxelPicker::Volume v;
-    v.Geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
-    int cellFlag = 0;
-    v.Scalars = vtkAbstractMapper::GetScalars(vtkImageData::SafeDownCast(this->GetInput()), this->ScalarMode,
-      this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
-    vtkVolumeProperty* property = vol ? vol->GetProperty() : nullptr;
-    v.Opacity = property ? property->GetScalarOpacity(0) : nullptr;
-    v.UnitDistance = property ? property->GetScalarOpacityUnitDistance(0) : 1.0;
-    v.DensityScale = this->DensityScale;
-    v.Nearest = I.Scene->Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
-    v.WorldPlanes = vs::FrameGeometry::WorldPlanes(this->ClippingPlanes, v.Geometry);
-    v.Factor = I.Scene->HasGradientOpacity() ? &I.Scene->HostFactor() : nullptr;
+    const vs::VoxelPicker::Volume v = EmissionAbsorptionFrame::PickerVolume(this, vol, *I.Scene);
     std::vector<bool> covered(rgba.size() / 4);
     for (size_t i = 0; i < covered.size(); ++i)
     {
       covered[i] = rgba[4 * i + 3] > vs::SelectionMask::Threshold;
     }
-    const double aspect = vp.Height > 0 ? double(vp.Width) / double(vp.Height) : 1.0;
-    const glm::dmat4 invViewProj =
-      glm::inverse(vs::FrameGeometry::ToGlm(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1)));
+    const glm::dmat4 invViewProj = EmissionAbsorptionFrame::PickerInvViewProj(ren, vp);
     const std::vector<vtkIdType> ids = vs::VoxelPicker::Ids(v, invViewProj, vp.Width, vp.Height,
       vs::WindowCompositor::ReadDepth(ren, vp), covered, vs::SelectionMask::Threshold,
       vs::SelectionMask::AsksForCellIds(selector));
@@ -365,48 +322,9 @@ std::vector<float> vtkVisibilitySweepVolumeMapper::EmissionAbsorptionImage(vtkRe
   }
   vs::FrameGeometry::CheckViewport(*I.Context, vp);
   std::vector<float> depth = vs::WindowCompositor::ReadDepth(ren, vp);
-  vs::shared::VsFrameParams p{};
-  p.invViewProj = view.InvViewProj;
-  p.worldToIndex = glm::mat4(geometry.WorldToIndex);
-  p.indexToWorld = glm::mat4(geometry.IndexToWorld);
-  p.boxMin = glm::vec4(geometry.BoxMin, 0.0f);
-  p.boxMax = glm::vec4(geometry.BoxMax, 0.0f);
-  p.dims = glm::vec4(geometry.Dims[0], geometry.Dims[1], geometry.Dims[2], 0.0f);
-  auto tf = I.Scene->TF().Params();
-  p.tf = glm::vec4(tf[0], tf[1], tf[2], tf[3]);
-  p.viewport = glm::uvec4(vp.Width, vp.Height, I.Frame++, static_cast<uint32_t>(this->Seed));
-  double step = this->SampleDistance > 0.0 ? this->SampleDistance : 0.5 * geometry.MinSpacing;
-  p.march = glm::vec4(float(step), 0.995f, 0.0f, 0.0f);
-  auto planes = vs::FrameGeometry::WorldPlanes(this->ClippingPlanes, geometry);
-  for (size_t i = 0; i < planes.size(); ++i)
-  {
-    p.clipPlanes[i] = glm::vec4(planes[i]);
-  }
-  p.counts.x = uint32_t(planes.size());
-  p.counts.y = I.Scene->Interpolation();
-  p.cropLo = glm::vec4(geometry.CropLo, 0.0f);
-  p.cropHi = glm::vec4(geometry.CropHi, 0.0f);
-  p.crop = glm::uvec4(geometry.CropFlags, 0u, 0u, 0u);
-  if (IsProjection(this->BlendMode))
-  {
-    p.counts.z = uint32_t(this->BlendMode); // VS_BLEND_* are VTK's values
-    const double lo = std::clamp(this->AverageIPScalarRange[0], -3.0e38, 3.0e38);
-    const double hi = std::clamp(this->AverageIPScalarRange[1], -3.0e38, 3.0e38);
-    const double unit = vol && vol->GetProperty() ? vol->GetProperty()->GetScalarOpacityUnitDistance(0) : 1.0;
-    p.projection = glm::vec4(float(lo), float(hi), float(std::max(unit, 1e-30)), 0.0f);
-  }
-  // The property's shading (Phong with VTK's headlight, two-sided) in the composite; the
-  // projections are not shaded, as in vtkGPUVolumeRayCastMapper.
-  vtkVolumeProperty* property = vol ? vol->GetProperty() : nullptr;
-  const bool shade = property && property->GetShade(0) && !IsProjection(this->BlendMode);
-  if (shade)
-  {
-    p.shading = glm::vec4(float(property->GetAmbient(0)), float(property->GetDiffuse(0)),
-      float(property->GetSpecular(0)), float(property->GetSpecularPower(0)));
-    double dop[3];
-    ren->GetActiveCamera()->GetDirectionOfProjection(dop);
-    p.light = glm::vec4(float(-dop[0]), float(-dop[1]), float(-dop[2]), 1.0f);
-  }
+  bool shade = false;
+  const vs::shared::VsFrameParams p =
+    EmissionAbsorptionFrame::Params(this, ren, vol, geometry, view, *I.Scene, I.Frame++, shade);
   if (!I.EA)
   {
     I.EA = std::make_unique<vs::EmissionAbsorptionPass>(I.Context);
@@ -937,7 +855,7 @@ float vtkVisibilitySweepVolumeMapper::OpaqueAlpha(bool autoStrategy)
 bool vtkVisibilitySweepVolumeMapper::GetShowsEnvironmentAsBackground()
 {
   return this->EnvironmentVisible && this->EnvironmentAsBackground && this->RenderMode == MonteCarlo &&
-    !IsProjection(this->BlendMode);
+    !EmissionAbsorptionFrame::IsProjection(this->BlendMode);
 }
 
 vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)

@@ -1,0 +1,106 @@
+// vsEmissionAbsorptionFrame.cxx — the emission-absorption pass's and the voxel picker's inputs (see
+// vsEmissionAbsorptionFrame.h).
+#include "vsEmissionAbsorptionFrame.h"
+
+#include "vtkVisibilitySweepVolumeMapper.h"
+
+#include "vsTransferFunctionTable.h"
+#include "vsVolumeScene.h"
+#include "sampling/interpolation.h"
+
+#include "vtkCamera.h"
+#include "vtkImageData.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+
+namespace vs
+{
+static_assert(vs::shared::VS_BLEND_MAXIMUM == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND &&
+    vs::shared::VS_BLEND_MINIMUM == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND &&
+    vs::shared::VS_BLEND_AVERAGE == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND &&
+    vs::shared::VS_BLEND_ADDITIVE == vtkVolumeMapper::ADDITIVE_BLEND,
+  "the shaders' blend modes are VTK's values");
+
+bool EmissionAbsorptionFrame::IsProjection(int blendMode)
+{
+  return blendMode == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND || blendMode == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND ||
+    blendMode == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND || blendMode == vtkVolumeMapper::ADDITIVE_BLEND;
+}
+
+shared::VsFrameParams EmissionAbsorptionFrame::Params(vtkVisibilitySweepVolumeMapper* mapper, vtkRenderer* ren,
+  vtkVolume* vol, const VolumeGeometry& geometry, const CameraView& view, const VolumeScene& scene, uint32_t frame,
+  bool& shade)
+{
+  const Viewport& vp = view.Port;
+  vs::shared::VsFrameParams p{};
+  p.invViewProj = view.InvViewProj;
+  p.worldToIndex = glm::mat4(geometry.WorldToIndex);
+  p.indexToWorld = glm::mat4(geometry.IndexToWorld);
+  p.boxMin = glm::vec4(geometry.BoxMin, 0.0f);
+  p.boxMax = glm::vec4(geometry.BoxMax, 0.0f);
+  p.dims = glm::vec4(geometry.Dims[0], geometry.Dims[1], geometry.Dims[2], 0.0f);
+  auto tf = scene.TF().Params();
+  p.tf = glm::vec4(tf[0], tf[1], tf[2], tf[3]);
+  p.viewport = glm::uvec4(vp.Width, vp.Height, frame, static_cast<uint32_t>(mapper->GetSeed()));
+  double step = mapper->GetSampleDistance() > 0.0 ? mapper->GetSampleDistance() : 0.5 * geometry.MinSpacing;
+  p.march = glm::vec4(float(step), 0.995f, 0.0f, 0.0f);
+  auto planes = vs::FrameGeometry::WorldPlanes(mapper->GetClippingPlanes(), geometry);
+  for (size_t i = 0; i < planes.size(); ++i)
+  {
+    p.clipPlanes[i] = glm::vec4(planes[i]);
+  }
+  p.counts.x = uint32_t(planes.size());
+  p.counts.y = scene.Interpolation();
+  p.cropLo = glm::vec4(geometry.CropLo, 0.0f);
+  p.cropHi = glm::vec4(geometry.CropHi, 0.0f);
+  p.crop = glm::uvec4(geometry.CropFlags, 0u, 0u, 0u);
+  if (IsProjection(mapper->GetBlendMode()))
+  {
+    p.counts.z = uint32_t(mapper->GetBlendMode()); // VS_BLEND_* are VTK's values
+    const double lo = std::clamp(mapper->GetAverageIPScalarRange()[0], -3.0e38, 3.0e38);
+    const double hi = std::clamp(mapper->GetAverageIPScalarRange()[1], -3.0e38, 3.0e38);
+    const double unit = vol && vol->GetProperty() ? vol->GetProperty()->GetScalarOpacityUnitDistance(0) : 1.0;
+    p.projection = glm::vec4(float(lo), float(hi), float(std::max(unit, 1e-30)), 0.0f);
+  }
+  // The property's shading (Phong with VTK's headlight, two-sided) in the composite; the
+  // projections are not shaded, as in vtkGPUVolumeRayCastMapper.
+  vtkVolumeProperty* property = vol ? vol->GetProperty() : nullptr;
+  shade = property && property->GetShade(0) && !IsProjection(mapper->GetBlendMode());
+  if (shade)
+  {
+    p.shading = glm::vec4(float(property->GetAmbient(0)), float(property->GetDiffuse(0)),
+      float(property->GetSpecular(0)), float(property->GetSpecularPower(0)));
+    double dop[3];
+    ren->GetActiveCamera()->GetDirectionOfProjection(dop);
+    p.light = glm::vec4(float(-dop[0]), float(-dop[1]), float(-dop[2]), 1.0f);
+  }
+  return p;
+}
+
+VoxelPicker::Volume EmissionAbsorptionFrame::PickerVolume(vtkVisibilitySweepVolumeMapper* mapper, vtkVolume* vol,
+  const VolumeScene& scene)
+{
+  vs::VoxelPicker::Volume v;
+  v.Geometry = vs::FrameGeometry::CroppedGeometry(mapper, scene.Geometry());
+  int cellFlag = 0;
+  v.Scalars = vtkAbstractMapper::GetScalars(vtkImageData::SafeDownCast(mapper->GetInput()), mapper->GetScalarMode(),
+    mapper->GetArrayAccessMode(), mapper->GetArrayId(), mapper->GetArrayName(), cellFlag);
+  vtkVolumeProperty* property = vol ? vol->GetProperty() : nullptr;
+  v.Opacity = property ? property->GetScalarOpacity(0) : nullptr;
+  v.UnitDistance = property ? property->GetScalarOpacityUnitDistance(0) : 1.0;
+  v.DensityScale = mapper->GetDensityScale();
+  v.Nearest = scene.Interpolation() == vs::shared::VS_INTERPOLATION_NEAREST;
+  v.WorldPlanes = vs::FrameGeometry::WorldPlanes(mapper->GetClippingPlanes(), v.Geometry);
+  v.Factor = scene.HasGradientOpacity() ? &scene.HostFactor() : nullptr;
+  return v;
+}
+
+glm::dmat4 EmissionAbsorptionFrame::PickerInvViewProj(vtkRenderer* ren, const Viewport& vp)
+{
+  const double aspect = vp.Height > 0 ? double(vp.Width) / double(vp.Height) : 1.0;
+  return glm::inverse(vs::FrameGeometry::ToGlm(ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1)));
+}
+}
