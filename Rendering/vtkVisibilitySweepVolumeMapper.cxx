@@ -10,6 +10,7 @@
 #include "vsMapperEnvironment.h"
 #include "vsGridSchedule.h"
 #include "vsEmissionAbsorptionFrame.h"
+#include "vsMonteCarloFrame.h"
 #include "vsContext.h"
 #include "vsDeviceEnvironment.h"
 #include "vsDeviceVolume.h"
@@ -33,7 +34,6 @@
 #include "vsError.h"
 #include "vsFloatRange.h"
 #include "vsGradientOpacity.h"
-#include "vsTransferFunctionTable.h"
 #include "vsVolumeInput.h"
 #include "vsVolumeScene.h"
 #include "vsWindowCompositor.h"
@@ -438,20 +438,10 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   // keeps passes that re-render the window (vtkWindowToImageFilter) from restarting accumulation.
   std::vector<float> fullDepth = ren->VisibleActorCount() > 0 ? vs::WindowCompositor::ReadDepth(ren, vp)
                                                              : std::vector<float>(size_t(vp.Width) * vp.Height, 1.0f);
-  std::vector<float> depth(size_t(w) * h);
-  for (uint32_t y = 0; y < h; ++y)
-    for (uint32_t x = 0; x < w; ++x)
-      depth[size_t(y) * w + x] = fullDepth[size_t(std::min<uint32_t>(y * sub, vp.Height - 1)) * vp.Width +
-        std::min<uint32_t>(x * sub, vp.Width - 1)];
+  const std::vector<float> depth = vs::MonteCarloFrame::SubsampledDepth(fullDepth, vp, w, h, sub);
 
   vs::shared::VsRenderParams p{};
-  p.invViewProj = view.InvViewProj;
-  p.worldToIndex = glm::mat4(geometry.WorldToIndex);
-  p.boxMin = glm::vec4(geometry.BoxMin, 0.0f);
-  p.boxMax = glm::vec4(geometry.BoxMax, 0.0f);
-  p.dims = glm::vec4(geometry.Dims[0], geometry.Dims[1], geometry.Dims[2], 0.0f);
-  auto tf = I.Scene->TF().Params();
-  p.tf = glm::vec4(tf[0], tf[1], tf[2], tf[3]);
+  vs::MonteCarloFrame::SetPlacement(p, view, geometry, *I.Scene);
   // The visible environment. As the renderer's background (EnvironmentAsBackground, the default):
   // the kernel's radiance includes the environment seen through the volume (GetRadiance() is the
   // same as with the opaque image) and its alpha is the volume's coverage, with which the image is
@@ -531,18 +521,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   p.cropLo = glm::vec4(geometry.CropLo, 0.0f);
   p.cropHi = glm::vec4(geometry.CropHi, 0.0f);
   p.crop = glm::uvec4(geometry.CropFlags, uint32_t(this->ControlExtinction), uint32_t(this->Sampler), 0u);
-  const glm::dmat3 m(geometry.IndexToWorld);
-  const glm::dvec3 o(geometry.IndexToWorld[3]);
-  for (size_t i = 0; i < planes.size(); ++i)
-  {
-    glm::dvec3 n(planes[i]);
-    p.clipPlanes[i] = glm::vec4(glm::vec3(glm::transpose(m) * n), float(glm::dot(n, o) + planes[i].w));
-    const glm::vec4& c = p.clipPlanes[i];
-    if (!(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w)))
-    {
-      throw vs::InputError("clipping plane " + std::to_string(i) + " does not fit in float in the volume's index space");
-    }
-  }
+  vs::MonteCarloFrame::SetIndexPlanes(p, planes, geometry);
 
   I.Prewarm.Join();
   if (autoStrategy && grid && !I.GridPrewarm.Started() && I.Grid->SweptDirections() > 0)
