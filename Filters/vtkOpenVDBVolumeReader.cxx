@@ -12,6 +12,8 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include "vsOpenVDBFileCheck.h"
+#include "vsOpenVDBGeometry.h"
+#include "vsOpenVDBText.h"
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
@@ -44,119 +46,11 @@ void InitializeOpenVDB()
   (void)initialized;
 }
 
-/* Text for a message: valid UTF-8 is kept, other bytes and control characters become '?'
- * (names read from a corrupt file can be anything; Python observers decode messages). */
-std::string Printable(const std::string& s)
-{
-  std::string out;
-  out.reserve(s.size());
-  for (std::size_t i = 0; i < s.size();)
-  {
-    const unsigned char c = static_cast<unsigned char>(s[i]);
-    std::size_t n = c < 0x80 ? 1
-      : (c >> 5) == 0x6      ? 2
-      : (c >> 4) == 0xe      ? 3
-      : (c >> 3) == 0x1e     ? 4
-                             : 0;
-    bool valid = n > 0 && i + n <= s.size() && (n > 1 || c >= 0x20 || c == '\t' || c == '\n');
-    for (std::size_t k = 1; valid && k < n; ++k)
-    {
-      valid = (static_cast<unsigned char>(s[i + k]) >> 6) == 0x2;
-    }
-    if (valid && c != 0x7f)
-    {
-      out.append(s, i, n);
-      i += n;
-    }
-    else
-    {
-      out += '?';
-      ++i;
-    }
-  }
-  return out;
-}
-
-std::string Quote(const std::string& s)
-{
-  return "\"" + Printable(s) + "\"";
-}
-
 std::string Str(const openvdb::CoordBBox& box)
 {
   std::ostringstream s;
   s << box;
   return s.str();
-}
-
-/* An index-to-world transform without rotation: world[a] = Translation[a] + Scale[a] * index[a]. */
-struct AxisMap
-{
-  double Scale[3] = { 1, 1, 1 };
-  double Translation[3] = { 0, 0, 0 };
-};
-
-/* The axis-aligned form of a grid's transform, or false with the reason. */
-bool GetAxisMap(const openvdb::math::Transform& xform, AxisMap& map, std::string& why)
-{
-  if (!xform.isLinear())
-  {
-    why = "its transform is a " + xform.mapType() +
-      " (not linear): non-axis-aligned transforms are not supported yet";
-    return false;
-  }
-  const openvdb::Mat4d m = xform.baseMap()->getAffineMap()->getMat4();
-  double largest = 0.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    largest = std::max(largest, std::abs(m(a, a)));
-  }
-  // OpenVDB's matrices act on row vectors: world = [i j k 1] * M, M(3, a) is the translation.
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      if (r != c && !(std::abs(m(r, c)) <= 1e-9 * largest))
-      {
-        std::ostringstream s;
-        s << "its " << xform.mapType()
-          << " index-to-world transform rotates or shears the index axes (matrix " << m
-          << "): non-axis-aligned transforms are not supported yet";
-        why = s.str();
-        return false;
-      }
-    }
-  }
-  for (int a = 0; a < 3; ++a)
-  {
-    map.Scale[a] = m(a, a);
-    map.Translation[a] = m(3, a);
-    if (!(map.Scale[a] != 0.0) || !std::isfinite(map.Scale[a]) ||
-      !std::isfinite(map.Translation[a]))
-    {
-      std::ostringstream s;
-      s << "its transform is degenerate (matrix " << m << ")";
-      why = s.str();
-      return false;
-    }
-  }
-  return true;
-}
-
-bool SameTransform(const openvdb::Mat4d& a, const openvdb::Mat4d& b)
-{
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      const double tol = 1e-12 * std::max({ 1.0, std::abs(a(r, c)), std::abs(b(r, c)) });
-      if (!(std::abs(a(r, c) - b(r, c)) <= tol))
-      {
-        return false;
-      }
-    }
-  }
-  return true;
 }
 
 /* The grid statistics OpenVDB writes as metadata (file_voxel_count, file_bbox_min/max), or
@@ -186,57 +80,8 @@ struct Frame
   std::string File;
   openvdb::CoordBBox Box; // active voxels, index space (empty when none)
   openvdb::Mat4d Matrix;
-  AxisMap Map;
+  vs::AxisMap Map;
 };
-
-/* The output image of a step: the index region it covers and its VTK geometry. */
-struct Geometry
-{
-  openvdb::CoordBBox Region; // inclusive, padding included
-  bool Empty = false;        // no active voxels: one voxel at (0,0,0) (+ padding)
-  bool Flip[3] = { false, false, false };
-  int Extent[6] = { 0, -1, 0, -1, 0, -1 };
-  double Origin[3] = { 0, 0, 0 };
-  double Spacing[3] = { 1, 1, 1 };
-  vtkIdType Points = 0;
-};
-
-bool MakeGeometry(const openvdb::CoordBBox& box, const AxisMap& map, int padding,
-  vtkIdType maxPoints, Geometry& g, std::string& error)
-{
-  g = Geometry();
-  g.Empty = box.empty();
-  vtkIdType points = 1;
-  int64_t lo[3], hi[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    lo[a] = (g.Empty ? 0 : int64_t(box.min()[a])) - padding;
-    hi[a] = (g.Empty ? 0 : int64_t(box.max()[a])) + padding;
-    const int64_t n = hi[a] - lo[a] + 1;
-    if (lo[a] < std::numeric_limits<int32_t>::min() ||
-      hi[a] > std::numeric_limits<int32_t>::max() || n > VTK_INT_MAX || points > maxPoints / n)
-    {
-      std::ostringstream s;
-      s << "the output would cover index box " << box << " plus " << padding
-        << " voxels of padding, more than MaximumNumberOfPoints (" << maxPoints << ")";
-      error = s.str();
-      return false;
-    }
-    points *= n;
-    g.Extent[2 * a] = 0;
-    g.Extent[2 * a + 1] = int(n - 1);
-    const double s = map.Scale[a];
-    g.Flip[a] = s < 0;
-    // Point p of the image is voxel lo + p (or hi - p on a flipped axis), centred at
-    // Translation + Scale * index.
-    g.Origin[a] = map.Translation[a] + s * double(g.Flip[a] ? hi[a] : lo[a]);
-    g.Spacing[a] = std::abs(s);
-  }
-  g.Region = openvdb::CoordBBox(openvdb::Coord(int(lo[0]), int(lo[1]), int(lo[2])),
-    openvdb::Coord(int(hi[0]), int(hi[1]), int(hi[2])));
-  g.Points = points;
-  return true;
-}
 
 /* Checks the printf pattern: exactly one integer conversion, %% allowed. */
 bool CheckPattern(const std::string& pattern, std::string& why)
@@ -281,16 +126,6 @@ bool CheckPattern(const std::string& pattern, std::string& why)
   return true;
 }
 
-std::string Describe(const std::exception& e)
-{
-  std::string what = e.what() ? e.what() : "";
-  if (dynamic_cast<const std::bad_alloc*>(&e))
-  {
-    what = "out of memory (a corrupt size?)";
-  }
-  return Printable(what);
-}
-
 struct GridSummary
 {
   std::string Name;
@@ -309,7 +144,7 @@ std::string ListGrids(const std::vector<GridSummary>& grids)
   std::string s = "the file holds ";
   for (std::size_t i = 0; i < grids.size(); ++i)
   {
-    s += (i ? ", " : "") + Quote(grids[i].Name) + " (" + grids[i].Type + ")";
+    s += (i ? ", " : "") + vs::Quote(grids[i].Name) + " (" + grids[i].Type + ")";
   }
   return s;
 }
@@ -325,23 +160,23 @@ bool OpenFile(openvdb::io::File& file, const std::string& topologyGrid, std::str
   const auto status = std::filesystem::status(path, ec);
   if (ec || !std::filesystem::exists(status))
   {
-    error = Quote(path) + ": no such file";
+    error = vs::Quote(path) + ": no such file";
     return false;
   }
   if (std::filesystem::is_directory(status))
   {
-    error = Quote(path) + " is a directory, not a .vdb file";
+    error = vs::Quote(path) + " is a directory, not a .vdb file";
     return false;
   }
   const uintmax_t size = std::filesystem::file_size(path, ec);
   if (ec)
   {
-    error = Quote(path) + ": cannot read the file size (" + ec.message() + ")";
+    error = vs::Quote(path) + ": cannot read the file size (" + ec.message() + ")";
     return false;
   }
   if (!vtkOpenVDBVolumeReader::CanReadFile(path.c_str()))
   {
-    error = Quote(path) + " is not a VDB file (it does not start with OpenVDB's magic number)";
+    error = vs::Quote(path) + " is not a VDB file (it does not start with OpenVDB's magic number)";
     return false;
   }
   // Checked before OpenVDB parses anything beyond the magic number.
@@ -352,17 +187,18 @@ bool OpenFile(openvdb::io::File& file, const std::string& topologyGrid, std::str
   }
   catch (const std::exception& e)
   {
-    std::string why = Describe(e);
+    std::string why = vs::Describe(e);
     if (why.rfind("IoError: ", 0) == 0)
     {
       why = why.substr(9);
     }
-    error = Quote(path) + " is truncated or corrupt: " + why;
+    error = vs::Quote(path) + " is truncated or corrupt: " + why;
     return false;
   }
   if (checker.Streamed)
   {
-    error = Quote(path) + " has no grid offsets (it was written as a stream, openvdb::io::Stream): "
+    error = vs::Quote(path) +
+      " has no grid offsets (it was written as a stream, openvdb::io::Stream): "
       "OpenVDB reads such files without checking any size, so they are not supported; "
       "write it with openvdb::io::File (openvdb.write in Python)";
     return false;
@@ -485,20 +321,21 @@ bool ScanFile(const std::string& path, const std::string& gridName,
     }
     if (!file.hasGrid(gridName))
     {
-      error = Quote(path) + " has no grid named " + Quote(gridName) + "; " + ListGrids(grids);
+      error =
+        vs::Quote(path) + " has no grid named " + vs::Quote(gridName) + "; " + ListGrids(grids);
       return false;
     }
     openvdb::GridBase::Ptr grid = file.readGridMetadata(gridName);
     if (!grid->isType<openvdb::FloatGrid>())
     {
-      error = "grid " + Quote(gridName) + " of " + Quote(path) + " holds " + grid->valueType() +
-        " values (" + grid->type() + "); only float grids are supported";
+      error = "grid " + vs::Quote(gridName) + " of " + vs::Quote(path) + " holds " +
+        grid->valueType() + " values (" + grid->type() + "); only float grids are supported";
       return false;
     }
     std::string why;
-    if (!GetAxisMap(grid->transform(), frame.Map, why))
+    if (!vs::GetAxisMap(grid->transform(), frame.Map, why))
     {
-      error = "grid " + Quote(gridName) + " of " + Quote(path) + ": " + why;
+      error = "grid " + vs::Quote(gridName) + " of " + vs::Quote(path) + ": " + why;
       return false;
     }
     frame.Matrix = grid->transform().baseMap()->getAffineMap()->getMat4();
@@ -514,8 +351,8 @@ bool ScanFile(const std::string& path, const std::string& gridName,
   }
   catch (const std::exception& e)
   {
-    error =
-      "cannot read " + Quote(path) + " (not a VDB file, truncated or corrupt?): " + Describe(e);
+    error = "cannot read " + vs::Quote(path) +
+      " (not a VDB file, truncated or corrupt?): " + vs::Describe(e);
     return false;
   }
 }
@@ -707,7 +544,7 @@ int vtkOpenVDBVolumeReader::RequestInformation(
     std::string why;
     if (!CheckPattern(this->FilePattern, why))
     {
-      vtkErrorMacro("FilePattern " << Quote(this->FilePattern) << " is not usable: " << why);
+      vtkErrorMacro("FilePattern " << vs::Quote(this->FilePattern) << " is not usable: " << why);
       return 1;
     }
     if (this->FileIndexRange[1] < this->FileIndexRange[0])
@@ -773,12 +610,12 @@ int vtkOpenVDBVolumeReader::RequestInformation(
     in.UseUnion = true;
     for (int s = 1; s < n && in.UseUnion; ++s)
     {
-      in.UseUnion = SameTransform(in.Frames[s].Matrix, in.Frames[0].Matrix);
+      in.UseUnion = vs::SameTransform(in.Frames[s].Matrix, in.Frames[0].Matrix);
     }
     if (!in.UseUnion)
     {
       vtkWarningMacro("UnionBounds: the files of the sequence do not share one transform (e.g. "
-        << Quote(in.Frames[0].File)
+        << vs::Quote(in.Frames[0].File)
         << " and another differ in voxel size or origin); each time step covers its own bounding "
            "box.");
     }
@@ -792,12 +629,12 @@ int vtkOpenVDBVolumeReader::RequestInformation(
   }
 
   const int step = in.StepFor(outInfo);
-  Geometry g;
+  vs::OutputGeometry g;
   std::string error;
-  if (!MakeGeometry(
+  if (!vs::MakeOutputGeometry(
         in.BoxFor(step), in.Frames[step].Map, this->Padding, this->MaximumNumberOfPoints, g, error))
   {
-    vtkErrorMacro(<< Quote(in.Frames[step].File) << ": " << error);
+    vtkErrorMacro(<< vs::Quote(in.Frames[step].File) << ": " << error);
     return 1;
   }
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), g.Extent, 6);
@@ -825,9 +662,9 @@ int vtkOpenVDBVolumeReader::RequestUpdateExtent(
   {
     return 1;
   }
-  Geometry g;
+  vs::OutputGeometry g;
   std::string error;
-  if (MakeGeometry(
+  if (vs::MakeOutputGeometry(
         in.BoxFor(step), in.Frames[step].Map, this->Padding, this->MaximumNumberOfPoints, g, error))
   {
     outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), g.Extent, 6);
@@ -856,12 +693,12 @@ int vtkOpenVDBVolumeReader::RequestData(
   const Frame& frame = in.Frames[step];
   const std::string stepText =
     in.Frames.size() > 1 ? "time step " + std::to_string(step) + ": " : std::string();
-  Geometry g;
+  vs::OutputGeometry g;
   std::string error;
-  if (!MakeGeometry(
+  if (!vs::MakeOutputGeometry(
         in.BoxFor(step), frame.Map, this->Padding, this->MaximumNumberOfPoints, g, error))
   {
-    vtkErrorMacro(<< stepText << Quote(frame.File) << ": " << error);
+    vtkErrorMacro(<< stepText << vs::Quote(frame.File) << ": " << error);
     return 1;
   }
 
@@ -879,29 +716,30 @@ int vtkOpenVDBVolumeReader::RequestData(
     openvdb::GridBase::Ptr meta = file.readGridMetadata(this->GridName);
     if (!meta->isType<openvdb::FloatGrid>())
     {
-      vtkErrorMacro(<< stepText << "grid " << Quote(this->GridName) << " of " << Quote(frame.File)
-                    << " holds " << meta->valueType() << " values; only float grids are supported");
+      vtkErrorMacro(<< stepText << "grid " << vs::Quote(this->GridName) << " of "
+                    << vs::Quote(frame.File) << " holds " << meta->valueType()
+                    << " values; only float grids are supported");
       return 1;
     }
     grid = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid(this->GridName));
     if (!grid)
     {
-      vtkErrorMacro(<< stepText << "cannot read grid " << Quote(this->GridName) << " of "
-                    << Quote(frame.File));
+      vtkErrorMacro(<< stepText << "cannot read grid " << vs::Quote(this->GridName) << " of "
+                    << vs::Quote(frame.File));
       return 1;
     }
-    if (!SameTransform(grid->transform().baseMap()->getAffineMap()->getMat4(), frame.Matrix))
+    if (!vs::SameTransform(grid->transform().baseMap()->getAffineMap()->getMat4(), frame.Matrix))
     {
       vtkErrorMacro(
-        << stepText << Quote(frame.File)
+        << stepText << vs::Quote(frame.File)
         << " changed since RequestInformation (another transform); call Modified() to re-read it.");
       return 1;
     }
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< stepText << "cannot read grid " << Quote(this->GridName) << " of "
-                  << Quote(frame.File) << " (truncated or corrupt?): " << Describe(e));
+    vtkErrorMacro(<< stepText << "cannot read grid " << vs::Quote(this->GridName) << " of "
+                  << vs::Quote(frame.File) << " (truncated or corrupt?): " << vs::Describe(e));
     return 1;
   }
   this->UpdateProgress(0.6);
@@ -916,7 +754,7 @@ int vtkOpenVDBVolumeReader::RequestData(
     const auto recorded = grid->getMetadata<openvdb::Int64Metadata>(openvdb::GridBase::META_FILE_VOXEL_COUNT);
     if (recorded && recorded->value() >= 0 && openvdb::Index64(recorded->value()) != grid->activeVoxelCount())
     {
-      vtkErrorMacro(<< stepText << "grid " << Quote(this->GridName) << " of " << Quote(frame.File) << " has "
+      vtkErrorMacro(<< stepText << "grid " << vs::Quote(this->GridName) << " of " << vs::Quote(frame.File) << " has "
                     << grid->activeVoxelCount() << " active voxels but the file's metadata says "
                     << recorded->value() << " (damaged leaf data?)");
       return 1;
@@ -938,15 +776,15 @@ int vtkOpenVDBVolumeReader::RequestData(
     }
     if (nonFinite > 0)
     {
-      vtkErrorMacro(<< stepText << nonFinite << " active voxels of grid " << Quote(this->GridName) << " of "
-                    << Quote(frame.File) << " are NaN or infinite (damaged leaf data?)");
+      vtkErrorMacro(<< stepText << nonFinite << " active voxels of grid " << vs::Quote(this->GridName) << " of "
+                    << vs::Quote(frame.File) << " are NaN or infinite (damaged leaf data?)");
       return 1;
     }
     // Fog volumes: far outside [0, 1] (by more than a factor 1000: real exports go somewhat past 1).
     if (grid->getGridClass() == openvdb::GRID_FOG_VOLUME && grid->activeVoxelCount() > 0 &&
       (lo < -1e3f || hi > 1e3f))
     {
-      vtkErrorMacro(<< stepText << "grid " << Quote(this->GridName) << " of " << Quote(frame.File)
+      vtkErrorMacro(<< stepText << "grid " << vs::Quote(this->GridName) << " of " << vs::Quote(frame.File)
                     << " is a fog volume (densities from 0 to 1) but holds values from " << lo << " to " << hi
                     << " (damaged leaf data?)");
       return 1;
@@ -959,8 +797,8 @@ int vtkOpenVDBVolumeReader::RequestData(
     grid->activeVoxelCount() ? grid->evalActiveVoxelBoundingBox() : openvdb::CoordBBox();
   if (active != frame.Box && !(active.empty() && frame.Box.empty()))
   {
-    vtkErrorMacro(<< stepText << "the active voxels of grid " << Quote(this->GridName) << " of "
-                  << Quote(frame.File) << " span " << Str(active)
+    vtkErrorMacro(<< stepText << "the active voxels of grid " << vs::Quote(this->GridName) << " of "
+                  << vs::Quote(frame.File) << " span " << Str(active)
                   << " but the file's metadata says " << Str(frame.Box)
                   << " (corrupt or stale file_bbox_min/max metadata).");
     return 1;
@@ -968,7 +806,7 @@ int vtkOpenVDBVolumeReader::RequestData(
   if (g.Empty)
   {
     vtkWarningMacro(
-      << stepText << "grid " << Quote(this->GridName) << " of " << Quote(frame.File)
+      << stepText << "grid " << vs::Quote(this->GridName) << " of " << vs::Quote(frame.File)
       << " has no active voxels: the output is one voxel of background at index (0,0,0)"
       << (this->Padding ? " plus padding" : "") << ".");
   }
@@ -982,13 +820,13 @@ int vtkOpenVDBVolumeReader::RequestData(
   catch (const std::bad_alloc&)
   {
     vtkErrorMacro(<< stepText << "out of memory for " << g.Points << " voxels of "
-                  << Quote(frame.File));
+                  << vs::Quote(frame.File));
     return 1;
   }
   if (values->GetNumberOfValues() != g.Points)
   {
     vtkErrorMacro(<< stepText << "out of memory for " << g.Points << " voxels of "
-                  << Quote(frame.File));
+                  << vs::Quote(frame.File));
     return 1;
   }
 
