@@ -11,7 +11,7 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
-#include "vsOpenVDBFileCheck.h"
+#include "vsOpenVDBFile.h"
 #include "vsOpenVDBGeometry.h"
 #include "vsOpenVDBText.h"
 
@@ -19,15 +19,11 @@
 #include <openvdb/openvdb.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
-#include <limits>
 #include <new>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -35,53 +31,8 @@ vtkStandardNewMacro(vtkOpenVDBVolumeReader);
 
 namespace
 {
-void InitializeOpenVDB()
-{
-  // openvdb::initialize() registers the grid, map and metadata types; once per process.
-  static const bool initialized = []()
-  {
-    openvdb::initialize();
-    return true;
-  }();
-  (void)initialized;
-}
-
-std::string Str(const openvdb::CoordBBox& box)
-{
-  std::ostringstream s;
-  s << box;
-  return s.str();
-}
-
-/* The grid statistics OpenVDB writes as metadata (file_voxel_count, file_bbox_min/max), or
- * false when the writer left them out. */
-bool StatsFromMetadata(
-  const openvdb::GridBase& grid, openvdb::Index64& count, openvdb::CoordBBox& box)
-{
-  auto bmin = grid.getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MIN);
-  auto bmax = grid.getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MAX);
-  auto n = grid.getMetadata<openvdb::Int64Metadata>(openvdb::GridBase::META_FILE_VOXEL_COUNT);
-  if (!bmin || !bmax || !n)
-  {
-    return false;
-  }
-  count = openvdb::Index64(std::max<int64_t>(0, n->value()));
-  box = openvdb::CoordBBox(openvdb::Coord(bmin->value()), openvdb::Coord(bmax->value()));
-  if (count == 0 || box.empty())
-  {
-    box = openvdb::CoordBBox(); // empty
-  }
-  return true;
-}
-
-/* One time step: its file and what RequestInformation learnt about the grid. */
-struct Frame
-{
-  std::string File;
-  openvdb::CoordBBox Box; // active voxels, index space (empty when none)
-  openvdb::Mat4d Matrix;
-  vs::AxisMap Map;
-};
+using Frame = vs::OpenVDBFile::Frame;
+using GridSummary = vs::OpenVDBFile::GridSummary;
 
 /* Checks the printf pattern: exactly one integer conversion, %% allowed. */
 bool CheckPattern(const std::string& pattern, std::string& why)
@@ -124,237 +75,6 @@ bool CheckPattern(const std::string& pattern, std::string& why)
     return false;
   }
   return true;
-}
-
-struct GridSummary
-{
-  std::string Name;
-  std::string Type;
-  vtkIdType Count = 0;
-  int IndexBounds[6] = { 0, -1, 0, -1, 0, -1 };
-  double Bounds[6] = { 1, -1, 1, -1, 1, -1 };
-};
-
-std::string ListGrids(const std::vector<GridSummary>& grids)
-{
-  if (grids.empty())
-  {
-    return "the file holds no grids";
-  }
-  std::string s = "the file holds ";
-  for (std::size_t i = 0; i < grids.size(); ++i)
-  {
-    s += (i ? ", " : "") + vs::Quote(grids[i].Name) + " (" + grids[i].Type + ")";
-  }
-  return s;
-}
-
-/* Opens a VDB file for reading with the size check; throws OpenVDB's exceptions, returns
- * false with a message for what is not an exception (missing file, truncation). `names`
- * receives the grid names in file order when the file has grid offsets. */
-bool OpenFile(openvdb::io::File& file, const std::string& topologyGrid, std::string& error,
-  std::vector<std::string>* names = nullptr)
-{
-  const std::string& path = file.filename();
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status))
-  {
-    error = vs::Quote(path) + ": no such file";
-    return false;
-  }
-  if (std::filesystem::is_directory(status))
-  {
-    error = vs::Quote(path) + " is a directory, not a .vdb file";
-    return false;
-  }
-  const uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec)
-  {
-    error = vs::Quote(path) + ": cannot read the file size (" + ec.message() + ")";
-    return false;
-  }
-  if (!vtkOpenVDBVolumeReader::CanReadFile(path.c_str()))
-  {
-    error = vs::Quote(path) + " is not a VDB file (it does not start with OpenVDB's magic number)";
-    return false;
-  }
-  // Checked before OpenVDB parses anything beyond the magic number.
-  vs::OpenVDBFileCheck checker;
-  try
-  {
-    checker.Check(path, int64_t(size), topologyGrid);
-  }
-  catch (const std::exception& e)
-  {
-    std::string why = vs::Describe(e);
-    if (why.rfind("IoError: ", 0) == 0)
-    {
-      why = why.substr(9);
-    }
-    error = vs::Quote(path) + " is truncated or corrupt: " + why;
-    return false;
-  }
-  if (checker.Streamed)
-  {
-    error = vs::Quote(path) +
-      " has no grid offsets (it was written as a stream, openvdb::io::Stream): "
-      "OpenVDB reads such files without checking any size, so they are not supported; "
-      "write it with openvdb::io::File (openvdb.write in Python)";
-    return false;
-  }
-  // Without delayed loading: every read error surfaces in readGrid, not later.
-  file.open(/*delayLoad=*/false);
-  if (names)
-  {
-    *names = checker.Names;
-  }
-  return true;
-}
-
-/* Walks the tree of float grid `gridName` before OpenVDB reads it in full (OpenVDBFileCheck). */
-void DeepCheck(const std::string& path, const std::string& gridName)
-{
-  std::error_code ec;
-  const uintmax_t size = std::filesystem::file_size(path, ec);
-  vs::OpenVDBFileCheck checker;
-  checker.Check(path, ec ? 0 : int64_t(size), gridName);
-}
-
-/* The grids of an open file in file order (`names`, or io::File's order by name when that is
- * empty), from metadata. A grid without statistics is read in full if it is the float grid
- * `checkedGrid` (the one OpenVDBFileCheck walked); otherwise its count is -1 (unknown). */
-std::vector<GridSummary> Summarize(
-  openvdb::io::File& file, const std::vector<std::string>& names, const std::string& checkedGrid)
-{
-  std::vector<GridSummary> out;
-  openvdb::GridPtrVecPtr grids;
-  if (names.empty())
-  {
-    grids = file.readAllGridMetadata();
-  }
-  else
-  {
-    grids.reset(new openvdb::GridPtrVec);
-    for (const std::string& name : names)
-    {
-      grids->push_back(file.readGridMetadata(name));
-    }
-  }
-  for (std::size_t i = 0; i < grids->size(); ++i)
-  {
-    const openvdb::GridBase::Ptr& g = (*grids)[i];
-    GridSummary s;
-    // The unique name ("density[1]" for a second grid called "density") is what readGrid takes.
-    s.Name = names.empty() ? g->getName() : names[i];
-    s.Type = g->valueType();
-    openvdb::Index64 count = 0;
-    openvdb::CoordBBox box;
-    s.Count = -1;
-    if (StatsFromMetadata(*g, count, box))
-    {
-      s.Count = vtkIdType(count);
-    }
-    else if ((s.Name == checkedGrid || g->getName() == checkedGrid) &&
-      g->isType<openvdb::FloatGrid>())
-    {
-      // Check the grid that is read: s.Name (the descriptor's unique name). The grid's "name"
-      // metadata can differ from it in a corrupt file, and checking checkedGrid then checked
-      // nothing (found by fuzzing: OpenVDB read an unchecked tree and allocated a Blosc chunk
-      // whose size was text).
-      DeepCheck(file.filename(), s.Name);
-      openvdb::GridBase::Ptr full = file.readGrid(s.Name);
-      count = full->activeVoxelCount();
-      box = count ? full->evalActiveVoxelBoundingBox() : openvdb::CoordBBox();
-      s.Count = vtkIdType(count);
-    }
-    if (!box.empty())
-    {
-      for (int a = 0; a < 3; ++a)
-      {
-        s.IndexBounds[2 * a] = box.min()[a];
-        s.IndexBounds[2 * a + 1] = box.max()[a];
-        s.Bounds[2 * a] = std::numeric_limits<double>::infinity();
-        s.Bounds[2 * a + 1] = -std::numeric_limits<double>::infinity();
-      }
-      // The eight corner voxels' centres (any linear or frustum transform).
-      for (int c = 0; c < 8; ++c)
-      {
-        const openvdb::Vec3d ijk((c & 1 ? box.max() : box.min())[0],
-          (c & 2 ? box.max() : box.min())[1], (c & 4 ? box.max() : box.min())[2]);
-        const openvdb::Vec3d w = g->transform().indexToWorld(ijk);
-        for (int a = 0; a < 3; ++a)
-        {
-          s.Bounds[2 * a] = std::min(s.Bounds[2 * a], w[a]);
-          s.Bounds[2 * a + 1] = std::max(s.Bounds[2 * a + 1], w[a]);
-        }
-      }
-    }
-    out.push_back(s);
-  }
-  return out;
-}
-
-/* Everything RequestInformation needs from one file, without reading voxels (unless the
- * statistics metadata is missing). `listing` (the first file) receives the grid summaries. */
-bool ScanFile(const std::string& path, const std::string& gridName,
-  std::vector<GridSummary>* listing, Frame& frame, std::string& error)
-{
-  frame.File = path;
-  try
-  {
-    openvdb::io::File file(path);
-    std::vector<std::string> names;
-    // The metadata only (RequestInformation opens every file of a sequence): no tree walk.
-    if (!OpenFile(file, std::string(), error, &names))
-    {
-      return false;
-    }
-    std::vector<GridSummary> grids;
-    if (listing || !file.hasGrid(gridName))
-    {
-      grids = Summarize(file, names, gridName);
-      if (listing)
-      {
-        *listing = grids;
-      }
-    }
-    if (!file.hasGrid(gridName))
-    {
-      error =
-        vs::Quote(path) + " has no grid named " + vs::Quote(gridName) + "; " + ListGrids(grids);
-      return false;
-    }
-    openvdb::GridBase::Ptr grid = file.readGridMetadata(gridName);
-    if (!grid->isType<openvdb::FloatGrid>())
-    {
-      error = "grid " + vs::Quote(gridName) + " of " + vs::Quote(path) + " holds " +
-        grid->valueType() + " values (" + grid->type() + "); only float grids are supported";
-      return false;
-    }
-    std::string why;
-    if (!vs::GetAxisMap(grid->transform(), frame.Map, why))
-    {
-      error = "grid " + vs::Quote(gridName) + " of " + vs::Quote(path) + ": " + why;
-      return false;
-    }
-    frame.Matrix = grid->transform().baseMap()->getAffineMap()->getMat4();
-    openvdb::Index64 count = 0;
-    if (!StatsFromMetadata(*grid, count, frame.Box))
-    {
-      DeepCheck(path, gridName);
-      openvdb::GridBase::Ptr full = file.readGrid(gridName);
-      frame.Box =
-        full->activeVoxelCount() ? full->evalActiveVoxelBoundingBox() : openvdb::CoordBBox();
-    }
-    return true;
-  }
-  catch (const std::exception& e)
-  {
-    error = "cannot read " + vs::Quote(path) +
-      " (not a VDB file, truncated or corrupt?): " + vs::Describe(e);
-    return false;
-  }
 }
 
 /* Index of the time value nearest to t (0 when there are none). */
@@ -578,12 +298,13 @@ int vtkOpenVDBVolumeReader::RequestInformation(
     return 1;
   }
 
-  InitializeOpenVDB();
+  vs::OpenVDBFile::Initialize();
   for (std::size_t s = 0; s < files.size(); ++s)
   {
     Frame frame;
     std::string error;
-    if (!ScanFile(files[s], this->GridName, s == 0 ? &in.Grids : nullptr, frame, error))
+    if (!vs::OpenVDBFile::Scan(
+          files[s], this->GridName, s == 0 ? &in.Grids : nullptr, frame, error))
     {
       in.Frames.clear();
       vtkErrorMacro(<< (files.size() > 1 ? "time step " + std::to_string(s) + ": " : std::string())
@@ -706,7 +427,7 @@ int vtkOpenVDBVolumeReader::RequestData(
   try
   {
     openvdb::io::File file(frame.File);
-    if (!OpenFile(file, this->GridName, error))
+    if (!vs::OpenVDBFile::Open(file, this->GridName, error))
     {
       vtkErrorMacro(<< stepText << error);
       return 1;
@@ -744,63 +465,12 @@ int vtkOpenVDBVolumeReader::RequestData(
   }
   this->UpdateProgress(0.6);
 
-  // Damaged compressed leaf data (issue 13, item 2): Blosc carries no checksum, so a damaged chunk
-  // of the right size decodes to other values without an error. What can be checked is: the
-  // active voxels against the count the writer recorded (damaged value masks), and the values
-  // themselves: a density grid holds finite values, and a fog volume (OpenVDB's convention:
-  // densities from 0 to 1) none far outside [0, 1]. Damage that decodes to plausible values is
-  // undetectable in this format.
+  // The values and the active voxels' box against the file's metadata (damaged leaf data; a
+  // corrupt box, checked before allocating).
+  const std::string damage = vs::OpenVDBFile::CheckGrid(*grid, frame, this->GridName);
+  if (!damage.empty())
   {
-    const auto recorded = grid->getMetadata<openvdb::Int64Metadata>(openvdb::GridBase::META_FILE_VOXEL_COUNT);
-    if (recorded && recorded->value() >= 0 && openvdb::Index64(recorded->value()) != grid->activeVoxelCount())
-    {
-      vtkErrorMacro(<< stepText << "grid " << vs::Quote(this->GridName) << " of " << vs::Quote(frame.File) << " has "
-                    << grid->activeVoxelCount() << " active voxels but the file's metadata says "
-                    << recorded->value() << " (damaged leaf data?)");
-      return 1;
-    }
-    openvdb::Index64 nonFinite = 0;
-    float lo = std::numeric_limits<float>::max(), hi = -std::numeric_limits<float>::max();
-    for (auto it = grid->cbeginValueOn(); it; ++it)
-    {
-      const float v = *it;
-      if (!std::isfinite(v))
-      {
-        ++nonFinite;
-      }
-      else
-      {
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-      }
-    }
-    if (nonFinite > 0)
-    {
-      vtkErrorMacro(<< stepText << nonFinite << " active voxels of grid " << vs::Quote(this->GridName) << " of "
-                    << vs::Quote(frame.File) << " are NaN or infinite (damaged leaf data?)");
-      return 1;
-    }
-    // Fog volumes: far outside [0, 1] (by more than a factor 1000: real exports go somewhat past 1).
-    if (grid->getGridClass() == openvdb::GRID_FOG_VOLUME && grid->activeVoxelCount() > 0 &&
-      (lo < -1e3f || hi > 1e3f))
-    {
-      vtkErrorMacro(<< stepText << "grid " << vs::Quote(this->GridName) << " of " << vs::Quote(frame.File)
-                    << " is a fog volume (densities from 0 to 1) but holds values from " << lo << " to " << hi
-                    << " (damaged leaf data?)");
-      return 1;
-    }
-  }
-
-  // The extent came from the file's metadata: it must describe these voxels (checked before
-  // allocating, a corrupt box being the way to a huge allocation).
-  const openvdb::CoordBBox active =
-    grid->activeVoxelCount() ? grid->evalActiveVoxelBoundingBox() : openvdb::CoordBBox();
-  if (active != frame.Box && !(active.empty() && frame.Box.empty()))
-  {
-    vtkErrorMacro(<< stepText << "the active voxels of grid " << vs::Quote(this->GridName) << " of "
-                  << vs::Quote(frame.File) << " span " << Str(active)
-                  << " but the file's metadata says " << Str(frame.Box)
-                  << " (corrupt or stale file_bbox_min/max metadata).");
+    vtkErrorMacro(<< stepText << damage);
     return 1;
   }
   if (g.Empty)
