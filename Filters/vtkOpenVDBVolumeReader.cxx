@@ -11,23 +11,19 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
-#include <openvdb/io/Compression.h>
-#include <openvdb/io/DelayedLoadMetadata.h>
+#include "vsOpenVDBFile.h"
+#include "vsOpenVDBGeometry.h"
+#include "vsOpenVDBText.h"
+
 #include <openvdb/io/File.h>
-#include <openvdb/io/GridDescriptor.h>
 #include <openvdb/openvdb.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
-#include <limits>
-#include <map>
 #include <new>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -35,621 +31,8 @@ vtkStandardNewMacro(vtkOpenVDBVolumeReader);
 
 namespace
 {
-void InitializeOpenVDB()
-{
-  // openvdb::initialize() registers the grid, map and metadata types; once per process.
-  static const bool initialized = []()
-  {
-    openvdb::initialize();
-    return true;
-  }();
-  (void)initialized;
-}
-
-/* Text for a message: valid UTF-8 is kept, other bytes and control characters become '?'
- * (names read from a corrupt file can be anything; Python observers decode messages). */
-std::string Printable(const std::string& s)
-{
-  std::string out;
-  out.reserve(s.size());
-  for (std::size_t i = 0; i < s.size();)
-  {
-    const unsigned char c = static_cast<unsigned char>(s[i]);
-    std::size_t n = c < 0x80 ? 1
-      : (c >> 5) == 0x6      ? 2
-      : (c >> 4) == 0xe      ? 3
-      : (c >> 3) == 0x1e     ? 4
-                             : 0;
-    bool valid = n > 0 && i + n <= s.size() && (n > 1 || c >= 0x20 || c == '\t' || c == '\n');
-    for (std::size_t k = 1; valid && k < n; ++k)
-    {
-      valid = (static_cast<unsigned char>(s[i + k]) >> 6) == 0x2;
-    }
-    if (valid && c != 0x7f)
-    {
-      out.append(s, i, n);
-      i += n;
-    }
-    else
-    {
-      out += '?';
-      ++i;
-    }
-  }
-  return out;
-}
-
-std::string Quote(const std::string& s)
-{
-  return "\"" + Printable(s) + "\"";
-}
-
-std::string Str(const openvdb::CoordBBox& box)
-{
-  std::ostringstream s;
-  s << box;
-  return s.str();
-}
-
-/* An index-to-world transform without rotation: world[a] = Translation[a] + Scale[a] * index[a]. */
-struct AxisMap
-{
-  double Scale[3] = { 1, 1, 1 };
-  double Translation[3] = { 0, 0, 0 };
-};
-
-/* The axis-aligned form of a grid's transform, or false with the reason. */
-bool GetAxisMap(const openvdb::math::Transform& xform, AxisMap& map, std::string& why)
-{
-  if (!xform.isLinear())
-  {
-    why = "its transform is a " + xform.mapType() +
-      " (not linear): non-axis-aligned transforms are not supported yet";
-    return false;
-  }
-  const openvdb::Mat4d m = xform.baseMap()->getAffineMap()->getMat4();
-  double largest = 0.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    largest = std::max(largest, std::abs(m(a, a)));
-  }
-  // OpenVDB's matrices act on row vectors: world = [i j k 1] * M, M(3, a) is the translation.
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      if (r != c && !(std::abs(m(r, c)) <= 1e-9 * largest))
-      {
-        std::ostringstream s;
-        s << "its " << xform.mapType()
-          << " index-to-world transform rotates or shears the index axes (matrix " << m
-          << "): non-axis-aligned transforms are not supported yet";
-        why = s.str();
-        return false;
-      }
-    }
-  }
-  for (int a = 0; a < 3; ++a)
-  {
-    map.Scale[a] = m(a, a);
-    map.Translation[a] = m(3, a);
-    if (!(map.Scale[a] != 0.0) || !std::isfinite(map.Scale[a]) ||
-      !std::isfinite(map.Translation[a]))
-    {
-      std::ostringstream s;
-      s << "its transform is degenerate (matrix " << m << ")";
-      why = s.str();
-      return false;
-    }
-  }
-  return true;
-}
-
-bool SameTransform(const openvdb::Mat4d& a, const openvdb::Mat4d& b)
-{
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      const double tol = 1e-12 * std::max({ 1.0, std::abs(a(r, c)), std::abs(b(r, c)) });
-      if (!(std::abs(a(r, c) - b(r, c)) <= tol))
-      {
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
-/* Walks the structure of a VDB file the way io::File and io::Archive read it, checking
- * every length and count that OpenVDB would trust before allocating, against the bytes the
- * file has: OpenVDB does not check its stream while it reads, so a corrupt length can make
- * it allocate without bound (or loop over a failed stream leaking nodes) instead of failing.
- * Also collects what io::File keeps private: the grids in file order and where each ends (a
- * file cut short inside its last leaf nodes still "reads" in OpenVDB, the missing tail
- * decompressing to garbage). Covers the header, the metadata, the grid descriptors and
- * the transforms of every grid and, for the float grid to be read (topologyGrid), its whole
- * tree: node masks, and the size and blosc header of every compressed chunk. What it cannot
- * judge is left to OpenVDB (a map type it does not know, a blosc stream that does not
- * decompress, values). */
-class FileChecker : public openvdb::io::Archive
-{
-public:
-  std::vector<std::string> Names; // file order; empty for a file without grid offsets
-  int64_t LastGridEnd = -1;       // largest end offset of a grid; -1 without grid offsets
-  bool Streamed = false;          // the file has no grid offsets (written by io::Stream)
-
-  /* Throws openvdb::IoError naming what is corrupt (or OpenVDB's own exceptions). */
-  void Check(const std::string& path, int64_t size, const std::string& topologyGrid)
-  {
-    std::ifstream is(path, std::ios_base::in | std::ios_base::binary);
-    if (!is)
-    {
-      OPENVDB_THROW(openvdb::IoError, "could not open file " << path);
-    }
-    this->Size = size;
-    this->readHeader(is); // fixed-size fields
-    if (!this->inputHasGridOffsets())
-    {
-      // A stream (io::Stream): OpenVDB reads it in one pass with no size checks at all (a
-      // fuzzed 102-byte file made it allocate 2.9 GB for strings). Not walked: refused by the
-      // caller (Streamed).
-      this->Streamed = true;
-      return;
-    }
-    openvdb::io::StreamMetadata::Ptr streamMeta(new openvdb::io::StreamMetadata);
-    streamMeta->setSeekable(true);
-    openvdb::io::setStreamMetadataPtr(is, streamMeta, /*transfer=*/false);
-    this->setFormatVersion(is);
-    this->setLibraryVersion(is);
-    this->setDataCompression(is);
-    const uint32_t version = openvdb::io::getFormatVersion(is);
-    if (version < openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION)
-    {
-      // The tree walk below follows the node-mask-compressed layout of format 222 (OpenVDB 2.0,
-      // 2013) and later; an older tree would go to OpenVDB unchecked (a hand-made file with
-      // version 221 made it throw mid-tree and leak a node), so such files are refused.
-      OPENVDB_THROW(openvdb::IoError,
-        "file format version " << version << " predates OpenVDB 2.0 (format "
-                               << openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION
-                               << "), which is not supported");
-    }
-    this->SkipMetaMap(is, "the file metadata");
-
-    const int32_t count = this->ReadScalar<int32_t>(is, "the grid count");
-    // A descriptor holds at least two strings and three offsets.
-    this->Require(count >= 0 && int64_t(count) <= this->Remaining(is) / 32, "the grid count");
-    std::vector<openvdb::io::GridDescriptor> descriptors;
-    for (int32_t i = 0; i < count; ++i)
-    {
-      const std::streamoff start = is.tellg();
-      const int strings = version >= openvdb::OPENVDB_FILE_VERSION_GRID_INSTANCING ? 3 : 2;
-      for (int k = 0; k < strings; ++k)
-      {
-        this->SkipString(is, "a grid descriptor");
-      }
-      is.seekg(start);
-      openvdb::io::GridDescriptor gd;
-      gd.read(is);
-      this->Require(is.good() && gd.getGridPos() > 0 && gd.getGridPos() <= gd.getEndPos() &&
-          gd.getBlockPos() <= gd.getEndPos(),
-        "the descriptor of grid \"" + gd.uniqueName() + "\"");
-      if (gd.getEndPos() > size)
-      {
-        OPENVDB_THROW(openvdb::IoError,
-          "truncated: grid \"" << gd.uniqueName() << "\" ends at byte " << gd.getEndPos()
-                               << " but the file has " << size << " bytes");
-      }
-      this->Names.push_back(openvdb::io::GridDescriptor::nameAsString(gd.uniqueName()));
-      this->LastGridEnd = std::max(this->LastGridEnd, gd.getEndPos());
-      descriptors.push_back(gd);
-      gd.seekToEnd(is);
-    }
-
-    for (const openvdb::io::GridDescriptor& gd : descriptors)
-    {
-      const std::string what = "grid \"" + gd.uniqueName() + "\"";
-      gd.seekToGrid(is);
-      readGridCompression(is);
-      const std::streamoff metaStart = is.tellg();
-      this->SkipMetaMap(is, "the metadata of " + what);
-      // The transform: a map type name, then fixed-size fields.
-      const std::streamoff transformStart = is.tellg();
-      this->SkipString(is, "the transform of " + what);
-      if (gd.isInstance() ||
-        (gd.gridName() != topologyGrid &&
-          openvdb::io::GridDescriptor::nameAsString(gd.uniqueName()) != topologyGrid) ||
-        gd.gridType() != openvdb::FloatGrid::gridType())
-      {
-        continue;
-      }
-      // Now that they are checked, OpenVDB reads the metadata and transform as readGrid will
-      // (the metadata decides whether the values are stored as half floats).
-      is.seekg(metaStart);
-      openvdb::GridBase::Ptr grid = openvdb::GridBase::createGrid(gd.gridType());
-      grid->setSaveFloatAsHalf(gd.saveFloatAsHalf());
-      grid->readMeta(is);
-      this->Require(is.tellg() == transformStart, "the metadata of " + what);
-      grid->readTransform(is);
-      this->Require(bool(is), "the transform of " + what);
-      this->CheckFloatTree(is, gd, grid->saveFloatAsHalf(), "the tree of " + what);
-    }
-  }
-
-private:
-  int64_t Size = 0;
-
-  int64_t Remaining(std::istream& is) const
-  {
-    const std::streamoff pos = is.tellg();
-    return pos < 0 ? -1 : this->Size - int64_t(pos);
-  }
-
-  void Require(bool ok, const std::string& what) const
-  {
-    if (!ok)
-    {
-      OPENVDB_THROW(openvdb::IoError,
-        "corrupt " << what << " (a size, count or offset that does not fit the file)");
-    }
-  }
-
-  template <typename T>
-  T ReadScalar(std::istream& is, const std::string& what)
-  {
-    T value{};
-    is.read(reinterpret_cast<char*>(&value), sizeof(T));
-    this->Require(bool(is), what);
-    return value;
-  }
-
-  /* A length-prefixed block (io::readString, Metadata sizes): checks and skips it. */
-  uint32_t SkipBlock(std::istream& is, const std::string& what)
-  {
-    const uint32_t n = this->ReadScalar<uint32_t>(is, what);
-    this->Require(int64_t(n) <= this->Remaining(is), what);
-    is.seekg(std::streamoff(n), std::ios_base::cur);
-    return n;
-  }
-
-  void SkipString(std::istream& is, const std::string& what) { this->SkipBlock(is, what); }
-
-  void Skip(std::istream& is, int64_t bytes, const std::string& what)
-  {
-    this->Require(bytes >= 0 && bytes <= this->Remaining(is), what);
-    is.seekg(std::streamoff(bytes), std::ios_base::cur);
-  }
-
-  template <typename Mask>
-  void Load(std::istream& is, Mask& mask, const std::string& what)
-  {
-    mask.load(is);
-    this->Require(bool(is), what);
-  }
-
-  /* The bytes io::readCompressedValues reads for a node of destCount values of a float tree
-   * (activeCount of them active; selectionBytes = the node's mask size), chunk sizes checked
-   * against what they must be: OpenVDB 10's bloscFromStream/unzipFromStream copy a
-   * "uncompressed" chunk into the node's buffer before comparing its size with the buffer's. */
-  void SkipValues(std::istream& is, uint32_t destCount, uint32_t activeCount,
-    int64_t selectionBytes, uint32_t compression, bool half, const std::string& what)
-  {
-    using namespace openvdb::io;
-    const int8_t metadata = this->ReadScalar<int8_t>(is, what);
-    if (metadata == NO_MASK_AND_ONE_INACTIVE_VAL || metadata == MASK_AND_ONE_INACTIVE_VAL ||
-      metadata == MASK_AND_TWO_INACTIVE_VALS)
-    {
-      this->Skip(is, metadata == MASK_AND_TWO_INACTIVE_VALS ? 8 : 4, what); // float inactive values
-    }
-    if (metadata == MASK_AND_NO_INACTIVE_VALS || metadata == MASK_AND_ONE_INACTIVE_VAL ||
-      metadata == MASK_AND_TWO_INACTIVE_VALS)
-    {
-      this->Skip(is, selectionBytes, what);
-    }
-    uint32_t count = destCount;
-    if ((compression & COMPRESS_ACTIVE_MASK) && metadata != NO_MASK_AND_ALL_VALS)
-    {
-      count = activeCount;
-    }
-    if (half && count < 1)
-    {
-      return; // HalfReader reads nothing
-    }
-    const int64_t bytes = int64_t(count) * (half ? 2 : 4);
-    if (!(compression & (COMPRESS_BLOSC | COMPRESS_ZIP)))
-    {
-      this->Skip(is, bytes, what);
-      return;
-    }
-    const int64_t n = this->ReadScalar<int64_t>(is, what);
-    if (n <= 0)
-    {
-      this->Require(n > std::numeric_limits<int64_t>::min() && -n == bytes, what);
-      this->Skip(is, -n, what);
-      return;
-    }
-    this->Require(n <= this->Remaining(is), what);
-    if (compression & COMPRESS_BLOSC)
-    {
-      this->CheckBloscHeader(is, n, bytes, what);
-    }
-    this->Skip(is, n, what);
-  }
-
-  /* The values of an internal node (its tiles), as InternalNode::readTopology reads them:
-   * sizes checked first (SkipValues), then decoded by OpenVDB's own
-   * io::readCompressedValues into a scratch buffer. readTopology allocates each node before
-   * reading it and RootNode stores a child only after the child's readTopology returns, so an
-   * exception there (a Blosc or zip chunk of the right sizes whose data does not decompress:
-   * "Expected to decompress 4 bytes, got -1 bytes") leaks the level-2 node being filled and
-   * its children (found by fuzzing: 304 KB per file). Decoding here makes OpenVDB throw in the
-   * check, where nothing leaks, instead of mid-tree. Costs one more decompression of the tile
-   * values (at most 128 KB per level-2 node); leaf buffers (readBuffers, where the tree
-   * already owns every node) are not decoded twice. */
-  template <typename Mask>
-  void CheckNodeValues(std::istream& is, const Mask& valueMask, std::vector<float>& scratch,
-    uint32_t compression, bool half, const std::string& what)
-  {
-    const std::streamoff start = is.tellg();
-    this->SkipValues(is, Mask::SIZE, valueMask.countOn(), Mask::SIZE / 8, compression, half, what);
-    const std::streamoff end = is.tellg();
-    is.seekg(start);
-    scratch.resize(Mask::SIZE);
-    try
-    {
-      openvdb::io::readCompressedValues(is, scratch.data(), Mask::SIZE, valueMask, half);
-    }
-    catch (const std::exception& e)
-    {
-      OPENVDB_THROW(openvdb::IoError, "corrupt " << what << " (" << e.what() << ")");
-    }
-    this->Require(bool(is) && is.tellg() == end, what);
-  }
-
-  /* Tree<RootNode<InternalNode<InternalNode<LeafNode<float,3>,4>,5>>>::readTopology then
-   * readBuffers, as OpenVDB reads them (root children in key order; a leaf's buffer uses the
-   * value mask of the topology, the stream being seekable). */
-  void CheckFloatTree(
-    std::istream& is, const openvdb::io::GridDescriptor& gd, bool half, const std::string& what)
-  {
-    struct Node4
-    {
-      openvdb::util::NodeMask<4> Children;
-      std::vector<uint16_t> LeafActive;
-    };
-    const uint32_t compression = openvdb::io::getDataCompression(is);
-    this->ReadScalar<int32_t>(is, what); // buffer count
-    this->ReadScalar<float>(is, what);   // background
-    const uint32_t tiles = this->ReadScalar<uint32_t>(is, what);
-    const uint32_t children = this->ReadScalar<uint32_t>(is, what);
-    // A tile takes 3 x 4 + 4 + 1 bytes; a child its origin and two uncompressed 32^3-bit masks.
-    this->Require(
-      int64_t(tiles) * 17 + int64_t(children) * (12 + 8192) <= this->Remaining(is), what);
-    this->Skip(is, int64_t(tiles) * 17, what);
-    std::map<openvdb::Coord, std::vector<Node4>> roots;
-    std::vector<float> scratch;
-    for (uint32_t c = 0; c < children; ++c)
-    {
-      int32_t origin[3];
-      is.read(reinterpret_cast<char*>(origin), sizeof(origin));
-      this->Require(bool(is), what);
-      openvdb::util::NodeMask<5> childMask, valueMask;
-      this->Load(is, childMask, what);
-      this->Load(is, valueMask, what);
-      this->CheckNodeValues(is, valueMask, scratch, compression, half, what);
-      std::vector<Node4> nodes;
-      for (auto it = childMask.beginOn(); it; ++it)
-      {
-        Node4 node;
-        openvdb::util::NodeMask<4> values4;
-        this->Load(is, node.Children, what);
-        this->Load(is, values4, what);
-        this->CheckNodeValues(is, values4, scratch, compression, half, what);
-        for (auto jt = node.Children.beginOn(); jt; ++jt)
-        {
-          openvdb::util::NodeMask<3> leafMask;
-          this->Load(is, leafMask, what);
-          node.LeafActive.push_back(uint16_t(leafMask.countOn()));
-        }
-        nodes.push_back(std::move(node));
-      }
-      roots[openvdb::Coord(origin[0], origin[1], origin[2])] = std::move(nodes);
-    }
-    if (gd.getBlockPos() > 0)
-    {
-      this->Require(int64_t(is.tellg()) == gd.getBlockPos(), what);
-    }
-    for (const auto& root : roots)
-    {
-      for (const Node4& node : root.second)
-      {
-        for (uint16_t active : node.LeafActive)
-        {
-          this->Skip(is, 64, what); // the leaf's value mask (seeked over)
-          this->SkipValues(is, 512, active, 64, compression, half, what);
-        }
-      }
-    }
-  }
-
-  /* MetaMap::readMeta: a count, then per entry a name, a type name and a value as
-   * Metadata::read consumes it: a size, then that many bytes (strings, unknown types), the
-   * type's own size (fixed-size types read sizeof(T) whatever the size says) or, for
-   * DelayedLoadMetadata, its own structure. */
-  void SkipMetaMap(std::istream& is, const std::string& what)
-  {
-    const uint32_t count = this->ReadScalar<uint32_t>(is, what);
-    this->Require(int64_t(count) * 12 <= this->Remaining(is), what);
-    for (uint32_t i = 0; i < count; ++i)
-    {
-      this->SkipString(is, what);
-      const uint32_t typeLength = this->ReadScalar<uint32_t>(is, what);
-      this->Require(int64_t(typeLength) <= this->Remaining(is), what);
-      std::string type(typeLength, '\0');
-      is.read(&type[0], typeLength);
-      this->Require(bool(is), what);
-      const uint32_t bytes = this->ReadScalar<uint32_t>(is, what);
-      if (!openvdb::Metadata::isRegisteredType(type) ||
-        type == openvdb::StringMetadata::staticTypeName())
-      {
-        this->Skip(is, bytes, what);
-      }
-      else if (type == openvdb::io::DelayedLoadMetadata::staticTypeName())
-      {
-        this->SkipDelayedLoad(is, bytes, what);
-      }
-      else
-      {
-        this->Skip(is, openvdb::Metadata::createMetadata(type)->size(), what);
-      }
-    }
-  }
-
-  /* A blosc buffer of `bytes` bytes that must hold `expected` bytes uncompressed (checked in
-   * its header: blosc trusts the header's compressed size to stay within the buffer). With
-   * `padded`, OpenVDB's StreamCompression pads buffers below 128 bytes to 128. */
-  void CheckBloscHeader(
-    std::istream& is, int64_t bytes, int64_t expected, const std::string& what, bool padded = false)
-  {
-    this->Require(bytes >= 16 && bytes <= this->Remaining(is), what);
-    unsigned char header[16];
-    is.read(reinterpret_cast<char*>(header), 16);
-    this->Require(bool(is), what);
-    auto le32 = [&](int at)
-    {
-      return uint32_t(header[at]) | uint32_t(header[at + 1]) << 8 | uint32_t(header[at + 2]) << 16 |
-        uint32_t(header[at + 3]) << 24;
-    };
-    const int64_t nbytes = le32(4);
-    this->Require(int64_t(le32(12)) <= bytes &&
-        (nbytes == expected || (padded && expected <= 128 && nbytes == 128)),
-      what);
-    is.seekg(std::streamoff(-16), std::ios_base::cur);
-  }
-
-  /* DelayedLoadMetadata::readValue (OpenVDB 10): a leaf count, a mask array (blosc or raw
-   * int8) and a compressed-size array (blosc, raw int64, or none), then padding up to numBytes. */
-  void SkipDelayedLoad(std::istream& is, uint32_t numBytes, const std::string& what)
-  {
-    if (numBytes == 0)
-    {
-      return;
-    }
-    int64_t total = 12;
-    const uint32_t count = this->ReadScalar<uint32_t>(is, what);
-    this->Require(int64_t(count) <= this->Size, what); // a file has fewer leaves than bytes
-    uint32_t bytes = this->ReadScalar<uint32_t>(is, what);
-    if (bytes > 0)
-    {
-      this->CheckBloscHeader(is, bytes, int64_t(count) * 1, what, /*padded=*/true);
-      this->Skip(is, bytes, what);
-      total += bytes;
-    }
-    else
-    {
-      this->Skip(is, int64_t(count) * 1, what);
-      total += int64_t(count) * 1;
-    }
-    bytes = this->ReadScalar<uint32_t>(is, what);
-    if (bytes != std::numeric_limits<uint32_t>::max())
-    {
-      if (bytes > 0)
-      {
-        this->CheckBloscHeader(is, bytes, int64_t(count) * 8, what, /*padded=*/true);
-        this->Skip(is, bytes, what);
-        total += bytes;
-      }
-      else
-      {
-        this->Skip(is, int64_t(count) * 8, what);
-        total += int64_t(count) * 8;
-      }
-    }
-    if (total < int64_t(numBytes))
-    {
-      this->Skip(is, int64_t(numBytes) - total, what);
-    }
-  }
-};
-
-/* The grid statistics OpenVDB writes as metadata (file_voxel_count, file_bbox_min/max), or
- * false when the writer left them out. */
-bool StatsFromMetadata(
-  const openvdb::GridBase& grid, openvdb::Index64& count, openvdb::CoordBBox& box)
-{
-  auto bmin = grid.getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MIN);
-  auto bmax = grid.getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MAX);
-  auto n = grid.getMetadata<openvdb::Int64Metadata>(openvdb::GridBase::META_FILE_VOXEL_COUNT);
-  if (!bmin || !bmax || !n)
-  {
-    return false;
-  }
-  count = openvdb::Index64(std::max<int64_t>(0, n->value()));
-  box = openvdb::CoordBBox(openvdb::Coord(bmin->value()), openvdb::Coord(bmax->value()));
-  if (count == 0 || box.empty())
-  {
-    box = openvdb::CoordBBox(); // empty
-  }
-  return true;
-}
-
-/* One time step: its file and what RequestInformation learnt about the grid. */
-struct Frame
-{
-  std::string File;
-  openvdb::CoordBBox Box; // active voxels, index space (empty when none)
-  openvdb::Mat4d Matrix;
-  AxisMap Map;
-};
-
-/* The output image of a step: the index region it covers and its VTK geometry. */
-struct Geometry
-{
-  openvdb::CoordBBox Region; // inclusive, padding included
-  bool Empty = false;        // no active voxels: one voxel at (0,0,0) (+ padding)
-  bool Flip[3] = { false, false, false };
-  int Extent[6] = { 0, -1, 0, -1, 0, -1 };
-  double Origin[3] = { 0, 0, 0 };
-  double Spacing[3] = { 1, 1, 1 };
-  vtkIdType Points = 0;
-};
-
-bool MakeGeometry(const openvdb::CoordBBox& box, const AxisMap& map, int padding,
-  vtkIdType maxPoints, Geometry& g, std::string& error)
-{
-  g = Geometry();
-  g.Empty = box.empty();
-  vtkIdType points = 1;
-  int64_t lo[3], hi[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    lo[a] = (g.Empty ? 0 : int64_t(box.min()[a])) - padding;
-    hi[a] = (g.Empty ? 0 : int64_t(box.max()[a])) + padding;
-    const int64_t n = hi[a] - lo[a] + 1;
-    if (lo[a] < std::numeric_limits<int32_t>::min() ||
-      hi[a] > std::numeric_limits<int32_t>::max() || n > VTK_INT_MAX || points > maxPoints / n)
-    {
-      std::ostringstream s;
-      s << "the output would cover index box " << box << " plus " << padding
-        << " voxels of padding, more than MaximumNumberOfPoints (" << maxPoints << ")";
-      error = s.str();
-      return false;
-    }
-    points *= n;
-    g.Extent[2 * a] = 0;
-    g.Extent[2 * a + 1] = int(n - 1);
-    const double s = map.Scale[a];
-    g.Flip[a] = s < 0;
-    // Point p of the image is voxel lo + p (or hi - p on a flipped axis), centred at
-    // Translation + Scale * index.
-    g.Origin[a] = map.Translation[a] + s * double(g.Flip[a] ? hi[a] : lo[a]);
-    g.Spacing[a] = std::abs(s);
-  }
-  g.Region = openvdb::CoordBBox(openvdb::Coord(int(lo[0]), int(lo[1]), int(lo[2])),
-    openvdb::Coord(int(hi[0]), int(hi[1]), int(hi[2])));
-  g.Points = points;
-  return true;
-}
+using Frame = vs::OpenVDBFile::Frame;
+using GridSummary = vs::OpenVDBFile::GridSummary;
 
 /* Checks the printf pattern: exactly one integer conversion, %% allowed. */
 bool CheckPattern(const std::string& pattern, std::string& why)
@@ -692,245 +75,6 @@ bool CheckPattern(const std::string& pattern, std::string& why)
     return false;
   }
   return true;
-}
-
-std::string Describe(const std::exception& e)
-{
-  std::string what = e.what() ? e.what() : "";
-  if (dynamic_cast<const std::bad_alloc*>(&e))
-  {
-    what = "out of memory (a corrupt size?)";
-  }
-  return Printable(what);
-}
-
-struct GridSummary
-{
-  std::string Name;
-  std::string Type;
-  vtkIdType Count = 0;
-  int IndexBounds[6] = { 0, -1, 0, -1, 0, -1 };
-  double Bounds[6] = { 1, -1, 1, -1, 1, -1 };
-};
-
-std::string ListGrids(const std::vector<GridSummary>& grids)
-{
-  if (grids.empty())
-  {
-    return "the file holds no grids";
-  }
-  std::string s = "the file holds ";
-  for (std::size_t i = 0; i < grids.size(); ++i)
-  {
-    s += (i ? ", " : "") + Quote(grids[i].Name) + " (" + grids[i].Type + ")";
-  }
-  return s;
-}
-
-/* Opens a VDB file for reading with the size check; throws OpenVDB's exceptions, returns
- * false with a message for what is not an exception (missing file, truncation). `names`
- * receives the grid names in file order when the file has grid offsets. */
-bool OpenFile(openvdb::io::File& file, const std::string& topologyGrid, std::string& error,
-  std::vector<std::string>* names = nullptr)
-{
-  const std::string& path = file.filename();
-  std::error_code ec;
-  const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status))
-  {
-    error = Quote(path) + ": no such file";
-    return false;
-  }
-  if (std::filesystem::is_directory(status))
-  {
-    error = Quote(path) + " is a directory, not a .vdb file";
-    return false;
-  }
-  const uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec)
-  {
-    error = Quote(path) + ": cannot read the file size (" + ec.message() + ")";
-    return false;
-  }
-  if (!vtkOpenVDBVolumeReader::CanReadFile(path.c_str()))
-  {
-    error = Quote(path) + " is not a VDB file (it does not start with OpenVDB's magic number)";
-    return false;
-  }
-  // Checked before OpenVDB parses anything beyond the magic number.
-  FileChecker checker;
-  try
-  {
-    checker.Check(path, int64_t(size), topologyGrid);
-  }
-  catch (const std::exception& e)
-  {
-    std::string why = Describe(e);
-    if (why.rfind("IoError: ", 0) == 0)
-    {
-      why = why.substr(9);
-    }
-    error = Quote(path) + " is truncated or corrupt: " + why;
-    return false;
-  }
-  if (checker.Streamed)
-  {
-    error = Quote(path) + " has no grid offsets (it was written as a stream, openvdb::io::Stream): "
-      "OpenVDB reads such files without checking any size, so they are not supported; "
-      "write it with openvdb::io::File (openvdb.write in Python)";
-    return false;
-  }
-  // Without delayed loading: every read error surfaces in readGrid, not later.
-  file.open(/*delayLoad=*/false);
-  if (names)
-  {
-    *names = checker.Names;
-  }
-  return true;
-}
-
-/* Walks the tree of float grid `gridName` before OpenVDB reads it in full (FileChecker). */
-void DeepCheck(const std::string& path, const std::string& gridName)
-{
-  std::error_code ec;
-  const uintmax_t size = std::filesystem::file_size(path, ec);
-  FileChecker checker;
-  checker.Check(path, ec ? 0 : int64_t(size), gridName);
-}
-
-/* The grids of an open file in file order (`names`, or io::File's order by name when that is
- * empty), from metadata. A grid without statistics is read in full if it is the float grid
- * `checkedGrid` (the one FileChecker walked); otherwise its count is -1 (unknown). */
-std::vector<GridSummary> Summarize(
-  openvdb::io::File& file, const std::vector<std::string>& names, const std::string& checkedGrid)
-{
-  std::vector<GridSummary> out;
-  openvdb::GridPtrVecPtr grids;
-  if (names.empty())
-  {
-    grids = file.readAllGridMetadata();
-  }
-  else
-  {
-    grids.reset(new openvdb::GridPtrVec);
-    for (const std::string& name : names)
-    {
-      grids->push_back(file.readGridMetadata(name));
-    }
-  }
-  for (std::size_t i = 0; i < grids->size(); ++i)
-  {
-    const openvdb::GridBase::Ptr& g = (*grids)[i];
-    GridSummary s;
-    // The unique name ("density[1]" for a second grid called "density") is what readGrid takes.
-    s.Name = names.empty() ? g->getName() : names[i];
-    s.Type = g->valueType();
-    openvdb::Index64 count = 0;
-    openvdb::CoordBBox box;
-    s.Count = -1;
-    if (StatsFromMetadata(*g, count, box))
-    {
-      s.Count = vtkIdType(count);
-    }
-    else if ((s.Name == checkedGrid || g->getName() == checkedGrid) &&
-      g->isType<openvdb::FloatGrid>())
-    {
-      // Check the grid that is read: s.Name (the descriptor's unique name). The grid's "name"
-      // metadata can differ from it in a corrupt file, and checking checkedGrid then checked
-      // nothing (found by fuzzing: OpenVDB read an unchecked tree and allocated a Blosc chunk
-      // whose size was text).
-      DeepCheck(file.filename(), s.Name);
-      openvdb::GridBase::Ptr full = file.readGrid(s.Name);
-      count = full->activeVoxelCount();
-      box = count ? full->evalActiveVoxelBoundingBox() : openvdb::CoordBBox();
-      s.Count = vtkIdType(count);
-    }
-    if (!box.empty())
-    {
-      for (int a = 0; a < 3; ++a)
-      {
-        s.IndexBounds[2 * a] = box.min()[a];
-        s.IndexBounds[2 * a + 1] = box.max()[a];
-        s.Bounds[2 * a] = std::numeric_limits<double>::infinity();
-        s.Bounds[2 * a + 1] = -std::numeric_limits<double>::infinity();
-      }
-      // The eight corner voxels' centres (any linear or frustum transform).
-      for (int c = 0; c < 8; ++c)
-      {
-        const openvdb::Vec3d ijk((c & 1 ? box.max() : box.min())[0],
-          (c & 2 ? box.max() : box.min())[1], (c & 4 ? box.max() : box.min())[2]);
-        const openvdb::Vec3d w = g->transform().indexToWorld(ijk);
-        for (int a = 0; a < 3; ++a)
-        {
-          s.Bounds[2 * a] = std::min(s.Bounds[2 * a], w[a]);
-          s.Bounds[2 * a + 1] = std::max(s.Bounds[2 * a + 1], w[a]);
-        }
-      }
-    }
-    out.push_back(s);
-  }
-  return out;
-}
-
-/* Everything RequestInformation needs from one file, without reading voxels (unless the
- * statistics metadata is missing). `listing` (the first file) receives the grid summaries. */
-bool ScanFile(const std::string& path, const std::string& gridName,
-  std::vector<GridSummary>* listing, Frame& frame, std::string& error)
-{
-  frame.File = path;
-  try
-  {
-    openvdb::io::File file(path);
-    std::vector<std::string> names;
-    // The metadata only (RequestInformation opens every file of a sequence): no tree walk.
-    if (!OpenFile(file, std::string(), error, &names))
-    {
-      return false;
-    }
-    std::vector<GridSummary> grids;
-    if (listing || !file.hasGrid(gridName))
-    {
-      grids = Summarize(file, names, gridName);
-      if (listing)
-      {
-        *listing = grids;
-      }
-    }
-    if (!file.hasGrid(gridName))
-    {
-      error = Quote(path) + " has no grid named " + Quote(gridName) + "; " + ListGrids(grids);
-      return false;
-    }
-    openvdb::GridBase::Ptr grid = file.readGridMetadata(gridName);
-    if (!grid->isType<openvdb::FloatGrid>())
-    {
-      error = "grid " + Quote(gridName) + " of " + Quote(path) + " holds " + grid->valueType() +
-        " values (" + grid->type() + "); only float grids are supported";
-      return false;
-    }
-    std::string why;
-    if (!GetAxisMap(grid->transform(), frame.Map, why))
-    {
-      error = "grid " + Quote(gridName) + " of " + Quote(path) + ": " + why;
-      return false;
-    }
-    frame.Matrix = grid->transform().baseMap()->getAffineMap()->getMat4();
-    openvdb::Index64 count = 0;
-    if (!StatsFromMetadata(*grid, count, frame.Box))
-    {
-      DeepCheck(path, gridName);
-      openvdb::GridBase::Ptr full = file.readGrid(gridName);
-      frame.Box =
-        full->activeVoxelCount() ? full->evalActiveVoxelBoundingBox() : openvdb::CoordBBox();
-    }
-    return true;
-  }
-  catch (const std::exception& e)
-  {
-    error =
-      "cannot read " + Quote(path) + " (not a VDB file, truncated or corrupt?): " + Describe(e);
-    return false;
-  }
 }
 
 /* Index of the time value nearest to t (0 when there are none). */
@@ -1120,7 +264,7 @@ int vtkOpenVDBVolumeReader::RequestInformation(
     std::string why;
     if (!CheckPattern(this->FilePattern, why))
     {
-      vtkErrorMacro("FilePattern " << Quote(this->FilePattern) << " is not usable: " << why);
+      vtkErrorMacro("FilePattern " << vs::Quote(this->FilePattern) << " is not usable: " << why);
       return 1;
     }
     if (this->FileIndexRange[1] < this->FileIndexRange[0])
@@ -1154,12 +298,13 @@ int vtkOpenVDBVolumeReader::RequestInformation(
     return 1;
   }
 
-  InitializeOpenVDB();
+  vs::OpenVDBFile::Initialize();
   for (std::size_t s = 0; s < files.size(); ++s)
   {
     Frame frame;
     std::string error;
-    if (!ScanFile(files[s], this->GridName, s == 0 ? &in.Grids : nullptr, frame, error))
+    if (!vs::OpenVDBFile::Scan(
+          files[s], this->GridName, s == 0 ? &in.Grids : nullptr, frame, error))
     {
       in.Frames.clear();
       vtkErrorMacro(<< (files.size() > 1 ? "time step " + std::to_string(s) + ": " : std::string())
@@ -1186,12 +331,12 @@ int vtkOpenVDBVolumeReader::RequestInformation(
     in.UseUnion = true;
     for (int s = 1; s < n && in.UseUnion; ++s)
     {
-      in.UseUnion = SameTransform(in.Frames[s].Matrix, in.Frames[0].Matrix);
+      in.UseUnion = vs::SameTransform(in.Frames[s].Matrix, in.Frames[0].Matrix);
     }
     if (!in.UseUnion)
     {
       vtkWarningMacro("UnionBounds: the files of the sequence do not share one transform (e.g. "
-        << Quote(in.Frames[0].File)
+        << vs::Quote(in.Frames[0].File)
         << " and another differ in voxel size or origin); each time step covers its own bounding "
            "box.");
     }
@@ -1205,12 +350,12 @@ int vtkOpenVDBVolumeReader::RequestInformation(
   }
 
   const int step = in.StepFor(outInfo);
-  Geometry g;
+  vs::OutputGeometry g;
   std::string error;
-  if (!MakeGeometry(
+  if (!vs::MakeOutputGeometry(
         in.BoxFor(step), in.Frames[step].Map, this->Padding, this->MaximumNumberOfPoints, g, error))
   {
-    vtkErrorMacro(<< Quote(in.Frames[step].File) << ": " << error);
+    vtkErrorMacro(<< vs::Quote(in.Frames[step].File) << ": " << error);
     return 1;
   }
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), g.Extent, 6);
@@ -1238,9 +383,9 @@ int vtkOpenVDBVolumeReader::RequestUpdateExtent(
   {
     return 1;
   }
-  Geometry g;
+  vs::OutputGeometry g;
   std::string error;
-  if (MakeGeometry(
+  if (vs::MakeOutputGeometry(
         in.BoxFor(step), in.Frames[step].Map, this->Padding, this->MaximumNumberOfPoints, g, error))
   {
     outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), g.Extent, 6);
@@ -1269,12 +414,12 @@ int vtkOpenVDBVolumeReader::RequestData(
   const Frame& frame = in.Frames[step];
   const std::string stepText =
     in.Frames.size() > 1 ? "time step " + std::to_string(step) + ": " : std::string();
-  Geometry g;
+  vs::OutputGeometry g;
   std::string error;
-  if (!MakeGeometry(
+  if (!vs::MakeOutputGeometry(
         in.BoxFor(step), frame.Map, this->Padding, this->MaximumNumberOfPoints, g, error))
   {
-    vtkErrorMacro(<< stepText << Quote(frame.File) << ": " << error);
+    vtkErrorMacro(<< stepText << vs::Quote(frame.File) << ": " << error);
     return 1;
   }
 
@@ -1282,7 +427,7 @@ int vtkOpenVDBVolumeReader::RequestData(
   try
   {
     openvdb::io::File file(frame.File);
-    if (!OpenFile(file, this->GridName, error))
+    if (!vs::OpenVDBFile::Open(file, this->GridName, error))
     {
       vtkErrorMacro(<< stepText << error);
       return 1;
@@ -1292,96 +437,46 @@ int vtkOpenVDBVolumeReader::RequestData(
     openvdb::GridBase::Ptr meta = file.readGridMetadata(this->GridName);
     if (!meta->isType<openvdb::FloatGrid>())
     {
-      vtkErrorMacro(<< stepText << "grid " << Quote(this->GridName) << " of " << Quote(frame.File)
-                    << " holds " << meta->valueType() << " values; only float grids are supported");
+      vtkErrorMacro(<< stepText << "grid " << vs::Quote(this->GridName) << " of "
+                    << vs::Quote(frame.File) << " holds " << meta->valueType()
+                    << " values; only float grids are supported");
       return 1;
     }
     grid = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid(this->GridName));
     if (!grid)
     {
-      vtkErrorMacro(<< stepText << "cannot read grid " << Quote(this->GridName) << " of "
-                    << Quote(frame.File));
+      vtkErrorMacro(<< stepText << "cannot read grid " << vs::Quote(this->GridName) << " of "
+                    << vs::Quote(frame.File));
       return 1;
     }
-    if (!SameTransform(grid->transform().baseMap()->getAffineMap()->getMat4(), frame.Matrix))
+    if (!vs::SameTransform(grid->transform().baseMap()->getAffineMap()->getMat4(), frame.Matrix))
     {
       vtkErrorMacro(
-        << stepText << Quote(frame.File)
+        << stepText << vs::Quote(frame.File)
         << " changed since RequestInformation (another transform); call Modified() to re-read it.");
       return 1;
     }
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< stepText << "cannot read grid " << Quote(this->GridName) << " of "
-                  << Quote(frame.File) << " (truncated or corrupt?): " << Describe(e));
+    vtkErrorMacro(<< stepText << "cannot read grid " << vs::Quote(this->GridName) << " of "
+                  << vs::Quote(frame.File) << " (truncated or corrupt?): " << vs::Describe(e));
     return 1;
   }
   this->UpdateProgress(0.6);
 
-  // Damaged compressed leaf data (issue 13, item 2): Blosc carries no checksum, so a damaged chunk
-  // of the right size decodes to other values without an error. What can be checked is: the
-  // active voxels against the count the writer recorded (damaged value masks), and the values
-  // themselves: a density grid holds finite values, and a fog volume (OpenVDB's convention:
-  // densities from 0 to 1) none far outside [0, 1]. Damage that decodes to plausible values is
-  // undetectable in this format.
+  // The values and the active voxels' box against the file's metadata (damaged leaf data; a
+  // corrupt box, checked before allocating).
+  const std::string damage = vs::OpenVDBFile::CheckGrid(*grid, frame, this->GridName);
+  if (!damage.empty())
   {
-    const auto recorded = grid->getMetadata<openvdb::Int64Metadata>(openvdb::GridBase::META_FILE_VOXEL_COUNT);
-    if (recorded && recorded->value() >= 0 && openvdb::Index64(recorded->value()) != grid->activeVoxelCount())
-    {
-      vtkErrorMacro(<< stepText << "grid " << Quote(this->GridName) << " of " << Quote(frame.File) << " has "
-                    << grid->activeVoxelCount() << " active voxels but the file's metadata says "
-                    << recorded->value() << " (damaged leaf data?)");
-      return 1;
-    }
-    openvdb::Index64 nonFinite = 0;
-    float lo = std::numeric_limits<float>::max(), hi = -std::numeric_limits<float>::max();
-    for (auto it = grid->cbeginValueOn(); it; ++it)
-    {
-      const float v = *it;
-      if (!std::isfinite(v))
-      {
-        ++nonFinite;
-      }
-      else
-      {
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-      }
-    }
-    if (nonFinite > 0)
-    {
-      vtkErrorMacro(<< stepText << nonFinite << " active voxels of grid " << Quote(this->GridName) << " of "
-                    << Quote(frame.File) << " are NaN or infinite (damaged leaf data?)");
-      return 1;
-    }
-    // Fog volumes: far outside [0, 1] (by more than a factor 1000: real exports go somewhat past 1).
-    if (grid->getGridClass() == openvdb::GRID_FOG_VOLUME && grid->activeVoxelCount() > 0 &&
-      (lo < -1e3f || hi > 1e3f))
-    {
-      vtkErrorMacro(<< stepText << "grid " << Quote(this->GridName) << " of " << Quote(frame.File)
-                    << " is a fog volume (densities from 0 to 1) but holds values from " << lo << " to " << hi
-                    << " (damaged leaf data?)");
-      return 1;
-    }
-  }
-
-  // The extent came from the file's metadata: it must describe these voxels (checked before
-  // allocating, a corrupt box being the way to a huge allocation).
-  const openvdb::CoordBBox active =
-    grid->activeVoxelCount() ? grid->evalActiveVoxelBoundingBox() : openvdb::CoordBBox();
-  if (active != frame.Box && !(active.empty() && frame.Box.empty()))
-  {
-    vtkErrorMacro(<< stepText << "the active voxels of grid " << Quote(this->GridName) << " of "
-                  << Quote(frame.File) << " span " << Str(active)
-                  << " but the file's metadata says " << Str(frame.Box)
-                  << " (corrupt or stale file_bbox_min/max metadata).");
+    vtkErrorMacro(<< stepText << damage);
     return 1;
   }
   if (g.Empty)
   {
     vtkWarningMacro(
-      << stepText << "grid " << Quote(this->GridName) << " of " << Quote(frame.File)
+      << stepText << "grid " << vs::Quote(this->GridName) << " of " << vs::Quote(frame.File)
       << " has no active voxels: the output is one voxel of background at index (0,0,0)"
       << (this->Padding ? " plus padding" : "") << ".");
   }
@@ -1395,13 +490,13 @@ int vtkOpenVDBVolumeReader::RequestData(
   catch (const std::bad_alloc&)
   {
     vtkErrorMacro(<< stepText << "out of memory for " << g.Points << " voxels of "
-                  << Quote(frame.File));
+                  << vs::Quote(frame.File));
     return 1;
   }
   if (values->GetNumberOfValues() != g.Points)
   {
     vtkErrorMacro(<< stepText << "out of memory for " << g.Points << " voxels of "
-                  << Quote(frame.File));
+                  << vs::Quote(frame.File));
     return 1;
   }
 
