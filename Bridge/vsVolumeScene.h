@@ -86,7 +86,7 @@ public:
   /** Counters of the work done (for tests of the skip rules). */
   int Uploads() const { return this->Uploads_; }
 
-  /** The property's InterpolationType as the shaders take it (shared/interpolation.h:
+  /** The property's InterpolationType as the shaders take it (sampling/interpolation.h:
    *  VS_INTERPOLATION_LINEAR or VS_INTERPOLATION_NEAREST). */
   uint32_t Interpolation() const { return this->Interpolation_; }
   int TableBuilds() const { return this->TableBuilds_; }

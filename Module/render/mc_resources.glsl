@@ -48,7 +48,7 @@ layout(std430, binding = VS_MC_COMPENSATION) buffer Compensation { vec4 uComp[];
 layout(std430, binding = VS_MC_SQUARES) buffer Squares { vec4 uSq[]; };
 /* Samples each pixel holds (W x H), then one counter of the pixels a dispatch left short of target. */
 layout(std430, binding = VS_MC_PROGRESS) buffer Progress { uint uCount[]; };
-/* The direction table (shared/direction_table.h): per cell, the shares of its map's quadtree nodes. */
+/* The direction table (sampling/direction_table.h): per cell, the shares of its map's quadtree nodes. */
 layout(binding = VS_MC_TABLE) uniform usamplerBuffer uTable; /* r32ui */
 /* An integer-coded volume's quads: texel (x, y, z) packs the 8-bit codes of voxels (x, y), (x + 1, y),
  * (x, y + 1), (x + 1, y + 1) of slice z; the scalar is code + P.dims.w. */

@@ -1,5 +1,5 @@
 /*
- * direction_table.glsl — builds the grid strategies' direction table (shared/direction_table.h):
+ * direction_table.glsl — builds the grid strategies' direction table (sampling/direction_table.h):
  * for every visibility cell, the shares of every inner node of its D x D map's quadtree, the map's
  * entries being those the render kernel would warp at a scatter point in the cell (map_entry,
  * direction_map.glsl). One invocation per cell. Included by direction_table_<format>.comp, which

@@ -1,5 +1,5 @@
 // vsDirectionTable.h — the grid strategies' direction maps made once per
-// visibility cell (shared/direction_table.h, direction_table.glsl): per cell,
+// visibility cell (sampling/direction_table.h, direction_table.glsl): per cell,
 // the 16-bit shares of every inner node of its D x D map's quadtree, which the
 // render kernel descends in log2 D reads instead of building the map (2 D²
 // reads and its sum pyramid) at every scatter event.

@@ -364,7 +364,7 @@ TEST(MonteCarlo, RayMarchedTransmittanceIsUnbiased)
   // (the control's exact part, the spacing, NaN, the budget): the series' own correction is below
   // what 64 pixels at 1024 samples resolve here (with the series switched off, exp(-march) alone,
   // this test still passed), so the series' unbiasedness is RayMarchingSeries' CPU test of the
-  // shader's functions (shared/ray_marching.h), on a march that is far off.
+  // shader's functions (sampling/ray_marching.h), on a march that is far off.
   for (int medium : { 0, 1, 2 })
   {
     const bool nan = medium == 1;

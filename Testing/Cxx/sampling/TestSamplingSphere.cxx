@@ -1,4 +1,4 @@
-// Uniform sphere and phase-function sampling (shared/sphere.h), exactly as the
+// Uniform sphere and phase-function sampling (sampling/sphere.h), exactly as the
 // shaders compile it: chi-square against each sampler's own pdf, plus the
 // chi-square helper itself.
 #include "sampling/rng.h"

@@ -1,4 +1,4 @@
-// The five direction-sampling strategies (shared/strategies.h), exactly as the
+// The five direction-sampling strategies (sampling/strategies.h), exactly as the
 // shaders compile them: every strategy on synthetic visibility maps and
 // environments is chi-square tested against its own pdf, its pdf integrates to
 // 1, sample() reports the pdf that pdf(direction) gives, and the estimator

@@ -1,4 +1,4 @@
-// Hierarchical sample warping (shared/warp.h), exactly as the shaders compile
+// Hierarchical sample warping (sampling/warp.h), exactly as the shaders compile
 // it: the tabulated n x n warp, and the descent of the environment
 // importance quadtree. Chi-square tests of the warped sample against the
 // probabilities the warp reports, plus the numerical edge cases.

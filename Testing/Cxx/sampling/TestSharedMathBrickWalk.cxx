@@ -1,4 +1,4 @@
-// The walk through a majorant grid's bricks (shared/brick_walk.h), as the render kernel's
+// The walk through a majorant grid's bricks (sampling/brick_walk.h), as the render kernel's
 // majorant_segment and the sweeps' empty-space skip take it: the exit distance of a box is exact,
 // a walk's segments tile the ray, each lies in the brick it was picked for, and a walk takes no
 // more segments than the bricks the ray crosses (a 3D DDA's count) plus rounding slivers.

@@ -1,5 +1,5 @@
 // The series of Kettunen et al. 2021's unbiased ray-marching transmittance estimator
-// (shared/ray_marching.h): the roulette's order probabilities and their expected order (the paper's
+// (sampling/ray_marching.h): the roulette's order probabilities and their expected order (the paper's
 // 0.31945), the march's sample count, and the estimator itself on the CPU, built from the same
 // functions as the shader's march_transmittance: its mean is exp(-tau) within the standard error on
 // a medium whose ray march is far off (where exp(-march), plain ray marching, is visibly biased).

@@ -1,4 +1,4 @@
-// The pixels' scrambled Sobol sequences (shared/sobol.h): the loop-free second dimension equals the
+// The pixels' scrambled Sobol sequences (sampling/sobol.h): the loop-free second dimension equals the
 // textbook generator, every prefix of 2^m points of every seed is a (0,m,2)-net (one point in every
 // elementary box), a single point is uniform over seeds (chi-square: the estimator stays unbiased),
 // and two seeds' sequences are not correlated.

@@ -1,4 +1,4 @@
-// The round-robin order of lazy visibility updates (shared/update_order.h), exactly as the
+// The round-robin order of lazy visibility updates (sampling/update_order.h), exactly as the
 // mapper uses it: a permutation of the D x D directions per cycle, stratified (the bit-reversed
 // de-interleaved counter), and spread on the sphere.
 #include "sampling/octahedral.h"
