@@ -650,7 +650,6 @@ private:
    *  and upload keep this one busy meanwhile): the strategy's, or Environment sampling's for Auto. */
   void StartPrewarm(vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars);
   void UpdateVisibilityGrid(bool needGrid, bool usesGridOnly);
-  std::vector<uint8_t> RequiredDirections(int side);
   void NoteSweeps(unsigned int directions, double deviceSeconds, double wallSeconds);
   uint32_t AccumulatedSamplesOf(bool autoStrategy);
   std::vector<float> CombinedMean(bool autoStrategy);
