@@ -7,6 +7,8 @@
  * nothing is optimised away. Each invocation adds its step count to uCount[0].
  * The renderer's kernel rate is compared against this (`vissweep bench overhead`).
  */
+#include "volume_params.h"
+
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(binding = 0, r32f) uniform readonly image3D uVolume;
 layout(std430, binding = 1) readonly buffer TransferFunction { vec4 uTF[]; };
@@ -16,7 +18,7 @@ layout(push_constant) uniform Push
 {
   uvec4 rays;  /* x, y: rays per side */
   vec4 dims;   /* volume dimensions */
-  vec4 tf;     /* transfer function lookup parameters */
+  VsTransferFunction tf;
   vec4 dir;    /* xyz: ray direction (index space), w: step in voxels */
 } pc;
 

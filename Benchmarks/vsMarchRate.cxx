@@ -19,7 +19,9 @@ namespace
 struct Push
 {
   glm::uvec4 Rays;
-  glm::vec4 Dims, TF, Dir;
+  glm::vec4 Dims;
+  vs::shared::VsTransferFunction TF;
+  glm::vec4 Dir;
 };
 }
 
@@ -37,9 +39,8 @@ MarchRate MeasureMarchRate(const std::shared_ptr<Context>& context, const Device
   Buffer count(context, sizeof(uint32_t), "march sample count");
   DescriptorSet set(*pipeline);
   set.Bind(0, volume.Image()).Bind(1, tf.Lut()).Bind(2, sums).Bind(3, count);
-  auto p = tf.Params();
-  Push push{ glm::uvec4(rays, rays, 0u, 0u), glm::vec4(dims[0], dims[1], dims[2], 0.0f),
-    glm::vec4(p[0], p[1], p[2], p[3]), glm::vec4(0.57f, 0.61f, 0.55f, step) };
+  Push push{ glm::uvec4(rays, rays, 0u, 0u), glm::vec4(dims[0], dims[1], dims[2], 0.0f), tf.Params(),
+    glm::vec4(0.57f, 0.61f, 0.55f, step) };
   MarchRate best;
   for (int r = 0; r <= repeats; ++r) // r = 0 warms up (and compiles)
   {

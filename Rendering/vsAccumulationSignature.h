@@ -5,7 +5,7 @@
 #ifndef vsAccumulationSignature_h
 #define vsAccumulationSignature_h
 
-#include "sampling/render_params.h"
+#include "sampling/mc_params.h"
 
 #include <vector>
 
@@ -15,7 +15,7 @@ class AccumulationSignature
 {
 public:
   /** Every value of `p` but directionSources, integers by value. */
-  static std::vector<double> Of(const vs::shared::VsRenderParams& p);
+  static std::vector<double> Of(const vs::shared::VsMonteCarloParams& p);
   /** Equal sizes and values equal up to a relative 1e-6. */
   static bool NearlyEqual(const std::vector<double>& a, const std::vector<double>& b);
 };

@@ -13,7 +13,7 @@ namespace vs
 // What an accumulator of n samples of alpha 1 (a pixel that sees the environment in the opaque
 // image) averages to, as MonteCarloPass::Mean() computes it (the sum is n exactly), and its
 // per-sample variance as MonteCarloPass::Variance() computes it: under the coverage alpha
-// (background.w = 2) GetRadiance() reports these, as the opaque image did.
+// (VS_BACKGROUND_ENVIRONMENT_COVERAGE) GetRadiance() reports these, as the opaque image did.
 float CoverageComposite::OpaqueMean(uint32_t n)
 {
   if (n == 0)

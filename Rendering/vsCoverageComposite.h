@@ -1,5 +1,5 @@
 // vsCoverageComposite.h — the mapper's Monte Carlo image as the window shows it, under the coverage
-// alpha (the environment as the renderer's background, background.w = 2): the alpha an opaque image
+// alpha (the environment as the renderer's background, VS_BACKGROUND_ENVIRONMENT_COVERAGE): the alpha an opaque image
 // would have where a pixel sees the environment (what GetRadiance() reports there), the display
 // colour of the environment behind each pixel (made again only when the view, the environment or the
 // display transform changed), and the premultiplied display image, composited over that background

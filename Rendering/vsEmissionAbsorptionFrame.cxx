@@ -5,6 +5,7 @@
 #include "vtkVisibilitySweepVolumeMapper.h"
 
 #include "vsTransferFunctionTable.h"
+#include "vsVolumeParams.h"
 #include "vsVolumeScene.h"
 #include "sampling/interpolation.h"
 
@@ -30,40 +31,31 @@ bool EmissionAbsorptionFrame::IsProjection(int blendMode)
     blendMode == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND || blendMode == vtkVolumeMapper::ADDITIVE_BLEND;
 }
 
-shared::VsFrameParams EmissionAbsorptionFrame::Params(vtkVisibilitySweepVolumeMapper* mapper, vtkRenderer* ren,
+shared::VsEmissionAbsorptionParams EmissionAbsorptionFrame::Params(vtkVisibilitySweepVolumeMapper* mapper, vtkRenderer* ren,
   vtkVolume* vol, const VolumeGeometry& geometry, const CameraView& view, const VolumeScene& scene, uint32_t frame,
   bool& shade)
 {
   const Viewport& vp = view.Port;
-  vs::shared::VsFrameParams p{};
-  p.invViewProj = view.InvViewProj;
-  p.worldToIndex = glm::mat4(geometry.WorldToIndex);
-  p.indexToWorld = glm::mat4(geometry.IndexToWorld);
-  p.boxMin = glm::vec4(geometry.BoxMin, 0.0f);
-  p.boxMax = glm::vec4(geometry.BoxMax, 0.0f);
-  p.dims = glm::vec4(geometry.Dims[0], geometry.Dims[1], geometry.Dims[2], 0.0f);
-  auto tf = scene.TF().Params();
-  p.tf = glm::vec4(tf[0], tf[1], tf[2], tf[3]);
-  p.viewport = glm::uvec4(vp.Width, vp.Height, frame, static_cast<uint32_t>(mapper->GetSeed()));
-  double step = mapper->GetSampleDistance() > 0.0 ? mapper->GetSampleDistance() : 0.5 * geometry.MinSpacing;
-  p.march = glm::vec4(float(step), 0.995f, 0.0f, 0.0f);
-  auto planes = vs::FrameGeometry::WorldPlanes(mapper->GetClippingPlanes(), geometry);
-  for (size_t i = 0; i < planes.size(); ++i)
-  {
-    p.clipPlanes[i] = glm::vec4(planes[i]);
-  }
-  p.counts.x = uint32_t(planes.size());
-  p.counts.y = scene.Interpolation();
-  p.cropLo = glm::vec4(geometry.CropLo, 0.0f);
-  p.cropHi = glm::vec4(geometry.CropHi, 0.0f);
-  p.crop = glm::uvec4(geometry.CropFlags, 0u, 0u, 0u);
+  vs::shared::VsEmissionAbsorptionParams p{};
+  p.camera.invViewProj = view.InvViewProj;
+  p.camera.width = uint32_t(vp.Width);
+  p.camera.height = uint32_t(vp.Height);
+  p.camera.frame = frame;
+  p.camera.seed = static_cast<uint32_t>(mapper->GetSeed());
+  p.volume = MakeVolumeParams(geometry, scene.TF(), scene.Interpolation(),
+    vs::FrameGeometry::WorldPlanes(mapper->GetClippingPlanes(), geometry));
+  const double step = mapper->GetSampleDistance() > 0.0 ? mapper->GetSampleDistance() : 0.5 * geometry.MinSpacing;
+  p.step = float(step);
+  p.terminationOpacity = 0.995f;
   if (IsProjection(mapper->GetBlendMode()))
   {
-    p.counts.z = uint32_t(mapper->GetBlendMode()); // VS_BLEND_* are VTK's values
+    p.blend = uint32_t(mapper->GetBlendMode()); // VS_BLEND_* are VTK's values
     const double lo = std::clamp(mapper->GetAverageIPScalarRange()[0], -3.0e38, 3.0e38);
     const double hi = std::clamp(mapper->GetAverageIPScalarRange()[1], -3.0e38, 3.0e38);
     const double unit = vol && vol->GetProperty() ? vol->GetProperty()->GetScalarOpacityUnitDistance(0) : 1.0;
-    p.projection = glm::vec4(float(lo), float(hi), float(std::max(unit, 1e-30)), 0.0f);
+    p.averageMin = float(lo);
+    p.averageMax = float(hi);
+    p.opacityUnitDistance = float(std::max(unit, 1e-30));
   }
   // The property's shading (Phong with VTK's headlight, two-sided) in the composite; the
   // projections are not shaded, as in vtkGPUVolumeRayCastMapper.
@@ -71,11 +63,14 @@ shared::VsFrameParams EmissionAbsorptionFrame::Params(vtkVisibilitySweepVolumeMa
   shade = property && property->GetShade(0) && !IsProjection(mapper->GetBlendMode());
   if (shade)
   {
-    p.shading = glm::vec4(float(property->GetAmbient(0)), float(property->GetDiffuse(0)),
-      float(property->GetSpecular(0)), float(property->GetSpecularPower(0)));
+    p.ambient = float(property->GetAmbient(0));
+    p.diffuse = float(property->GetDiffuse(0));
+    p.specular = float(property->GetSpecular(0));
+    p.specularPower = float(property->GetSpecularPower(0));
     double dop[3];
     ren->GetActiveCamera()->GetDirectionOfProjection(dop);
-    p.light = glm::vec4(float(-dop[0]), float(-dop[1]), float(-dop[2]), 1.0f);
+    p.lightDirection = glm::vec3(float(-dop[0]), float(-dop[1]), float(-dop[2]));
+    p.lightIntensity = 1.0f;
   }
   return p;
 }

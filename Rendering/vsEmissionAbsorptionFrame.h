@@ -10,7 +10,7 @@
 #include "vsFrameGeometry.h"
 #include "vsVoxelPicker.h"
 
-#include "sampling/frame_params.h"
+#include "sampling/ea_params.h"
 
 #include <glm/glm.hpp>
 
@@ -31,7 +31,7 @@ public:
   static bool IsProjection(int blendMode);
   /** The emission-absorption pass's parameters for the frame `frame` of `view` over `geometry`;
    *  `shade` tells whether the property's shading applies. */
-  static shared::VsFrameParams Params(vtkVisibilitySweepVolumeMapper* mapper, vtkRenderer* ren, vtkVolume* vol,
+  static shared::VsEmissionAbsorptionParams Params(vtkVisibilitySweepVolumeMapper* mapper, vtkRenderer* ren, vtkVolume* vol,
     const VolumeGeometry& geometry, const CameraView& view, const VolumeScene& scene, uint32_t frame, bool& shade);
   /** The volume the voxel picker marches: the mapper's input, the property's opacity, the scene's
    *  (cropped) geometry, interpolation and gradient-opacity factor, the clipping planes. */

@@ -66,7 +66,7 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   double LastRenderSeconds = 0.0;     // device seconds of the last Monte Carlo frame (the sweep budget)
   std::vector<double> ImageSignature; // what the accumulated image was rendered for
   vtkSmartPointer<vtkImageData> Radiance;
-  // The pixels of Radiance that see the environment under the coverage alpha (background.w = 2):
+  // The pixels of Radiance that see the environment under the coverage alpha (VS_BACKGROUND_ENVIRONMENT_COVERAGE):
   // their "Alpha" (and variance) are set to what the opaque image had, so GetRadiance() is unchanged.
   std::vector<uint8_t> EnvironmentPixels;
   vs::CoverageComposite Composite; // the display image, over the environment's display colour

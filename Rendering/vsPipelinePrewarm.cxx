@@ -36,7 +36,7 @@ void YieldTheCpuToOtherThreads()
 
 namespace vs
 {
-void PipelinePrewarm::Start(std::shared_ptr<Context> context, const vs::shared::VsRenderParams& p, bool table,
+void PipelinePrewarm::Start(std::shared_ptr<Context> context, const vs::shared::VsMonteCarloParams& p, bool table,
   bool quads, bool cellWalk, bool yieldCpu)
 {
   this->Future = std::async(std::launch::async, [context, p, table, quads, cellWalk, yieldCpu]() {
@@ -80,7 +80,7 @@ bool PipelinePrewarm::GuessQuads(vtkDataArray* scalars)
 }
 
 bool PipelinePrewarm::GuessCellWalk(vtkImageData* input, vtkDataArray* scalars, vtkVolume* volume,
-  double densityScale, vs::shared::VsRenderParams& p)
+  double densityScale, vs::shared::VsMonteCarloParams& p)
 {
   vtkVolumeProperty* property = volume->GetProperty();
   // The cell walk of optically thick bricks (MonteCarloPass::NeedsCellWalk) from the transfer
@@ -108,7 +108,7 @@ bool PipelinePrewarm::GuessCellWalk(vtkImageData* input, vtkDataArray* scalars, 
       {
         extinction = std::max(extinction, samples.Entries[i]);
       }
-      p.worldToIndex = glm::mat4(geometry.WorldToIndex);
+      p.volume.worldToIndex = glm::mat4(geometry.WorldToIndex);
       cellWalk = vs::MonteCarloPass::NeedsCellWalk(double(extinction), vs::MajorantGrid::DefaultBrickSize, p);
     }
     catch (const std::exception&)

@@ -7,7 +7,7 @@
 #ifndef vsPipelinePrewarm_h
 #define vsPipelinePrewarm_h
 
-#include "sampling/render_params.h"
+#include "sampling/mc_params.h"
 
 #include <future>
 #include <memory>
@@ -34,7 +34,7 @@ public:
   void MarkStarted() { this->WasStarted = true; }
   /** Makes the pipeline of `p` (MonteCarloPass::Prewarm) on another thread; yieldCpu: on CPU time
    *  no other thread of the process wants. */
-  void Start(std::shared_ptr<Context> context, const vs::shared::VsRenderParams& p, bool table, bool quads,
+  void Start(std::shared_ptr<Context> context, const vs::shared::VsMonteCarloParams& p, bool table, bool quads,
     bool cellWalk, bool yieldCpu);
   /** Waits for it (its errors are the render's to report: it makes the pipeline again). */
   void Join();
@@ -43,7 +43,7 @@ public:
   static bool GuessQuads(vtkDataArray* scalars);
   /** Whether the first frame walks cells; sets p.worldToIndex when it can tell. */
   static bool GuessCellWalk(vtkImageData* input, vtkDataArray* scalars, vtkVolume* volume, double densityScale,
-    vs::shared::VsRenderParams& p);
+    vs::shared::VsMonteCarloParams& p);
 
 private:
   std::future<void> Future;

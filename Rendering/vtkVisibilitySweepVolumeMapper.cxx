@@ -323,7 +323,7 @@ std::vector<float> vtkVisibilitySweepVolumeMapper::EmissionAbsorptionImage(vtkRe
   vs::FrameGeometry::CheckViewport(*I.Context, vp);
   std::vector<float> depth = vs::WindowCompositor::ReadDepth(ren, vp);
   bool shade = false;
-  const vs::shared::VsFrameParams p =
+  const vs::shared::VsEmissionAbsorptionParams p =
     EmissionAbsorptionFrame::Params(this, ren, vol, geometry, view, *I.Scene, I.Frame++, shade);
   if (!I.EA)
   {
@@ -343,21 +343,21 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume
   {
     return; // the pipeline depends on the regions the geometry keeps: made when known
   }
-  vs::shared::VsRenderParams p{};
+  vs::shared::VsMonteCarloParams p{};
   // Auto's first frames sample the environment (its grid fills in first), and so does TwoStep's
   // first progressive frame: its new grid is flat, where TwoStep is rendered as Environment sampling.
   const bool flatFirst = this->SamplingStrategy == Auto || (this->SamplingStrategy == TwoStep && this->ProgressiveVisibility);
-  p.sampling.x = uint32_t(flatFirst ? int(Environment) : this->SamplingStrategy);
-  p.sampling.z = uint32_t(this->CellMode);
-  p.tracking.z = float(this->CameraEstimator);
-  p.crop.y = uint32_t(this->ControlExtinction);
-  p.crop.z = uint32_t(this->Sampler);
-  p.tracking.w = float(property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
-      ? vs::shared::VS_INTERPOLATION_NEAREST
-      : vs::shared::VS_INTERPOLATION_LINEAR);
-  p.mixture.x = float(this->DefensiveWeight);
-  p.mixture.y = float(this->TransmittanceEstimator);
-  p.crop.w = vs::HasEffectiveGradientOpacity(property) ? 1u : 0u; // the kernel's factor volume
+  p.strategy = uint32_t(flatFirst ? int(Environment) : this->SamplingStrategy);
+  p.cellMode = uint32_t(this->CellMode);
+  p.cameraEstimator = uint32_t(this->CameraEstimator);
+  p.controlExtinction = uint32_t(this->ControlExtinction);
+  p.pixelSampler = uint32_t(this->Sampler);
+  p.volume.interpolation = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
+    ? vs::shared::VS_INTERPOLATION_NEAREST
+    : vs::shared::VS_INTERPOLATION_LINEAR;
+  p.defensiveWeight = float(this->DefensiveWeight);
+  p.transmittance = uint32_t(this->TransmittanceEstimator);
+  p.volume.extinctionFactor = vs::HasEffectiveGradientOpacity(property) ? 1u : 0u; // the kernel's factor volume
   // A pass of its own: the pipeline lands in the context's cache, where the view's pass finds it
   // (waiting for it if the render gets there first); the view's passes come and go (SwitchView).
   const bool table = this->DirectionTable;
@@ -440,8 +440,8 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
                                                              : std::vector<float>(size_t(vp.Width) * vp.Height, 1.0f);
   const std::vector<float> depth = vs::MonteCarloFrame::SubsampledDepth(fullDepth, vp, w, h, sub);
 
-  vs::shared::VsRenderParams p{};
-  vs::MonteCarloFrame::SetPlacement(p, view, geometry, *I.Scene);
+  vs::shared::VsMonteCarloParams p{};
+  vs::MonteCarloFrame::SetPlacement(p, view, geometry, *I.Scene, planes);
   // The visible environment. As the renderer's background (EnvironmentAsBackground, the default):
   // the kernel's radiance includes the environment seen through the volume (GetRadiance() is the
   // same as with the opaque image) and its alpha is the volume's coverage, with which the image is
@@ -457,8 +457,12 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   }
   const bool behind = asBackground && vs::EnvironmentBackground::InFrame(ren);
   const bool paints = this->EnvironmentVisible && !behind && vs::RendererFrame::Claim(ren, this);
-  p.background = glm::vec4(0.0f, 0.0f, 0.0f, asBackground ? 2.0f : paints ? 1.0f : 0.0f);
-  p.viewport = glm::uvec4(w, h, 0u, static_cast<uint32_t>(this->Seed));
+  p.background = asBackground ? vs::shared::VS_BACKGROUND_ENVIRONMENT_COVERAGE
+    : paints                   ? vs::shared::VS_BACKGROUND_ENVIRONMENT
+                               : vs::shared::VS_BACKGROUND_TRANSPARENT;
+  p.camera.width = w;
+  p.camera.height = h;
+  p.camera.seed = static_cast<uint32_t>(this->Seed);
   // Auto: which estimator renders this frame (Environment while the grid is mostly unswept or not
   // needed; then the better one by measured efficiency).
   const vs::VisibilityGrid* grid = needGrid && I.Grid ? I.Grid->Grid() : nullptr;
@@ -489,8 +493,10 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     effective = gridFrame ? int(TwoStep) : int(Environment);
   }
   // The signature sees the user's strategy: Auto's frame-by-frame choice does not restart accumulation.
-  p.sampling = glm::uvec4(uint32_t(autoStrategy && !emptyVolume ? int(Auto) : effective), 1u, uint32_t(this->CellMode),
-    uint32_t(I.Environment.Device().FinestLevel()));
+  p.strategy = uint32_t(autoStrategy && !emptyVolume ? int(Auto) : effective);
+  p.samplesPerFrame = 1u;
+  p.cellMode = uint32_t(this->CellMode);
+  p.environmentLevels = uint32_t(I.Environment.Device().FinestLevel());
   // TwoStep on a flat grid is rendered as Environment sampling, without building a direction table
   // for it (27-170 ms on the MRIs) or paying the table's descent per sample. (Auto waits for a grid
   // that is not flat: `ready` above.)
@@ -504,32 +510,30 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   const double brightest = I.Environment.Device().MaxLuminance() * this->EnvironmentIntensity;
   const float squareScale = brightest > 0.0 && std::isfinite(1.0 / brightest) && 1.0 / brightest < 1e37
     ? float(1.0 / brightest) : 1.0f;
-  p.sampling2 = glm::vec4(float(this->VisibilityEpsilon), float(this->EnvironmentIntensity),
-    float(I.Scene->Majorants().BrickSize()), squareScale);
-  p.tracking.y = float(this->ShadowRays);
-  p.mixture = glm::vec4(float(this->DefensiveWeight), float(this->TransmittanceEstimator), 0.0f, 0.0f);
-  p.tracking.z = float(this->CameraEstimator);
+  p.visibilityEpsilon = float(this->VisibilityEpsilon);
+  p.environmentIntensity = float(this->EnvironmentIntensity);
+  p.squareScale = squareScale;
+  p.defensiveWeight = float(this->DefensiveWeight);
+  p.shadowRays = uint32_t(this->ShadowRays);
+  p.transmittance = uint32_t(this->TransmittanceEstimator);
+  p.cameraEstimator = uint32_t(this->CameraEstimator);
+  p.controlExtinction = uint32_t(this->ControlExtinction);
+  p.pixelSampler = uint32_t(this->Sampler);
   if (grid)
   {
     auto c = grid->Cells();
-    p.grid = glm::uvec4(c[0], c[1], c[2], grid->Side());
-    p.cellSize = glm::vec4(grid->CellSize(), 0.0f);
+    p.grid.cells = glm::uvec3(c[0], c[1], c[2]);
+    p.grid.side = grid->Side();
+    p.grid.cellSize = grid->CellSize();
   }
-  auto b = I.Scene->Majorants().Bricks();
-  p.bricks = glm::uvec4(b[0], b[1], b[2], uint32_t(planes.size()));
-  p.tracking.w = float(I.Scene->Interpolation()); // nearest (VTK's default) or trilinear
-  p.cropLo = glm::vec4(geometry.CropLo, 0.0f);
-  p.cropHi = glm::vec4(geometry.CropHi, 0.0f);
-  p.crop = glm::uvec4(geometry.CropFlags, uint32_t(this->ControlExtinction), uint32_t(this->Sampler), 0u);
-  vs::MonteCarloFrame::SetIndexPlanes(p, planes, geometry);
 
   I.Prewarm.Join();
   if (autoStrategy && grid && !I.GridPrewarm.Started() && I.Grid->SweptDirections() > 0)
   {
     I.GridPrewarm.MarkStarted();
-    vs::shared::VsRenderParams q = p;
-    q.sampling.x = uint32_t(TwoStep);
-    q.crop.w = I.Scene->Volume().Factor() ? 1u : 0u; // as MonteCarloPass::Render sets it
+    vs::shared::VsMonteCarloParams q = p;
+    q.strategy = uint32_t(TwoStep);
+    q.volume.extinctionFactor = I.Scene->Volume().Factor() ? 1u : 0u; // as MonteCarloPass::Render sets it
     const bool cellWalk = vs::MonteCarloPass::NeedsCellWalk(I.Scene->Majorants(), q);
     const bool quads = I.MC && I.MC->LastUsedVolumeQuads();
     const bool table = this->DirectionTable;
@@ -560,7 +564,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     const double* tvp = win->GetTileViewport();
     const uint32_t tx = uint32_t(std::lround(tvp[0] * tileScale[0]));
     const uint32_t ty = uint32_t(std::lround(tvp[1] * tileScale[1]));
-    p.viewport.w = static_cast<uint32_t>(this->Seed) ^ (0x9e3779b9u * (1u + tx + 4099u * ty));
+    p.camera.seed = static_cast<uint32_t>(this->Seed) ^ (0x9e3779b9u * (1u + tx + 4099u * ty));
     ++this->TileRenderCount;
   }
   else
@@ -598,7 +602,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     if (pass == I.MCGrid.get())
     {
       // Its own random streams: sample k of both accumulators must not share random numbers.
-      p.viewport.w = static_cast<uint32_t>(this->Seed) ^ 0x5bd1e995u;
+      p.camera.seed = static_cast<uint32_t>(this->Seed) ^ 0x5bd1e995u;
     }
   }
   const uint32_t accumulated = interactive || tiled ? 0u : this->AccumulatedSamplesOf(autoStrategy);
@@ -615,8 +619,8 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     : frameSpp;
   if (spp > 0)
   {
-    p.sampling.x = uint32_t(effective);
-    p.sampling.y = spp;
+    p.strategy = uint32_t(effective);
+    p.samplesPerFrame = spp;
     pass->SetCountLookups(this->CountLookups);
     pass->SetDirectionTable(this->DirectionTable);
     if (!I.Table)
@@ -697,7 +701,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   {
     const float scale = float(this->EnvironmentIntensity * this->Exposure);
     I.Composite.UpdateBackground(
-      I.Environment.Map(), p.invViewProj, w, h, scale, this->ToneMapping, this->EnvironmentUploadCount);
+      I.Environment.Map(), p.camera.invViewProj, w, h, scale, this->ToneMapping, this->EnvironmentUploadCount);
   }
   const std::vector<float> display =
     I.Composite.Display(mean, environmentPixels, opaqueAlpha, composite, exposure, this->ToneMapping);

@@ -6,7 +6,7 @@
  * per segment, colour from the colour transfer function, a jittered sample in
  * every segment, early termination, rays stopped at the opaque depth.
  * The blend modes MIP, MinIP, average and additive are projections, not light transport: with
- * P.counts.z one of them, the ray is projected instead (project(), as vtkGPUVolumeRayCastMapper).
+ * P.blend one of them, the ray is projected instead (project(), as vtkGPUVolumeRayCastMapper).
  * With VS_EA_FACTOR, the composite's extinction is scaled by the volume's factor (the gradient
  * opacity, uFactor, interpolated as the scalar), as vtkGPUVolumeRayCastMapper applies gradient
  * opacity in composite blending only (not in the projections).
@@ -18,12 +18,12 @@
  */
 #include "bindings.h"
 #include "rng.h"
-#include "frame_params.h"
+#include "ea_params.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = VS_EA_VOLUME, r32f) uniform readonly image3D uVolume;
 layout(std430, binding = VS_EA_TF) readonly buffer TransferFunction { vec4 uTF[]; };
-layout(std430, binding = VS_EA_PARAMS) readonly buffer Params { VsFrameParams P; };
+layout(std430, binding = VS_EA_PARAMS) readonly buffer Params { VsEmissionAbsorptionParams P; };
 layout(std430, binding = VS_EA_DEPTH) readonly buffer Depth { float uDepth[]; };
 layout(std430, binding = VS_EA_RESULT) writeonly buffer Result { vec4 uOut[]; };
 layout(binding = VS_EA_FACTOR_IMAGE, r32f) uniform readonly image3D uFactor; /* read only with VS_EA_FACTOR */
@@ -42,15 +42,15 @@ layout(constant_id = 1) const uint VS_EA_SHADE = 0u;
  * opaque grey. The opacity is that of the transfer function, alpha = 1 - exp(-sigma_t u). */
 vec4 project(vec3 oi, vec3 di, vec2 t, float stepSize, uint blend, float jitter)
 {
-  ivec3 dims = ivec3(P.dims.xyz);
-  float unitDistance = P.projection.z;
+  ivec3 dims = ivec3(P.volume.dims);
+  float unitDistance = P.opacityUnitDistance;
   float extreme = blend == VS_BLEND_MINIMUM ? 3.4e38 : -3.4e38;
   float sum = 0.0;
   uint samples = 0u;
   for (float a = t.x; a < t.y; a += stepSize)
   {
     float b = min(a + stepSize, t.y);
-    float s = vs_sample(oi + (a + jitter * (b - a)) * di, dims, P.counts.y);
+    float s = vs_sample(oi + (a + jitter * (b - a)) * di, dims, P.volume.interpolation);
     if (isnan(s))
       continue; /* non-finite voxels are empty space */
     if (blend == VS_BLEND_MAXIMUM)
@@ -59,11 +59,11 @@ vec4 project(vec3 oi, vec3 di, vec2 t, float stepSize, uint blend, float jitter)
       extreme = min(extreme, s);
     else
     {
-      float normalised = clamp((s - P.tf.x) * P.tf.y / max(P.tf.z - 1.0, 1.0), 0.0, 1.0);
-      float opacity = 1.0 - exp(-vs_classify(s, P.tf).w * unitDistance);
+      float normalised = clamp((s - P.volume.tf.scalar0) * P.volume.tf.entriesPerUnit / max(P.volume.tf.entries - 1.0, 1.0), 0.0, 1.0);
+      float opacity = 1.0 - exp(-vs_classify(s, P.volume.tf).w * unitDistance);
       if (blend == VS_BLEND_ADDITIVE)
         sum += opacity * normalised * (b - a) / unitDistance;
-      else if (s >= P.projection.x && s <= P.projection.y)
+      else if (s >= P.averageMin && s <= P.averageMax)
       {
         sum += opacity * normalised;
         ++samples;
@@ -74,7 +74,7 @@ vec4 project(vec3 oi, vec3 di, vec2 t, float stepSize, uint blend, float jitter)
   {
     if (abs(extreme) > 3.0e38)
       return vec4(0.0); /* no finite sample */
-    vec4 c = vs_classify(extreme, P.tf);
+    vec4 c = vs_classify(extreme, P.volume.tf);
     float opacity = 1.0 - exp(-c.w * unitDistance);
     return vec4(c.rgb * opacity, opacity);
   }
@@ -86,7 +86,7 @@ vec4 project(vec3 oi, vec3 di, vec2 t, float stepSize, uint blend, float jitter)
 /* Phong shading at index-space point x of a sample of colour albedo (VS_EA_SHADE). */
 vec3 shade(vec3 x, vec3 albedo, ivec3 dims, vec3 toEye)
 {
-  uint interpolation = P.counts.y;
+  uint interpolation = P.volume.interpolation;
   vec3 g = 0.5 * vec3(vs_sample(x + vec3(1.0, 0.0, 0.0), dims, interpolation) -
                         vs_sample(x - vec3(1.0, 0.0, 0.0), dims, interpolation),
                       vs_sample(x + vec3(0.0, 1.0, 0.0), dims, interpolation) -
@@ -94,16 +94,16 @@ vec3 shade(vec3 x, vec3 albedo, ivec3 dims, vec3 toEye)
                       vs_sample(x + vec3(0.0, 0.0, 1.0), dims, interpolation) -
                         vs_sample(x - vec3(0.0, 0.0, 1.0), dims, interpolation));
   /* d s / d world = transpose(d index / d world) x d s / d index */
-  vec3 gw = transpose(mat3(P.worldToIndex)) * g;
+  vec3 gw = transpose(mat3(P.volume.worldToIndex)) * g;
   float len = length(gw);
-  vec3 color = P.shading.x * albedo;
+  vec3 color = P.ambient * albedo;
   if (len > 0.0 && !isnan(len) && !isinf(len))
   {
     vec3 n = -gw / len;
-    vec3 l = P.light.xyz;
+    vec3 l = P.lightDirection;
     vec3 h = normalize(l + toEye);
     float nl = abs(dot(n, l)), nh = abs(dot(n, h));
-    color += P.light.w * (P.shading.y * nl * albedo + P.shading.z * pow(nh, P.shading.w) * vec3(1.0));
+    color += P.lightIntensity * (P.diffuse * nl * albedo + P.specular * pow(nh, P.specularPower) * vec3(1.0));
   }
   return color;
 }
@@ -111,38 +111,38 @@ vec3 shade(vec3 x, vec3 albedo, ivec3 dims, vec3 toEye)
 void main()
 {
   uvec2 pix = gl_GlobalInvocationID.xy;
-  uint W = P.viewport.x, H = P.viewport.y;
+  uint W = P.camera.width, H = P.camera.height;
   if (pix.x >= W || pix.y >= H)
     return;
   uint idx = pix.y * W + pix.x;
-  vs_set_cropping(P.cropLo, P.cropHi, P.crop.x);
-  VsRng rng = vs_rng_init(pix, P.viewport.z, P.viewport.w);
+  vs_set_cropping(P.volume.cropLo, P.volume.cropHi, P.volume.cropFlags);
+  VsRng rng = vs_rng_init(pix, P.camera.frame, P.camera.seed);
 
   vec2 ndc = (vec2(pix) + 0.5) / vec2(W, H) * 2.0 - 1.0;
-  vec4 pn = P.invViewProj * vec4(ndc, -1.0, 1.0);
-  vec4 pf = P.invViewProj * vec4(ndc, 1.0, 1.0);
+  vec4 pn = P.camera.invViewProj * vec4(ndc, -1.0, 1.0);
+  vec4 pf = P.camera.invViewProj * vec4(ndc, 1.0, 1.0);
   vec3 o = pn.xyz / pn.w;
   vec3 d = normalize(pf.xyz / pf.w - o);
   float depth = uDepth[idx];
   float tDepth = 1e30;
   if (depth < 1.0)
   {
-    vec4 pd = P.invViewProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
+    vec4 pd = P.camera.invViewProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
     tDepth = dot(pd.xyz / pd.w - o, d);
   }
 
-  vec3 oi = (P.worldToIndex * vec4(o, 1.0)).xyz;
-  vec3 di = (P.worldToIndex * vec4(d, 0.0)).xyz;
-  vec2 t = vs_intersect_box(oi, di, P.boxMin.xyz, P.boxMax.xyz);
-  t = vs_clip_planes(o, d, t, P.clipPlanes, P.counts.x);
+  vec3 oi = (P.volume.worldToIndex * vec4(o, 1.0)).xyz;
+  vec3 di = (P.volume.worldToIndex * vec4(d, 0.0)).xyz;
+  vec2 t = vs_intersect_box(oi, di, P.volume.boxMin, P.volume.boxMax);
+  t = vs_clip_planes(oi, di, t, P.volume.clipPlanes, P.volume.clipPlaneCount);
   t.x = max(t.x, 0.0);
   t.y = min(t.y, tDepth);
 
   vec3 color = vec3(0.0);
   float alpha = 0.0;
-  ivec3 dims = ivec3(P.dims.xyz);
-  float stepSize = P.march.x;
-  uint blend = P.counts.z;
+  ivec3 dims = ivec3(P.volume.dims);
+  float stepSize = P.step;
+  uint blend = P.blend;
   if (blend != VS_BLEND_COMPOSITE)
   {
     uOut[idx] = t.x < t.y ? project(oi, di, t, stepSize, blend, vs_rng_float(rng)) : vec4(0.0);
@@ -156,15 +156,15 @@ void main()
       float b = min(a + stepSize, t.y);
       float ts = a + jitter * (b - a);
       vec3 x = oi + ts * di;
-      vec4 c = vs_classify(vs_sample(x, dims, P.counts.y), P.tf);
+      vec4 c = vs_classify(vs_sample(x, dims, P.volume.interpolation), P.volume.tf);
       if (VS_EA_FACTOR == 1u)
-        c.w *= vs_sample_factor(x, dims, P.counts.y);
+        c.w *= vs_sample_factor(x, dims, P.volume.interpolation);
       if (VS_EA_SHADE == 1u)
         c.rgb = shade(x, c.rgb, dims, -d);
       float A = 1.0 - exp(-c.w * (b - a));
       color += (1.0 - alpha) * A * c.rgb;
       alpha += (1.0 - alpha) * A;
-      if (alpha >= P.march.y)
+      if (alpha >= P.terminationOpacity)
         break;
     }
   }

@@ -5,7 +5,7 @@
  * Included once, by mc_render.glsl.
  */
 
-float gQuadOffset; /* P.dims.w: the scalar of code 0 in the quads */
+float gQuadOffset; /* P.volume.quadZero: the scalar of code 0 in the quads */
 
 /* The 4 scalars of a quad texel: (x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1). */
 vec4 quad_scalars(uint q)

@@ -9,7 +9,7 @@
  * pixel's numbers gCellU. */
 uvec3 stochastic_cell(vec3 x)
 {
-  uvec3 cells = gGrid.xyz;
+  uvec3 cells = gGridCells;
   vec3 c = clamp((x - gBoxMin) / gCellSize - 0.5, vec3(0.0), vec3(cells - 1u));
   uvec3 c0 = uvec3(floor(c));
   uvec3 c1 = min(c0 + 1u, cells - 1u);
@@ -22,7 +22,7 @@ uvec3 stochastic_cell(vec3 x)
  * pyramid: one cell's map (stochastic cell), or the maps of the 8 cells around x interpolated. */
 void direction_values(vec3 x, uint strategy, uint D, inout VsRng rng)
 {
-  uvec3 cells = gGrid.xyz;
+  uvec3 cells = gGridCells;
   vec3 c = (x - gBoxMin) / gCellSize - 0.5;
   c = clamp(c, vec3(0.0), vec3(cells - 1u));
   uvec3 c0 = uvec3(floor(c));
@@ -58,14 +58,14 @@ void direction_values(vec3 x, uint strategy, uint D, inout VsRng rng)
  * the stochastic cell's table, or the map built here. */
 void prepare_directions(vec3 x, uint strategy, inout VsRng rng)
 {
-  uint D = gGrid.w;
+  uint D = gGridSide;
   if (strategy == VS_STRATEGY_ENVIRONMENT || strategy == VS_STRATEGY_UNIFORM || D == 0u)
     return;
 #ifndef VS_NO_GRID
   if (VS_SPEC_TABLE != 0u)
   {
     uvec3 cell = stochastic_cell(x);
-    gTableBase = 2u * vs_table_nodes(D) * ((cell.z * gGrid.y + cell.y) * gGrid.x + cell.x);
+    gTableBase = 2u * vs_table_nodes(D) * ((cell.z * gGridCells.y + cell.y) * gGridCells.x + cell.x);
   }
   else
     direction_values(x, strategy, D, rng);
@@ -76,7 +76,7 @@ void prepare_directions(vec3 x, uint strategy, inout VsRng rng)
 vec3 sample_direction(uint strategy, vec2 u, out float pdf)
 {
   uint K = gEnvLevels;
-  uint D = gGrid.w;
+  uint D = gGridSide;
   if (strategy == VS_STRATEGY_ENVIRONMENT)
     return vs_sample_environment(K, u, pdf);
   if (strategy == VS_STRATEGY_UNIFORM || D == 0u)

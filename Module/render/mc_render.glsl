@@ -11,7 +11,7 @@
  *     L = albedo * (1/4pi) * T * L_env(w) / pdf(w).
  * The approximate visibility only shapes the pdf; T is the true transmittance, which
  * keeps the estimator unbiased. Escaping rays see the environment (opaque, or with the alpha of
- * the volume's coverage: P.background.w = 2) or are transparent, so VTK's background shows; rays
+ * the volume's coverage: P.background = VS_BACKGROUND_ENVIRONMENT_COVERAGE) or are transparent, so VTK's background shows; rays
  * reaching the opaque depth are transparent.
  * Accumulates compensated (Kahan) sums of (rgb, alpha) and their squares per pixel, and how many
  * samples they hold; one dispatch brings every pixel towards `target` samples.
@@ -39,7 +39,7 @@
 #ifdef VS_RAY_MARCHING
 #include "ray_marching.h"
 #endif
-#include "render_params.h"
+#include "mc_params.h"
 #include "rng.h"
 #include "sobol.h"
 #include "strategies.h"
@@ -121,13 +121,13 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPer
   inout uint shadowCost, out bool scattered)
 {
   scattered = false;
-  uint W = gViewport.x, H = gViewport.y;
-  VsRng rng = vs_rng_init(pix, sampleIndex, gViewport.w);
+  uint W = gWidth, H = gHeight;
+  VsRng rng = vs_rng_init(pix, sampleIndex, gSeed);
   /* Under the Sobol sampler (VS_SAMPLER_SOBOL) the pixel jitter, the light directions and the first
    * two steps of each shadow ray's tracking come from the pixel's own scrambled Sobol sequences
    * (sobol.h; three seeds, so the three are independent), indexed by the sample: unbiased, and
    * stratified across the pixel's samples; everything else from the sample's hash stream. */
-  uvec3 sobolSeeds = VS_SPEC_SOBOL ? vs_pcg4d(uvec4(pix, gViewport.w, 0x50b01u)).xyz : uvec3(0u);
+  uvec3 sobolSeeds = VS_SPEC_SOBOL ? vs_pcg4d(uvec4(pix, gSeed, 0x50b01u)).xyz : uvec3(0u);
   vec2 jitter = VS_SPEC_SOBOL ? vs_sobol_2d(sampleIndex, sobolSeeds.x) : vs_rng_vec2(rng);
   vec2 ndc = (vec2(pix) + jitter) / vec2(W, H) * 2.0 - 1.0;
   vec4 pn = gInvViewProj * vec4(ndc, -1.0, 1.0);
@@ -215,47 +215,50 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPer
 void main()
 {
   uvec2 pix = gl_GlobalInvocationID.xy;
-  uint W = P.viewport.x, H = P.viewport.y;
+  uint W = P.camera.width, H = P.camera.height;
   bool inside = pix.x < W && pix.y < H;
-  gEnvScale = P.sampling2.y;
-  gEpsilon = P.sampling2.x;
-  gSquareScale = P.sampling2.w;
-  gMixture = P.mixture.x;
-  gEnvLevels = P.sampling.w;
-  gBoxMin = P.boxMin.xyz;
-  gBoxMax = P.boxMax.xyz;
-  gCellSize = P.cellSize.xyz;
-  gGrid = P.grid;
-  gViewport = P.viewport;
-  gBackgroundVisible = P.background.w > 0.5;
-  gEscapeAlpha = P.background.w > 1.5 ? 0.0 : 1.0;
-  gWorldToIndex = P.worldToIndex;
-  gInvViewProj = P.invViewProj;
+  gEnvScale = P.environmentIntensity;
+  gEpsilon = P.visibilityEpsilon;
+  gSquareScale = P.squareScale;
+  gMixture = P.defensiveWeight;
+  gEnvLevels = P.environmentLevels;
+  gBoxMin = P.volume.boxMin;
+  gBoxMax = P.volume.boxMax;
+  gCellSize = P.grid.cellSize;
+  gGridCells = P.grid.cells;
+  gGridSide = P.grid.side;
+  gWidth = W;
+  gHeight = H;
+  gSeed = P.camera.seed;
+  gBackgroundVisible = P.background != VS_BACKGROUND_TRANSPARENT;
+  gEscapeAlpha = P.background == VS_BACKGROUND_ENVIRONMENT_COVERAGE ? 0.0 : 1.0;
+  gWorldToIndex = P.volume.worldToIndex;
+  gInvViewProj = P.camera.invViewProj;
   /* Unrolled (the kernel's loops count against lavapipe's loop limiter, see the top): as many as
    * VS_MAX_CLIP_PLANES (gClipPlanes' size would not compile otherwise). */
-  gClipPlanes[0] = P.clipPlanes[0];
-  gClipPlanes[1] = P.clipPlanes[1];
-  gClipPlanes[2] = P.clipPlanes[2];
-  gClipPlanes[3] = P.clipPlanes[3];
-  gClipPlanes[4] = P.clipPlanes[4];
-  gClipPlanes[5] = P.clipPlanes[5];
-  gClipPlanes[6] = P.clipPlanes[6];
-  gClipPlanes[7] = P.clipPlanes[7];
-  gDims = ivec3(P.dims.xyz);
-  gQuadOffset = P.dims.w;
-  gBricks = ivec3(P.bricks.xyz);
-  gBrickSize = P.sampling2.z;
-  gInvBrickSize = 1.0 / P.sampling2.z;
-  gTF = P.tf;
-  gEnvSize = 1u << P.sampling.w;
-  gClipCount = P.bricks.w;
+  gClipPlanes[0] = P.volume.clipPlanes[0];
+  gClipPlanes[1] = P.volume.clipPlanes[1];
+  gClipPlanes[2] = P.volume.clipPlanes[2];
+  gClipPlanes[3] = P.volume.clipPlanes[3];
+  gClipPlanes[4] = P.volume.clipPlanes[4];
+  gClipPlanes[5] = P.volume.clipPlanes[5];
+  gClipPlanes[6] = P.volume.clipPlanes[6];
+  gClipPlanes[7] = P.volume.clipPlanes[7];
+  gDims = ivec3(P.volume.dims);
+  gQuadOffset = P.volume.quadZero;
+  gBricks = ivec3(P.volume.majorantBricks);
+  gBrickSize = P.volume.majorantBrickSize;
+  gInvBrickSize = 1.0 / P.volume.majorantBrickSize;
+  gTF = P.volume.tf;
+  gEnvSize = 1u << P.environmentLevels;
+  gClipCount = P.volume.clipPlaneCount;
   gStrategy = VS_SPEC_STRATEGY;
-  gShadowRays = clamp(uint(P.tracking.y), 1u, 64u);
-  gRefineDepth = P.tracking.x > 0.0 ? P.tracking.x : 32.0;
+  gShadowRays = clamp(P.shadowRays, 1u, 64u);
+  gRefineDepth = P.cellWalkDepth > 0.0 ? P.cellWalkDepth : 32.0;
   gInterpolation = VS_SPEC_INTERPOLATION;
-  vs_set_cropping(P.cropLo, P.cropHi, VS_SPEC_CROPPING != 0u ? P.crop.x : 0u);
+  vs_set_cropping(P.volume.cropLo, P.volume.cropHi, VS_SPEC_CROPPING != 0u ? P.volume.cropFlags : 0u);
 #ifndef VS_NO_GRID
-  uvec4 cellHash = vs_pcg4d(uvec4(pix, gViewport.w, 0xce11u));
+  uvec4 cellHash = vs_pcg4d(uvec4(pix, gSeed, 0xce11u));
   gCellU = vec3(vs_unit_float(cellHash.x), vs_unit_float(cellHash.y), vs_unit_float(cellHash.z));
 #endif
   uint idx = inside ? pix.y * W + pix.x : 0u;
@@ -270,9 +273,9 @@ void main()
   /* Samples until the pixel holds pc.target, while the group's back-edges (an upper bound, the
    * same in every lane: each loop runs as long as its longest lane) leave room for one more
    * sample at its most expensive. */
-  uint scatterCost = scatter_cost(gStrategy, P.grid.w, P.sampling.w, VS_SPEC_CELL_MODE);
+  uint scatterCost = scatter_cost(gStrategy, P.grid.side, P.environmentLevels, VS_SPEC_CELL_MODE);
   /* Per shadow ray: its direction (the map is made once: counted in the first) and its clip planes. */
-  uint perRay = 16u + 2u * P.sampling.w + 6u + 4u;
+  uint perRay = 16u + 2u * P.environmentLevels + 6u + 4u;
   /* The shadow rays of a sample share the steps the budget leaves after the rest of its worst
    * case, each ray at most VS_TRACKING_CAP: up to 6 rays keep that cap each (the budget holds them),
    * more share it so that one sample always fits (64 rays: ~800 steps each if all need them; a ray

@@ -11,24 +11,24 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
  * code of the other strategies, the other cell mode and (where no brick is optically thick) the
  * cell walk is gone. That matters on lavapipe, which runs both sides of every `if` (masked) and
  * every loop body at least once: such code costs as if it were always taken. */
-layout(constant_id = 0) const uint VS_SPEC_STRATEGY = 4u;  /* VS_STRATEGY_*, = params.sampling.x */
-layout(constant_id = 1) const uint VS_SPEC_CELL_MODE = 1u; /* VS_CELL_*, = params.sampling.z */
+layout(constant_id = 0) const uint VS_SPEC_STRATEGY = 4u;  /* VS_STRATEGY_*, = P.strategy */
+layout(constant_id = 1) const uint VS_SPEC_CELL_MODE = 1u; /* VS_CELL_*, = P.cellMode */
 layout(constant_id = 2) const uint VS_SPEC_REFINE = 1u;    /* 0: no majorant segment reaches the refinement depth */
-layout(constant_id = 3) const uint VS_SPEC_CAMERA = 0u;    /* VS_CAMERA_*, = params.tracking.z */
-layout(constant_id = 4) const uint VS_SPEC_INTERPOLATION = 0u; /* interpolation.h, = params.tracking.w */
-layout(constant_id = 5) const uint VS_SPEC_CROPPING = 0u;  /* 1: cropping regions (params.crop.x != 0) */
-layout(constant_id = 7) const uint VS_SPEC_DEFENSIVE = 0u; /* 1: TwoStep mixed with Environment sampling (P.mixture.x) */
+layout(constant_id = 3) const uint VS_SPEC_CAMERA = 0u;    /* VS_CAMERA_*, = P.cameraEstimator */
+layout(constant_id = 4) const uint VS_SPEC_INTERPOLATION = 0u; /* interpolation.h, = P.volume.interpolation */
+layout(constant_id = 5) const uint VS_SPEC_CROPPING = 0u;  /* 1: cropping regions (P.volume.cropFlags != 0) */
+layout(constant_id = 7) const uint VS_SPEC_DEFENSIVE = 0u; /* 1: TwoStep mixed with Environment sampling (P.defensiveWeight) */
 layout(constant_id = 8) const uint VS_SPEC_SKIP = 1u;      /* 1: empty space is crossed in one step (VS_MC_BRICKS' distance) */
 layout(constant_id = 9) const uint VS_SPEC_QUADS = 0u;     /* 1: trilinear samples read the volume's 8-bit quads
                                                              (binding 15, vsDeviceVolume.h) */
-layout(constant_id = 11) const uint VS_SPEC_SAMPLER = 0u;   /* VS_SAMPLER_* (render_params.h), = params.crop.z */
+layout(constant_id = 11) const uint VS_SPEC_SAMPLER = 0u;   /* VS_SAMPLER_* (mc_params.h), = P.pixelSampler */
 const bool VS_SPEC_SOBOL = VS_SPEC_SAMPLER == VS_SAMPLER_SOBOL;
-layout(constant_id = 10) const uint VS_SPEC_CONTROL = 0u;   /* VS_CONTROL_* bits (render_params.h): the trackers
+layout(constant_id = 10) const uint VS_SPEC_CONTROL = 0u;   /* VS_CONTROL_* bits (mc_params.h): the trackers
                                                               split the extinction into the brick's control (uBricks.y) and the rest */
-layout(constant_id = 13) const uint VS_SPEC_TRANSMITTANCE = 0u; /* VS_TRANSMITTANCE_* (render_params.h): the shadow
-                                                              rays' estimator, = params.mixture.y */
+layout(constant_id = 13) const uint VS_SPEC_TRANSMITTANCE = 0u; /* VS_TRANSMITTANCE_* (mc_params.h): the shadow
+                                                              rays' estimator, = P.transmittance */
 layout(constant_id = 12) const uint VS_SPEC_FACTOR = 0u;   /* 1: the extinction is scaled by the volume's factor
-                                                              (the gradient opacity, binding 16; = params.crop.w) */
+                                                              (the gradient opacity, binding 16; = P.volume.extinctionFactor) */
 layout(constant_id = 6) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
                                                              table (binding 12), stochastic cell only */
 layout(binding = VS_MC_VOLUME, r32f) uniform readonly image3D uVolume;
@@ -37,7 +37,7 @@ layout(binding = VS_MC_TF) uniform samplerBuffer uTF;
 layout(binding = VS_MC_BRICKS, rgba32f) uniform readonly image3D uBricks; /* per brick: majorant, control, empty distance, 0
                                                                   (vsMajorantGrid.h TrackingImage) */
 layout(binding = VS_MC_VISIBILITY, VS_VIS_FORMAT) uniform readonly image3D uVisibility;
-layout(std430, binding = VS_MC_PARAMS) readonly buffer Params { VsRenderParams P; };
+layout(std430, binding = VS_MC_PARAMS) readonly buffer Params { VsMonteCarloParams P; };
 /* Tables read at per-lane indices are texel buffers: lavapipe loads them with vector gathers, and
  * a storage buffer with a scalar loop over the SIMD lanes (measured: ~15% of the kernel's time). */
 layout(binding = VS_MC_ENV) uniform samplerBuffer uEnv;  /* rgba32f: the environment's radiance per texel */
@@ -51,7 +51,7 @@ layout(std430, binding = VS_MC_PROGRESS) buffer Progress { uint uCount[]; };
 /* The direction table (sampling/direction_table.h): per cell, the shares of its map's quadtree nodes. */
 layout(binding = VS_MC_TABLE) uniform usamplerBuffer uTable; /* r32ui */
 /* An integer-coded volume's quads: texel (x, y, z) packs the 8-bit codes of voxels (x, y), (x + 1, y),
- * (x, y + 1), (x + 1, y + 1) of slice z; the scalar is code + P.dims.w. */
+ * (x, y + 1), (x + 1, y + 1) of slice z; the scalar is code + P.volume.quadZero. */
 layout(binding = VS_MC_QUADS, r32ui) uniform readonly uimage3D uQuads;
 /* The extinction factor per voxel (vsDeviceVolume.h; read only with VS_SPEC_FACTOR). */
 layout(binding = VS_MC_FACTOR_IMAGE, r32f) uniform readonly image3D uFactor;
@@ -86,17 +86,20 @@ float vs_env_mip(uint index)
 /* Parameters the per-sample code reads, loaded once per invocation in main(): lavapipe loads a
  * storage-buffer value inside code that not every lane runs with a scalar loop over the lanes
  * (one masked load per lane), even at a uniform address (measured in its machine code). */
-float gEnvScale;    /* P.sampling2.y: the environment's intensity */
-float gEpsilon;     /* P.sampling2.x */
-float gSquareScale; /* P.sampling2.w */
-float gMixture;     /* P.mixture.x */
-uint gEnvLevels;    /* P.sampling.w */
+float gEnvScale;    /* P.environmentIntensity */
+float gEpsilon;     /* P.visibilityEpsilon */
+float gSquareScale; /* P.squareScale */
+float gMixture;     /* P.defensiveWeight */
+uint gEnvLevels;    /* P.environmentLevels */
 vec3 gBoxMin, gBoxMax, gCellSize;
-uvec4 gGrid;
-uvec4 gViewport;
+uvec3 gGridCells; /* P.grid */
+uint gGridSide;
+uint gWidth;       /* P.camera */
+uint gHeight;
+uint gSeed;
 bool gBackgroundVisible;
-/* The alpha of a camera ray that escapes to the environment: 1 (P.background.w = 1, the image is
- * opaque) or 0 (w = 2: the radiance still includes the environment seen through the volume, but the
+/* The alpha of a camera ray that escapes to the environment: 1 (P.background = VS_BACKGROUND_ENVIRONMENT, the image is
+ * opaque) or 0 (VS_BACKGROUND_ENVIRONMENT_COVERAGE: the radiance still includes the environment seen through the volume, but the
  * alpha is the volume's coverage, so the host can composite it over a background it draws itself). */
 float gEscapeAlpha;
 mat4 gWorldToIndex, gInvViewProj;
@@ -106,7 +109,7 @@ vec4 gClipPlanes[VS_MAX_CLIP_PLANES == 8u ? 8 : -1]; /* main() copies 8 */
 ivec3 gDims;
 ivec3 gBricks;
 float gBrickSize;
-vec4 gTF;
+VsTransferFunction gTF;
 uint gEnvSize;
 uint gClipCount;
 uint gStrategy;
@@ -140,7 +143,7 @@ uint vs_table_value(uint i)
   return texelFetch(uTable, int(i)).r;
 }
 float gRefineDepth;
-uint gInterpolation; /* interpolation.h: the scalar's reconstruction (P.tracking.w) */
+uint gInterpolation; /* interpolation.h: the scalar's reconstruction (P.volume.interpolation) */
 vec3 env_radiance(vec3 w)
 {
   uvec2 t = vs_dir_to_texel(w, gEnvSize);

@@ -52,11 +52,16 @@ const ComputePipeline& EmissionAbsorptionPass::PipelineFor(bool factor, bool sha
 
 EmissionAbsorptionPass::~EmissionAbsorptionPass() = default;
 
+// Rows of 16 bytes (volume_params.h): a member that breaks the rule changes the size.
+static_assert(sizeof(shared::VsEmissionAbsorptionParams) ==
+    sizeof(shared::VsCameraParams) + sizeof(shared::VsVolumeParams) + 4 * 16,
+  "VsEmissionAbsorptionParams: rows of 16 bytes (volume_params.h)");
+
 std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
-  const TransferFunctionTable& tf, const shared::VsFrameParams& params, const std::vector<float>& depth,
+  const TransferFunctionTable& tf, const shared::VsEmissionAbsorptionParams& params, const std::vector<float>& depth,
   bool shade)
 {
-  const uint32_t w = params.viewport.x, h = params.viewport.y;
+  const uint32_t w = params.camera.width, h = params.camera.height;
   if (w == 0 || h == 0)
   {
     return {};

@@ -5,7 +5,7 @@
 #define vsEmissionAbsorptionPass_h
 
 #include "vissweepCoreModule.h"
-#include "sampling/frame_params.h"
+#include "sampling/ea_params.h"
 
 #include <memory>
 #include <vector>
@@ -24,11 +24,11 @@ public:
   explicit EmissionAbsorptionPass(std::shared_ptr<Context> context);
   ~EmissionAbsorptionPass();
 
-  /** Renders params.viewport.x by .y pixels. `depth` has one window depth in [0,1] per pixel
+  /** Renders params.camera.width by .height pixels. `depth` has one window depth in [0,1] per pixel
    *  (1 = nothing opaque); empty means no opaque geometry. `shade`: Phong-shade the composite with
    *  params.shading and params.light. Returns RGBA, rows bottom-up. */
   std::vector<float> Render(const DeviceVolume& volume, const TransferFunctionTable& tf,
-    const shared::VsFrameParams& params, const std::vector<float>& depth, bool shade = false);
+    const shared::VsEmissionAbsorptionParams& params, const std::vector<float>& depth, bool shade = false);
 
   /** Device seconds of the last Render (0 without timestamp support). */
   double LastSeconds() const { return this->LastSeconds_; }

@@ -47,7 +47,7 @@ const char* StrategyName(uint32_t s)
 }
 
 const ComputePipeline& MonteCarloPass::PipelineFor(
-  const VisibilityGrid* grid, const shared::VsRenderParams& params, bool refine, bool table, bool quads)
+  const VisibilityGrid* grid, const shared::VsMonteCarloParams& params, bool refine, bool table, bool quads)
 {
   vk::Format f = grid && grid->Valid() ? grid->Image().Format() : vk::Format::eR8Unorm;
   int format = f == vk::Format::eR8Unorm ? 0 : f == vk::Format::eR16Unorm ? 1 : 2;
@@ -59,22 +59,22 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
     }
     format = 3;
   }
-  const uint32_t strategy = params.sampling.x;
+  const uint32_t strategy = params.strategy;
   // The cell mode matters only where a grid is read: one pipeline for Uniform and Environment.
   const uint32_t cellMode =
-    strategy > shared::VS_STRATEGY_ENVIRONMENT ? params.sampling.z : uint32_t(shared::VS_CELL_STOCHASTIC);
+    strategy > shared::VS_STRATEGY_ENVIRONMENT ? params.cellMode : uint32_t(shared::VS_CELL_STOCHASTIC);
   if (strategy > shared::VS_STRATEGY_TWO_STEP)
   {
     throw InputError("unknown sampling strategy " + std::to_string(strategy));
   }
-  const uint32_t camera = params.tracking.z > 0.5f ? shared::VS_CAMERA_RESERVOIR : shared::VS_CAMERA_COLLISION;
-  const uint32_t interpolation = uint32_t(params.tracking.w + 0.5f), cropping = params.crop.x != 0u ? 1u : 0u;
+  const uint32_t camera = params.cameraEstimator != shared::VS_CAMERA_COLLISION ? shared::VS_CAMERA_RESERVOIR : shared::VS_CAMERA_COLLISION;
+  const uint32_t interpolation = params.volume.interpolation, cropping = params.volume.cropFlags != 0u ? 1u : 0u;
   const bool defensive = Defensive(params);
   // Hidden cropping regions have no extinction, below any brick's control: no control there.
-  const uint32_t control = cropping ? 0u : params.crop.y & (shared::VS_CONTROL_SHADOW | shared::VS_CONTROL_CAMERA);
-  const uint32_t factor = params.crop.w != 0u ? 1u : 0u; // the gradient opacity's factor volume
+  const uint32_t control = cropping ? 0u : params.controlExtinction & (shared::VS_CONTROL_SHADOW | shared::VS_CONTROL_CAMERA);
+  const uint32_t factor = params.volume.extinctionFactor != 0u ? 1u : 0u; // the gradient opacity's factor volume
   const uint32_t transmittance =
-    params.mixture.y > 0.5f ? shared::VS_TRANSMITTANCE_RAY_MARCHING : shared::VS_TRANSMITTANCE_RATIO_TRACKING;
+    params.transmittance != shared::VS_TRANSMITTANCE_RATIO_TRACKING ? shared::VS_TRANSMITTANCE_RAY_MARCHING : shared::VS_TRANSMITTANCE_RATIO_TRACKING;
   // Environment and Uniform without counting or ray marching: the module without the grid's code
   // (mc_render_env.comp), whatever the grid's format (it binds no grid).
   if (format != 3 && strategy <= shared::VS_STRATEGY_ENVIRONMENT && transmittance == shared::VS_TRANSMITTANCE_RATIO_TRACKING)
@@ -83,7 +83,7 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   }
   const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping,
     table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u, quads ? 1u : 0u, control,
-    params.crop.z == shared::VS_SAMPLER_SOBOL ? 1u : 0u, factor, transmittance };
+    params.pixelSampler == shared::VS_SAMPLER_SOBOL ? 1u : 0u, factor, transmittance };
   auto& slot = this->Pipelines_[specialization];
   auto& pipeline = slot[format];
   if (!pipeline)
@@ -110,7 +110,7 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
       (transmittance == shared::VS_TRANSMITTANCE_RAY_MARCHING ? ", ray-marched shadow rays"
           : (control & shared::VS_CONTROL_SHADOW) ? ", residual ratio tracking" : "") +
       ((control & shared::VS_CONTROL_CAMERA) ? ", decomposition tracking" : "") +
-      (params.crop.z == shared::VS_SAMPLER_SOBOL ? ", Sobol" : "") + (factor ? ", gradient opacity" : "") + ")";
+      (params.pixelSampler == shared::VS_SAMPLER_SOBOL ? ", Sobol" : "") + (factor ? ", gradient opacity" : "") + ")";
     if (format == 4)
     {
       pipeline = SharedPipeline(
@@ -145,26 +145,26 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   return *pipeline;
 }
 
-void MonteCarloPass::Prewarm(const shared::VsRenderParams& params, bool table, bool quads, bool cellWalk)
+void MonteCarloPass::Prewarm(const shared::VsMonteCarloParams& params, bool table, bool quads, bool cellWalk)
 {
-  this->PipelineFor(nullptr, params, cellWalk, table && params.sampling.x > shared::VS_STRATEGY_ENVIRONMENT, quads);
+  this->PipelineFor(nullptr, params, cellWalk, table && params.strategy > shared::VS_STRATEGY_ENVIRONMENT, quads);
 }
 
-bool MonteCarloPass::Defensive(const shared::VsRenderParams& params)
+bool MonteCarloPass::Defensive(const shared::VsMonteCarloParams& params)
 {
-  return params.sampling.x == shared::VS_STRATEGY_TWO_STEP && params.mixture.x > 0.0f;
+  return params.strategy == shared::VS_STRATEGY_TWO_STEP && params.defensiveWeight > 0.0f;
 }
 
-bool MonteCarloPass::NeedsCellWalk(const MajorantGrid& majorants, const shared::VsRenderParams& params)
+bool MonteCarloPass::NeedsCellWalk(const MajorantGrid& majorants, const shared::VsMonteCarloParams& params)
 {
   return NeedsCellWalk(double(majorants.MaxMajorant()), majorants.BrickSize(), params);
 }
 
-bool MonteCarloPass::NeedsCellWalk(double maxMajorant, uint32_t brickSize, const shared::VsRenderParams& params)
+bool MonteCarloPass::NeedsCellWalk(double maxMajorant, uint32_t brickSize, const shared::VsMonteCarloParams& params)
 {
   // The longest world-space path through a brick: its index-space diagonal (B sqrt 3) through the
   // index-to-world matrix, bounded by the matrix's Frobenius norm (>= its largest singular value).
-  const glm::mat3 indexToWorld = glm::inverse(glm::mat3(params.worldToIndex));
+  const glm::mat3 indexToWorld = glm::inverse(glm::mat3(params.volume.worldToIndex));
   double norm2 = 0.0;
   for (int c = 0; c < 3; ++c)
   {
@@ -174,7 +174,7 @@ bool MonteCarloPass::NeedsCellWalk(double maxMajorant, uint32_t brickSize, const
     }
   }
   const double longest = brickSize * std::sqrt(3.0) * std::sqrt(norm2);
-  const double depth = params.tracking.x > 0.0f ? params.tracking.x : 32.0;
+  const double depth = params.cellWalkDepth > 0.0f ? params.cellWalkDepth : 32.0;
   const double worst = maxMajorant * longest;
   // 0.1% for the trackers' shortest step past a face; non-finite (a singular matrix, an infinite
   // majorant) keeps the cell walk: it is the safe side.
@@ -216,9 +216,9 @@ void MonteCarloPass::Reset(uint32_t width, uint32_t height)
 
 void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTable& tf,
   const MajorantGrid& majorants, const VisibilityGrid* grid, const DeviceEnvironment& environment,
-  shared::VsRenderParams params, const std::vector<float>& depth)
+  shared::VsMonteCarloParams params, const std::vector<float>& depth)
 {
-  if (params.viewport.x != this->Width_ || params.viewport.y != this->Height_ || !this->Sum_)
+  if (params.camera.width != this->Width_ || params.camera.height != this->Height_ || !this->Sum_)
   {
     throw InputError("MonteCarloPass::Render for a size the accumulators were not reset to");
   }
@@ -233,16 +233,17 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     this->LastDepth_ = depth.empty() ? std::vector<float>(pixels, 1.0f) : depth;
     this->Depth_->Upload(this->LastDepth_.data(), pixels * 4);
   }
-  if (!(params.mixture.x >= 0.0f && params.mixture.x <= 1.0f))
+  if (!(params.defensiveWeight >= 0.0f && params.defensiveWeight <= 1.0f))
   {
-    throw InputError("TwoStep's defensive weight must be in [0, 1], got " + std::to_string(params.mixture.x));
+    throw InputError("TwoStep's defensive weight must be in [0, 1], got " + std::to_string(params.defensiveWeight));
   }
   // Environment and Uniform read no grid (their module has none: mc_render_env.comp).
   const bool useGrid =
-    grid && grid->Valid() && params.grid.w > 0 && params.sampling.x > shared::VS_STRATEGY_ENVIRONMENT;
+    grid && grid->Valid() && params.grid.side > 0 && params.strategy > shared::VS_STRATEGY_ENVIRONMENT;
   if (!useGrid)
   {
-    params.grid = glm::uvec4(1u, 1u, 1u, 0u);
+    params.grid.cells = glm::uvec3(1u);
+    params.grid.side = 0u;
     if (!this->NoGrid_)
     {
       this->NoGrid_ = std::make_unique<Image3D>(this->Context_, 1, 1, 1, vk::Format::eR8Unorm, "no visibility grid");
@@ -252,20 +253,20 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   {
     // While the grid fills in, unswept directions read swept ones (VisibilityGrid::RedirectDirections).
     const std::vector<uint32_t>& sources = grid->DirectionSources();
-    if (sources.size() != size_t(params.grid.w) * params.grid.w || sources.size() > shared::VS_MAX_RENDER_DIRECTIONS)
+    if (sources.size() != size_t(params.grid.side) * params.grid.side || sources.size() > shared::VS_MAX_RENDER_DIRECTIONS)
     {
       throw InputError("the render kernel reads grids of up to 16 x 16 directions, matching the parameters' D; got " +
-        std::to_string(sources.size()) + " directions for D " + std::to_string(params.grid.w));
+        std::to_string(sources.size()) + " directions for D " + std::to_string(params.grid.side));
     }
     for (uint32_t n = 0; n < shared::VS_MAX_RENDER_DIRECTIONS; ++n)
     {
       params.directionSources[n / 4u][n % 4u] = n < sources.size() ? sources[n] : n;
     }
   }
-  params.viewport.z = this->Samples_;
-  const bool quads = this->VolumeQuads_ && volume.Quads() && uint32_t(params.tracking.w + 0.5f) == 0u;
-  params.dims.w = quads ? volume.QuadOffset() : 0.0f;
-  params.crop.w = volume.Factor() ? 1u : 0u; // the kernel's VS_SPEC_FACTOR
+  params.camera.frame = this->Samples_;
+  const bool quads = this->VolumeQuads_ && volume.Quads() && params.volume.interpolation == 0u;
+  params.volume.quadZero = quads ? volume.QuadOffset() : 0.0f;
+  params.volume.extinctionFactor = volume.Factor() ? 1u : 0u; // the kernel's VS_SPEC_FACTOR
   this->LastUsedQuads_ = quads;
   if (!this->Params_)
   {
@@ -273,23 +274,23 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   }
   this->Params_->Upload(&params, sizeof(params));
 
-  if (!useGrid && params.sampling.x > shared::VS_STRATEGY_ENVIRONMENT)
+  if (!useGrid && params.strategy > shared::VS_STRATEGY_ENVIRONMENT)
   {
-    params.sampling.x = shared::VS_STRATEGY_UNIFORM; // what the kernel does without a grid (D = 0)
+    params.strategy = shared::VS_STRATEGY_UNIFORM; // what the kernel does without a grid (D = 0)
   }
   // The grid strategies under stochastic cells read the cells' direction table, made (or kept)
   // for this grid, environment and strategy here.
-  const uint32_t strategy = params.sampling.x;
+  const uint32_t strategy = params.strategy;
   bool table = false;
   this->LastTableSeconds_ = 0.0;
   if (useGrid && this->UseTable_ && strategy > shared::VS_STRATEGY_ENVIRONMENT &&
-    params.sampling.z == shared::VS_CELL_STOCHASTIC)
+    params.cellMode == shared::VS_CELL_STOCHASTIC)
   {
     if (!this->Table_)
     {
       this->Table_ = std::make_shared<DirectionTable>(this->Context_);
     }
-    const float epsilon = params.sampling2.x;
+    const float epsilon = params.visibilityEpsilon;
     DirectionTable& t = *this->Table_;
     const bool rebuild = !t.Usable(*grid, environment, strategy, epsilon) ||
       (!t.Current(*grid, environment, strategy, epsilon) &&
@@ -349,7 +350,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   // last; a pixel the kernel's loop budget left short (mc_render.glsl) catches up in the next one.
   // The image does not depend on the split.
   const uint32_t chunk = std::max<uint32_t>(1u, this->SamplesPerDispatch_);
-  const uint32_t goal = this->Samples_ + params.sampling.y;
+  const uint32_t goal = this->Samples_ + params.samplesPerFrame;
   const uint64_t counterOffset = pixels * 4;
   const uint32_t zero = 0;
   const uint32_t groupsX = (this->Width_ + 7) / 8, groupsY = (this->Height_ + 7) / 8;
@@ -362,9 +363,9 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     batch.BeginTimer("render");
     if (round == 0)
     {
-      for (uint32_t s = 0; s < params.sampling.y; s += chunk)
+      for (uint32_t s = 0; s < params.samplesPerFrame; s += chunk)
       {
-        const uint32_t target = this->Samples_ + std::min(s + chunk, params.sampling.y);
+        const uint32_t target = this->Samples_ + std::min(s + chunk, params.samplesPerFrame);
         batch.Dispatch(pipeline, set, &target, sizeof(target), groupsX, groupsY, 1);
         batch.Barrier();
       }
@@ -386,7 +387,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     // Every round completes at least one sample of every short pixel (mc_render.glsl's tracking
     // cap), so a frame takes at most one round per sample (many shadow rays fit one sample per
     // dispatch); this bound only stops a kernel that breaks that promise.
-    if (round >= std::max(kMaxCatchUpRounds, params.sampling.y))
+    if (round >= std::max(kMaxCatchUpRounds, params.samplesPerFrame))
     {
       throw Error("the render kernel left " + std::to_string(shortPixels) + " pixels short of " +
         std::to_string(goal) + " samples after " + std::to_string(round) +
@@ -399,8 +400,8 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   {
     this->Table_->AddSecondsUsed(this->LastSeconds_ - this->LastTableSeconds_);
   }
-  this->Samples_ += params.sampling.y;
-  this->SquareScale_ = params.sampling2.w > 0.0f ? params.sampling2.w : 1.0f;
+  this->Samples_ += params.samplesPerFrame;
+  this->SquareScale_ = params.squareScale > 0.0f ? params.squareScale : 1.0f;
   if (this->CountLookups_)
   {
     uint32_t counts[5];

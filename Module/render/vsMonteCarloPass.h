@@ -6,7 +6,7 @@
 #define vsMonteCarloPass_h
 
 #include "vissweepCoreModule.h"
-#include "sampling/render_params.h"
+#include "sampling/mc_params.h"
 
 #include <algorithm>
 #include <array>
@@ -37,11 +37,11 @@ public:
   /** Clears the accumulators for a width x height image. */
   void Reset(uint32_t width, uint32_t height);
 
-  /** Adds params.sampling.y samples per pixel. `grid` may be null for Uniform and Environment;
-   *  `depth` has one window depth per pixel (empty: nothing opaque). params.viewport.z (first sample
+  /** Adds params.samplesPerFrame samples per pixel. `grid` may be null for Uniform and Environment;
+   *  `depth` has one window depth per pixel (empty: nothing opaque). params.camera.frame (first sample
    *  index) is set from the samples accumulated so far. */
   void Render(const DeviceVolume& volume, const TransferFunctionTable& tf, const MajorantGrid& majorants,
-    const VisibilityGrid* grid, const DeviceEnvironment& environment, shared::VsRenderParams params,
+    const VisibilityGrid* grid, const DeviceEnvironment& environment, shared::VsMonteCarloParams params,
     const std::vector<float>& depth);
 
   /** Creates the pipeline a Render with these parameters would use (an r8 grid or none; the cell
@@ -49,13 +49,13 @@ public:
    *  first frame on lavapipe) can run on another thread while the caller prepares the scene. The
    *  caller must not use this pass on another thread meanwhile. Exceptions are the caller's to take
    *  or drop: the Render that needs the pipeline reports the same error. */
-  void Prewarm(const shared::VsRenderParams& params, bool table, bool quads = false, bool cellWalk = false);
+  void Prewarm(const shared::VsMonteCarloParams& params, bool table, bool quads = false, bool cellWalk = false);
   /** Whether some majorant segment may reach the tracking's refinement depth (mc_render.glsl's
    *  cell walk): the brick majorant times the longest world path through a brick, with a margin. */
-  static bool NeedsCellWalk(const MajorantGrid& majorants, const shared::VsRenderParams& params);
+  static bool NeedsCellWalk(const MajorantGrid& majorants, const shared::VsMonteCarloParams& params);
   /** The same from a bound of the largest brick majorant and the brick size, e.g. before the
    *  volume's majorants exist (the prewarm of the first frame's kernel). */
-  static bool NeedsCellWalk(double maxMajorant, uint32_t brickSize, const shared::VsRenderParams& params);
+  static bool NeedsCellWalk(double maxMajorant, uint32_t brickSize, const shared::VsMonteCarloParams& params);
 
   /** Per pixel (rgb, alpha) means, rows bottom-up. */
   std::vector<float> Mean() const;
@@ -136,9 +136,9 @@ public:
 
 private:
   const ComputePipeline& PipelineFor(
-    const VisibilityGrid* grid, const shared::VsRenderParams& params, bool refine, bool table, bool quads);
-  /** Whether params ask for TwoStep's defensive mixture (render_params.h mixture.x > 0). */
-  static bool Defensive(const shared::VsRenderParams& params);
+    const VisibilityGrid* grid, const shared::VsMonteCarloParams& params, bool refine, bool table, bool quads);
+  /** Whether params ask for TwoStep's defensive mixture (mc_params.h defensiveWeight > 0). */
+  static bool Defensive(const shared::VsMonteCarloParams& params);
 
   std::shared_ptr<Context> Context_;
   // Per specialization (mc_render.glsl's constant_ids): r8, r16, r32f visibility; r8 counting reads.
@@ -164,7 +164,7 @@ private:
   uint32_t LastCatchUps_ = 0;
   std::vector<float> LastDepth_;
   uint32_t Width_ = 0, Height_ = 0, Samples_ = 0;
-  float SquareScale_ = 1.0f; // radiance scale of the sums of squares (render_params.h, sampling2.w)
+  float SquareScale_ = 1.0f; // radiance scale of the sums of squares (mc_params.h squareScale)
   double LastSeconds_ = 0.0, TotalSeconds_ = 0.0;
 };
 }

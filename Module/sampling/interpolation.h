@@ -1,7 +1,7 @@
 /*
  * interpolation.h — how the shaders reconstruct the scalar between voxels, shared by the
  * shaders (volume_access.glsl) and the host, which passes the mode in each pass's parameters
- * (render_params.h tracking.w, frame_params.h counts.y, sweep_params.h march.w).
+ * (volume_params.h VsVolumeParams::interpolation).
  * 0 is linear so that parameters left zero keep the trilinear reconstruction; VTK's own
  * constants are the other way round (VTK_NEAREST_INTERPOLATION = 0), so the host translates.
  */

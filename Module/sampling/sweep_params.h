@@ -1,6 +1,6 @@
 /*
  * sweep_params.h — the parameters of the visibility sweeps (von Radziewsky et al. 2017, Sec. 6, 8),
- * shared by the compute shaders and the host (std430; vec4/uvec4/mat4 members only).
+ * shared by the compute shaders and the host (std430, the layout rule of volume_params.h).
  *
  * Index space: continuous voxel coordinates (voxel centres at integers). Visibility
  * V(x, w) is the transmittance from x towards the light direction w (to the box exit).
@@ -9,7 +9,8 @@
  */
 #ifndef VS_SWEEP_PARAMS_H
 #define VS_SWEEP_PARAMS_H
-#include "vs_prelude.h"
+#include "grid_params.h"
+#include "volume_params.h"
 
 VS_NAMESPACE_BEGIN
 
@@ -27,35 +28,32 @@ struct VsSweepDirection
                        per slice) in its batch; its values start at x * slices per chunk. y, z, w: unused */
 };
 
-/* What every sweep and brute-force dispatch shares. */
-struct VsSweepGlobals
+/* What every sweep, filter, projection and brute-force dispatch shares. */
+struct VsSweepParams
 {
-  mat4 worldToIndex; /* world -> index (the brute force turns world directions into index space) */
-  vec4 boxMin;      /* index-space box of the volume (xyz) */
-  vec4 boxMax;
-  vec4 cellSize;    /* index units per visibility cell (xyz) */
-  uvec4 grid;       /* visibility cells per axis (xyz), w: directions per side D */
-  vec4 dims;        /* voxels per axis */
-  vec4 tf;          /* transfer-function LUT parameters (see frame_params.h) */
-  vec4 march;       /* x: step (world units), y: brick size (voxels), z: stop when V below this,
-                       w: the scalar's interpolation (interpolation.h: 0 linear, 1 nearest) */
-  uvec4 bricks;     /* majorant bricks per axis (xyz), w: clip planes in use */
-  vec4 clipPlanes[VS_MAX_CLIP_PLANES];  /* index space: kept where dot(n, x) + w >= 0 */
-  uvec4 bruteForce; /* x: spatial x angular supersamples per side (1 = centre only), y: seed */
+  VsVolumeParams volume; /* the brute force turns world directions into index space by volume.worldToIndex */
+  VsGridParams grid;
+  float step;           /* march step (world units) */
+  float stopVisibility; /* a kernel ray stops when its visibility falls below this */
+  uint supersamples;    /* the brute force: spatial x angular supersamples per side (1 = centre only) */
+  uint seed;            /* the brute force's random stream */
   /* The pooled extinction volume the sweeps march (sweep_march_pooled.comp): texel j holds the mean
    * (or max) of sigma_t over voxels [j P, j P + P - 1], so its centre is at index j P + (P - 1) / 2. */
-  vec4 pool;        /* x: voxels per pooled texel P, y: pooled brick size (texels), z: (P - 1) / 2,
-                       w: march step over the pooled volume (world units) */
-  uvec4 poolDims;   /* pooled texels per axis (xyz) */
-  uvec4 poolBricks; /* pooled occupancy bricks per axis (xyz) */
-  vec4 cropLo;       /* the cropping regions (vsVolumeGeometry.h): index-space planes, xyz */
-  vec4 cropHi;
-  uvec4 crop;        /* x: the regions' flags (0 = none: the box is all), y, z, w: unused */
+  float poolVoxels;     /* voxels per pooled texel P */
+  float poolBrickSize;  /* pooled occupancy brick size (texels) */
+  float poolCentre;     /* (P - 1) / 2 */
+  float poolStep;       /* march step over the pooled volume (world units) */
+  uvec3 poolDims;       /* pooled texels per axis */
+  uint unused0;
+  uvec3 poolBricks;     /* pooled occupancy bricks per axis */
+  uint unused1;
   /* Index-space box holding every voxel of nonzero extinction, widened by the pooled texels'
    * reach (conservative: the bricks of nonzero majorant): outside it a kernel ray gathers no
    * optical depth, so the march starts and ends there instead of at the volume's box. */
-  vec4 occupiedMin;
-  vec4 occupiedMax;
+  vec3 occupiedMin;
+  float unused2;
+  vec3 occupiedMax;
+  float unused3;
 };
 
 /* Distance along the light (world units) from the start plane to the centre plane of

@@ -1,6 +1,6 @@
 /*
  * sweep_access.glsl — extinction along rays for the sweeps and the brute force
- * (GLSL only). The including shader declares a buffer holding `VsSweepGlobals G` and, without
+ * (GLSL only). The including shader declares a buffer holding `VsSweepParams G` and, without
  * VS_SWEEP_POOLED, uVolume, uTF, uMajorant and uFactor (with VS_FACTOR_IMAGE defined: the
  * extinction factor per voxel, the gradient opacity, read when the specialization constant
  * VS_SWEEP_FACTOR is 1), before including this file, and calls
@@ -25,27 +25,27 @@
 ivec3 gDims;
 ivec3 gBricks;
 float gBrickSize;
-vec4 gTF;
+VsTransferFunction gTF;
 uint gClipCount;
 float gStep;
-uint gInterpolation; /* interpolation.h (G.march.w) */
+uint gInterpolation; /* interpolation.h (G.volume.interpolation) */
 
 void vs_load_sweep_globals()
 {
-  gTF = G.tf;
-  gClipCount = G.bricks.w;
-  gInterpolation = uint(G.march.w);
+  gTF = G.volume.tf;
+  gClipCount = G.volume.clipPlaneCount;
+  gInterpolation = G.volume.interpolation;
 #ifdef VS_SWEEP_POOLED
-  gDims = ivec3(G.poolDims.xyz);
-  gBricks = ivec3(G.poolBricks.xyz);
-  gBrickSize = G.pool.y;
-  gStep = G.pool.w;
+  gDims = ivec3(G.poolDims);
+  gBricks = ivec3(G.poolBricks);
+  gBrickSize = G.poolBrickSize;
+  gStep = G.poolStep;
 #else
-  vs_set_cropping(G.cropLo, G.cropHi, G.crop.x); /* in index space: the pooled volume is masked when built */
-  gDims = ivec3(G.dims.xyz);
-  gBricks = ivec3(G.bricks.xyz);
-  gBrickSize = G.march.y;
-  gStep = G.march.x;
+  vs_set_cropping(G.volume.cropLo, G.volume.cropHi, G.volume.cropFlags); /* in index space: the pooled volume is masked when built */
+  gDims = ivec3(G.volume.dims);
+  gBricks = ivec3(G.volume.majorantBricks);
+  gBrickSize = G.volume.majorantBrickSize;
+  gStep = G.step;
 #endif
 }
 
@@ -54,7 +54,7 @@ vec2 vs_clip_interval(vec3 o, vec3 d)
 {
   vec2 t = vec2(-1e30, 1e30);
   for (uint i = 0u; i < gClipCount; ++i)
-    t = vs_clip_by_plane(G.clipPlanes[i], o, d, t);
+    t = vs_clip_by_plane(G.volume.clipPlanes[i], o, d, t);
   return t;
 }
 
@@ -97,7 +97,7 @@ float vs_extinction(vec3 p)
 {
   for (uint i = 0u; i < gClipCount; ++i)
   {
-    if (dot(G.clipPlanes[i].xyz, p) + G.clipPlanes[i].w < 0.0)
+    if (dot(G.volume.clipPlanes[i].xyz, p) + G.volume.clipPlanes[i].w < 0.0)
       return 0.0;
   }
   float e = vs_classify_extinction(vs_sample(p, gDims, gInterpolation), gTF);

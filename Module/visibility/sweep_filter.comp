@@ -21,7 +21,7 @@ layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
  * loops unroll and the weights stay in registers; 0 = any number (a loop). */
 layout(constant_id = 0) const int VS_TAPS = 4;
 const int VS_TAPS_ARRAY = VS_TAPS > 0 ? VS_TAPS : 1;
-layout(std430, binding = VS_FILTER_GLOBALS) readonly buffer Globals { VsSweepGlobals G; };
+layout(std430, binding = VS_FILTER_GLOBALS) readonly buffer Globals { VsSweepParams G; };
 layout(std430, binding = VS_FILTER_DIRECTIONS) readonly buffer Directions { VsSweepDirection uDir[]; };
 /* r32f texels: lavapipe gathers a texel buffer at per-lane indices in one vector load, a storage
  * buffer in a scalar loop over the lanes. */
@@ -38,12 +38,12 @@ void main()
   uint k = D.axes.x, a = D.axes.y;
   uint slice = pc.firstSlice + s;
   uint ca = gl_GlobalInvocationID.x;
-  uint cellsA = G.grid[a];
+  uint cellsA = G.grid.cells[a];
   uvec2 n = D.kernel.xy;
-  if (s >= pc.count || slice >= G.grid[k] || ca >= cellsA)
+  if (s >= pc.count || slice >= G.grid.cells[k] || ca >= cellsA)
     return;
-  float t = vs_slice_t(G.boxMin[k], G.cellSize[k], G.grid[k], D.planeOrigin[k], D.travel[k], D.kernel.z == 1u, slice);
-  float pa = G.boxMin[a] + (float(ca) + 0.5) * G.cellSize[a];
+  float t = vs_slice_t(G.volume.boxMin[k], G.grid.cellSize[k], G.grid.cells[k], D.planeOrigin[k], D.travel[k], D.kernel.z == 1u, slice);
+  float pa = G.volume.boxMin[a] + (float(ca) + 0.5) * G.grid.cellSize[a];
   float u = (pa - t * D.travel[a] - D.planeOrigin[a]) / D.kernelStep.x;
   VsKernelTaps w = vs_kernel_taps(u, n.x, D.filterSize.x + 2.0 * t * D.filterSize.z);
   uint base = D.axes.w * pc.count + s * n.x * n.y;

@@ -9,8 +9,8 @@
  * extinction volume (bound as the image uPool, its occupancy as uPoolOccupancy) in pooled coordinates.
  *
  * A ray only marches the slices its segment of the occupied box (G.occupiedMin/Max) overlaps, and
- * stops marching once its transmittance is below G.march.z: the slices before are the value it
- * starts with, the slices after the value it stopped at (an overestimate by less than G.march.z,
+ * stops marching once its transmittance is below G.stopVisibility: the slices before are the value it
+ * starts with, the slices after the value it stopped at (an overestimate by less than G.stopVisibility,
  * which the renderer's pdf absorbs: the grid shapes sampling only). Lavapipe runs a loop for a SIMD
  * group of 8 rays until all 8 leave it, so a row of rays stops marching when all its rays have.
  */
@@ -31,7 +31,7 @@ layout(binding = VS_SWEEP_MAJORANT, r32f) uniform readonly image3D uMajorant;
 layout(binding = VS_SWEEP_FACTOR_IMAGE, r32f) uniform readonly image3D uFactor; /* read only with VS_SWEEP_FACTOR (sweep_access.glsl) */
 #define VS_FACTOR_IMAGE
 #endif
-layout(std430, binding = VS_SWEEP_GLOBALS) readonly buffer Globals { VsSweepGlobals G; };
+layout(std430, binding = VS_SWEEP_GLOBALS) readonly buffer Globals { VsSweepParams G; };
 layout(std430, binding = VS_SWEEP_DIRECTIONS) readonly buffer Directions { VsSweepDirection uDir[]; };
 layout(std430, binding = VS_SWEEP_STATE) buffer State { float uState[]; };  /* V per ray between chunks */
 layout(std430, binding = VS_SWEEP_STACK) writeonly buffer Stack { float uStack[]; };
@@ -50,23 +50,23 @@ void main()
   uint rays = D.kernel.x * D.kernel.y;
   uint ray = r.y * D.kernel.x + r.x;
   uint k = D.axes.x;
-  uint slices = G.grid[k];
-  float boxMinK = G.boxMin[k], cellSizeK = G.cellSize[k], startK = D.planeOrigin[k], travelK = D.travel[k];
+  uint slices = G.grid.cells[k];
+  float boxMinK = G.volume.boxMin[k], cellSizeK = G.grid.cellSize[k], startK = D.planeOrigin[k], travelK = D.travel[k];
   bool descending = D.kernel.z == 1u;
   vec3 o = D.planeOrigin.xyz;
   o[D.axes.y] += float(r.x) * D.kernelStep.x;
   o[D.axes.z] += float(r.y) * D.kernelStep.y;
   vec3 d = D.travel.xyz;
   // The part of the ray that can gather optical depth: inside the occupied box and the clip planes.
-  vec2 box = vs_intersect_box(o, d, G.occupiedMin.xyz, G.occupiedMax.xyz);
+  vec2 box = vs_intersect_box(o, d, G.occupiedMin, G.occupiedMax);
   vec2 keep = vs_clip_interval(o, d);
   box = vec2(max(box.x, keep.x), min(box.y, keep.y));
 #ifdef VS_SWEEP_POOLED
   // The pooled march runs in pooled texels.
-  o = (o - vec3(G.pool.z)) / G.pool.x;
-  d = d / G.pool.x;
+  o = (o - vec3(G.poolCentre)) / G.poolVoxels;
+  d = d / G.poolVoxels;
 #endif
-  float stop = G.march.z;
+  float stop = G.stopVisibility;
   float V = pc.firstSlice == 0u ? 1.0 : uState[D.axes.w + ray];
   uint end = min(pc.firstSlice + pc.count, slices);
   uint out0 = D.axes.w * pc.count + ray - pc.firstSlice * rays; /* stack index of slice s: out0 + s * rays */

@@ -14,6 +14,7 @@
  * what is not used is compiled out (lavapipe runs both sides of a branch).
  */
 #include "bindings.h"
+#include "volume_params.h"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(constant_id = 0) const int VS_POOL_P = 2;
 layout(constant_id = 1) const uint VS_POOL_MAX = 0u;
@@ -28,7 +29,7 @@ layout(push_constant) uniform Push
 {
   ivec4 dims;   /* voxels per axis */
   ivec4 pooled; /* pooled texels per axis */
-  vec4 tf;      /* LUT parameters */
+  VsTransferFunction tf;
   vec4 cropLo;  /* the cropping regions (vsVolumeGeometry.h): hidden voxels pool as 0 */
   vec4 cropHi;
   uvec4 crop;   /* x: flags; y: the first pooled slice of this dispatch (slab by slab builds) */
@@ -44,7 +45,7 @@ void main()
   ivec3 lo = j * VS_POOL_P;
   ivec3 last = pc.dims.xyz - 1;
   if (VS_POOL_CROP == 1u)
-    vs_set_cropping(pc.cropLo, pc.cropHi, pc.crop.x);
+    vs_set_cropping(pc.cropLo.xyz, pc.cropHi.xyz, pc.crop.x);
   float sum = 0.0, largest = 0.0;
   for (int z = 0; z < VS_POOL_P; ++z)
     for (int y = 0; y < VS_POOL_P; ++y)

@@ -18,7 +18,7 @@ layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
  * loops unroll and the weights stay in registers; 0 = any number (a loop). */
 layout(constant_id = 0) const int VS_TAPS = 4;
 const int VS_TAPS_ARRAY = VS_TAPS > 0 ? VS_TAPS : 1;
-layout(std430, binding = VS_PROJECT_GLOBALS) readonly buffer Globals { VsSweepGlobals G; };
+layout(std430, binding = VS_PROJECT_GLOBALS) readonly buffer Globals { VsSweepParams G; };
 layout(std430, binding = VS_PROJECT_DIRECTIONS) readonly buffer Directions { VsSweepDirection uDir[]; };
 layout(binding = VS_PROJECT_FILTERED) uniform samplerBuffer uFiltered; /* r32f texels: gathered, as sweep_filter.comp's uStack */
 layout(binding = VS_PROJECT_VISIBILITY, VS_VIS_FORMAT) uniform writeonly image3D uVisibility;
@@ -32,15 +32,15 @@ void main()
   uint k = D.axes.x, a = D.axes.y, b = D.axes.z;
   uint cb = gl_GlobalInvocationID.x, s = gl_GlobalInvocationID.y;
   uint slice = pc.firstSlice + s;
-  uint cellsK = G.grid[k], cellsA = G.grid[a];
-  if (cb >= G.grid[b] || s >= pc.count || slice >= cellsK)
+  uint cellsK = G.grid.cells[k], cellsA = G.grid.cells[a];
+  if (cb >= G.grid.cells[b] || s >= pc.count || slice >= cellsK)
     return;
   uint nb = D.kernel.y;
   uint dir = D.kernel.w;
-  uint side = G.grid.w;
+  uint side = G.grid.side;
   bool descending = D.kernel.z == 1u;
-  float t = vs_slice_t(G.boxMin[k], G.cellSize[k], cellsK, D.planeOrigin[k], D.travel[k], descending, slice);
-  float pb = G.boxMin[b] + (float(cb) + 0.5) * G.cellSize[b];
+  float t = vs_slice_t(G.volume.boxMin[k], G.grid.cellSize[k], cellsK, D.planeOrigin[k], D.travel[k], descending, slice);
+  float pb = G.volume.boxMin[b] + (float(cb) + 0.5) * G.grid.cellSize[b];
   float v = (pb - t * D.travel[b] - D.planeOrigin[b]) / D.kernelStep.y;
   VsKernelTaps w = vs_kernel_taps(v, nb, D.filterSize.y + 2.0 * t * D.filterSize.w);
   uint at = D.filtered.x * pc.count + s * cellsA * nb;

@@ -28,7 +28,7 @@ struct PoolPush
 {
   glm::ivec4 dims;
   glm::ivec4 pooled;
-  glm::vec4 tf;
+  shared::VsTransferFunction tf;
   glm::vec4 cropLo, cropHi;
   glm::uvec4 crop; // x: flags, y: the slab's first pooled slice
 };
@@ -149,9 +149,8 @@ double PooledExtinction::PoolSlices(
     .Bind(shared::VS_POOL_POOLED, *this->Pooled_);
   set.Bind(shared::VS_POOL_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   const Key& key = this->Key_;
-  auto t = tf.Params();
   PoolPush pp{ glm::ivec4(int(key.Dims[0]), int(key.Dims[1]), int(key.Dims[2]), key.Pooling.Max ? 1 : 0),
-    glm::ivec4(this->PooledDims_, int(key.Pooling.Factor)), glm::vec4(t[0], t[1], t[2], t[3]),
+    glm::ivec4(this->PooledDims_, int(key.Pooling.Factor)), tf.Params(),
     glm::vec4(key.Pooling.CropLo, 0.0f), glm::vec4(key.Pooling.CropHi, 0.0f),
     glm::uvec4(key.Pooling.CropFlags, z0, 0u, 0u) };
   Batch cmd(this->Context_);

@@ -14,6 +14,7 @@
 #include "vsMajorantGrid.h"
 #include "vsPipeline.h"
 #include "vsTransferFunctionTable.h"
+#include "vsVolumeParams.h"
 #include "sampling/interpolation.h"
 
 #include "vs_spirv_visibility_bruteforce.h"
@@ -196,6 +197,10 @@ void VisibilityGrid::RedirectDirections(const std::vector<std::pair<uint32_t, ui
   this->ContentSerial_ = NewSerial();
 }
 
+// Rows of 16 bytes (volume_params.h): a member that breaks the rule changes the size.
+static_assert(sizeof(shared::VsSweepParams) == sizeof(shared::VsVolumeParams) + sizeof(shared::VsGridParams) + 6 * 16,
+  "VsSweepParams: rows of 16 bytes (volume_params.h)");
+
 void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionTable& tf,
   const MajorantGrid& majorants, const VolumeGeometry& geometry, const std::vector<glm::dvec4>& worldClipPlanes,
   const VisibilityGridParameters& parameters, const std::vector<uint32_t>& requested, const Progress& progress)
@@ -223,30 +228,20 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
   this->Plan_ = SweepPlan::Make(geometry, parameters, maxFloats, directions, 8, info.MaxImageDimension3D);
 
   // What every dispatch shares.
-  shared::VsSweepGlobals g{};
-  g.worldToIndex = glm::mat4(geometry.WorldToIndex);
-  g.boxMin = glm::vec4(geometry.BoxMin, 0.0f);
-  g.boxMax = glm::vec4(geometry.BoxMax, 0.0f);
-  g.cellSize = glm::vec4(this->Plan_.CellSize, 0.0f);
-  g.grid = glm::uvec4(this->Plan_.Cells[0], this->Plan_.Cells[1], this->Plan_.Cells[2], this->Plan_.Side);
+  shared::VsSweepParams g{};
+  g.volume = MakeVolumeParams(geometry, tf,
+    parameters.NearestInterpolation ? shared::VS_INTERPOLATION_NEAREST : shared::VS_INTERPOLATION_LINEAR, worldClipPlanes,
+    &majorants);
+  g.grid.cellSize = this->Plan_.CellSize;
+  g.grid.cells = glm::uvec3(this->Plan_.Cells[0], this->Plan_.Cells[1], this->Plan_.Cells[2]);
+  g.grid.side = this->Plan_.Side;
   auto dims = volume.Dims();
-  g.dims = glm::vec4(float(dims[0]), float(dims[1]), float(dims[2]), 0.0f);
-  auto t = tf.Params();
-  g.tf = glm::vec4(t[0], t[1], t[2], t[3]);
-  const double step = parameters.StepSize > 0.0 ? parameters.StepSize : geometry.MinSpacing;
-  g.march = glm::vec4(float(step), float(majorants.BrickSize()), parameters.StopTransmittance,
-    float(parameters.NearestInterpolation ? shared::VS_INTERPOLATION_NEAREST : shared::VS_INTERPOLATION_LINEAR));
   auto bricks = majorants.Bricks();
-  g.bricks = glm::uvec4(bricks[0], bricks[1], bricks[2], uint32_t(worldClipPlanes.size()));
-  // World planes to index space: n.(M x + o) + w = (M^T n).x + (n.o + w).
-  const glm::dmat3 m(geometry.IndexToWorld);
-  const glm::dvec3 o(geometry.IndexToWorld[3]);
-  for (size_t i = 0; i < worldClipPlanes.size(); ++i)
-  {
-    glm::dvec3 n(worldClipPlanes[i]);
-    g.clipPlanes[i] = glm::vec4(glm::vec3(glm::transpose(m) * n), float(glm::dot(n, o) + worldClipPlanes[i].w));
-  }
-  g.bruteForce = glm::uvec4(parameters.BruteForceSamples, 1u, 0u, 0u);
+  const double step = parameters.StepSize > 0.0 ? parameters.StepSize : geometry.MinSpacing;
+  g.step = float(step);
+  g.stopVisibility = parameters.StopTransmittance;
+  g.supersamples = parameters.BruteForceSamples;
+  g.seed = 1u;
   // The occupied box: the bricks of nonzero majorant (each covers voxels [b B, (b + 1) B]),
   // widened by a pooled texel's reach (P voxels, and one for nearest-neighbour cells and rounding).
   {
@@ -267,13 +262,13 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
     if (m.size() != size_t(bricks[0]) * bricks[1] * bricks[2])
     {
       // Not the layout expected: no skipping.
-      g.occupiedMin = g.boxMin;
-      g.occupiedMax = g.boxMax;
+      g.occupiedMin = g.volume.boxMin;
+      g.occupiedMax = g.volume.boxMax;
     }
     else if (lo.x > hi.x)
     {
       // Nothing occludes: a degenerate box outside the volume, which no ray's interval overlaps.
-      g.occupiedMin = g.occupiedMax = glm::vec4(geometry.BoxMin - 8.0f, 0.0f);
+      g.occupiedMin = g.occupiedMax = geometry.BoxMin - 8.0f;
     }
     else
     {
@@ -283,13 +278,10 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
         1.0f;
       const glm::vec3 a = glm::vec3(lo) * float(B) - margin;
       const glm::vec3 b = glm::vec3(hi + 1) * float(B) + margin;
-      g.occupiedMin = glm::vec4(glm::max(a, geometry.BoxMin), 0.0f);
-      g.occupiedMax = glm::vec4(glm::min(b, geometry.BoxMax), 0.0f);
+      g.occupiedMin = glm::max(a, geometry.BoxMin);
+      g.occupiedMax = glm::min(b, geometry.BoxMax);
     }
   }
-  g.cropLo = glm::vec4(geometry.CropLo, 0.0f);
-  g.cropHi = glm::vec4(geometry.CropHi, 0.0f);
-  g.crop = glm::uvec4(geometry.CropFlags, 0u, 0u, 0u);
   const uint32_t factor = parameters.Algorithm == VisibilityGridParameters::Method::Sweep ? parameters.PoolingFactor() : 1u;
   if (factor > 1)
   {
@@ -300,11 +292,14 @@ void VisibilityGrid::Compute(const DeviceVolume& volume, const TransferFunctionT
       pooled[i] = (dims[i] + factor - 1) / factor;
       poolBricks[i] = (pooled[i] + brick - 1) / brick;
     }
-    g.pool = glm::vec4(float(factor), float(brick), 0.5f * float(factor - 1), float(step * factor));
-    g.poolDims = glm::uvec4(pooled, 0u);
-    g.poolBricks = glm::uvec4(poolBricks, 0u);
+    g.poolVoxels = float(factor);
+    g.poolBrickSize = float(brick);
+    g.poolCentre = 0.5f * float(factor - 1);
+    g.poolStep = float(step * factor);
+    g.poolDims = pooled;
+    g.poolBricks = poolBricks;
   }
-  Buffer globals(this->Context_, sizeof(g), "sweep globals");
+  Buffer globals(this->Context_, sizeof(g), "sweep parameters");
   globals.Upload(&g, sizeof(g));
 
   this->LastSeconds_ = 0.0;

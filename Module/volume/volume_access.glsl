@@ -16,7 +16,7 @@
  */
 #include "interpolation.h"
 #include "ray_box.glsl"
-#include "vs_prelude.h"
+#include "volume_params.h"
 
 /* Trilinear interpolation of the scalar at continuous index p with 8 imageLoads
  * (measured faster than sampler3D on lavapipe). Indices clamp to the volume. */
@@ -47,10 +47,10 @@ float vs_sample_scalar(vec3 p, ivec3 dims)
 vec3 gCropLo = vec3(0.0), gCropHi = vec3(0.0);
 uint gCropFlags = 0u;
 
-void vs_set_cropping(vec4 lo, vec4 hi, uint flags)
+void vs_set_cropping(vec3 lo, vec3 hi, uint flags)
 {
-  gCropLo = lo.xyz;
-  gCropHi = hi.xyz;
+  gCropLo = lo;
+  gCropHi = hi;
   gCropFlags = flags;
 }
 
@@ -133,48 +133,48 @@ vec4 vs_tf_entry(int i)
 
 /* Post-classification: (albedo rgb, extinction per world unit) of scalar s,
  * linear between LUT entries, clamped at the ends as VTK's transfer functions are. */
-vec4 vs_classify(float s, vec4 tf)
+vec4 vs_classify(float s, VsTransferFunction tf)
 {
   if (isnan(s))
     return vec4(0.0);
-  float x = clamp((s - tf.x) * tf.y, 0.0, tf.z - 1.0);
+  float x = clamp((s - tf.scalar0) * tf.entriesPerUnit, 0.0, tf.entries - 1.0);
   int i0 = int(floor(x));
-  int i1 = min(i0 + 1, int(tf.z) - 1);
+  int i1 = min(i0 + 1, int(tf.entries) - 1);
   return mix(vs_tf_entry(i0), vs_tf_entry(i1), x - float(i0));
 }
 
 /* The extinction of scalar s alone: vs_classify(s, tf).w, bit for bit, reading 2 of its 8 floats. */
-float vs_classify_extinction(float s, vec4 tf)
+float vs_classify_extinction(float s, VsTransferFunction tf)
 {
   if (isnan(s))
     return 0.0;
-  float x = clamp((s - tf.x) * tf.y, 0.0, tf.z - 1.0);
+  float x = clamp((s - tf.scalar0) * tf.entriesPerUnit, 0.0, tf.entries - 1.0);
   int i0 = int(floor(x));
-  int i1 = min(i0 + 1, int(tf.z) - 1);
+  int i1 = min(i0 + 1, int(tf.entries) - 1);
   return mix(vs_tf_float(4 * i0 + 3), vs_tf_float(4 * i1 + 3), x - float(i0));
 }
 
 /* Extinction entry i of level k of the range-maximum table (vsTransferFunctionTable.h): level 0 is
  * the LUT's w, levels 1.. follow the LUT, 4 floats per vec4. */
-float vs_tf_level_max(int level, int i, vec4 tf)
+float vs_tf_level_max(int level, int i, VsTransferFunction tf)
 {
   if (level == 0)
     return vs_tf_float(4 * i + 3);
-  int n = int(tf.z);
+  int n = int(tf.entries);
   int f = 4 * n + (level - 1) * n + i;
   return vs_tf_float(f);
 }
 
 /* The largest extinction vs_classify gives any scalar in [s0, s1], s0 <= s1: two reads of the
- * range-max table, whose tf.w levels cover every range of the LUT. The range is widened by 1e-6 of
+ * range-max table, whose tf.rangeLevels levels cover every range of the LUT. The range is widened by 1e-6 of
  * its magnitude, so that the rounding of a sample's scalar inside it (a few ulps) cannot reach an
  * entry outside it; a range of one exact value (an empty cell's zeros) stays exact. */
-float vs_max_extinction(float s0, float s1, vec4 tf)
+float vs_max_extinction(float s0, float s1, VsTransferFunction tf)
 {
   float widen = 1e-6 * max(abs(s0), abs(s1));
-  float last = tf.z - 1.0;
-  float a = clamp((s0 - widen - tf.x) * tf.y, 0.0, last);
-  float b = clamp((s1 + widen - tf.x) * tf.y, 0.0, last);
+  float last = tf.entries - 1.0;
+  float a = clamp((s0 - widen - tf.scalar0) * tf.entriesPerUnit, 0.0, last);
+  float b = clamp((s1 + widen - tf.scalar0) * tf.entriesPerUnit, 0.0, last);
   int i = int(floor(a));
   int j = int(ceil(b));
   int k = findMSB(j - i + 1);
@@ -217,7 +217,7 @@ float vs_nearest_midplane_exit(vec3 p, vec3 d, ivec3 lo)
  * extinction of 1e9 per voxel, tens of thousands per segment; lavapipe ends loops of 65535
  * iterations). A sample whose position rounds across a midplane (a few ulps) may read the voxel
  * beyond it: delta tracking then accepts it, a bias at the resolution of float positions. */
-float vs_nearest_max_extinction(vec3 f0, vec3 f1, vec4 c0, vec4 c1, vec4 tf)
+float vs_nearest_max_extinction(vec3 f0, vec3 f1, vec4 c0, vec4 c1, VsTransferFunction tf)
 {
   bvec3 low = lessThan(f0, vec3(0.5 - VS_NEAREST_TOLERANCE));
   bvec3 high = greaterThan(f1, vec3(0.5 + VS_NEAREST_TOLERANCE));

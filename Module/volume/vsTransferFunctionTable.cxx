@@ -138,10 +138,14 @@ TransferFunctionTable::TransferFunctionTable(std::shared_ptr<Context> context, c
 
 TransferFunctionTable::~TransferFunctionTable() = default;
 
-std::array<float, 4> TransferFunctionTable::Params() const
+shared::VsTransferFunction TransferFunctionTable::Params() const
 {
   const auto& s = this->Samples_;
-  return { { s.ScalarMin, float(double(s.Size() - 1) / (double(s.ScalarMax) - double(s.ScalarMin))), float(s.Size()),
-    float(s.RangeMaxLevelCount()) } };
+  shared::VsTransferFunction tf;
+  tf.scalar0 = s.ScalarMin;
+  tf.entriesPerUnit = float(double(s.Size() - 1) / (double(s.ScalarMax) - double(s.ScalarMin)));
+  tf.entries = float(s.Size());
+  tf.rangeLevels = float(s.RangeMaxLevelCount());
+  return tf;
 }
 }

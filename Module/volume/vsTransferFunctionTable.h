@@ -6,6 +6,7 @@
 #define vsTransferFunctionTable_h
 
 #include "vissweepCoreModule.h"
+#include "sampling/volume_params.h"
 
 #include <array>
 #include <cstdint>
@@ -65,8 +66,8 @@ public:
 
   const Buffer& Lut() const { return *this->Buffer_; }
   const TransferFunctionSamples& Samples() const { return this->Samples_; }
-  /** The `tf` vector of VsFrameParams: (scalar at entry 0, entries per unit, entries, range-max levels). */
-  std::array<float, 4> Params() const;
+  /** How the shaders read this table (volume_params.h VsTransferFunction). */
+  shared::VsTransferFunction Params() const;
 
 private:
   TransferFunctionSamples Samples_;

@@ -9,6 +9,7 @@
 #include "vsDeviceEnvironment.h"
 #include "vsEnvironmentMap.h"
 #include "vsMonteCarloPass.h"
+#include "vsVolumeParams.h"
 
 #include <array>
 #include <cmath>
@@ -43,44 +44,43 @@ struct RenderScene : VisibilityScene
   }
 
   /** Orthographic camera along +z covering world x, y in [lo, hi]; `visibleEnvironment` for escaping rays. */
-  vs::shared::VsRenderParams Params(uint32_t w, uint32_t h, float lo, float hi, uint32_t strategy,
+  vs::shared::VsMonteCarloParams Params(uint32_t w, uint32_t h, float lo, float hi, uint32_t strategy,
     uint32_t spp, uint32_t seed, bool visibleEnvironment = false) const
   {
-    vs::shared::VsRenderParams p{};
+    vs::shared::VsMonteCarloParams p{};
     glm::mat4 m(1.0f);
     m[0][0] = 0.5f * (hi - lo);
     m[1][1] = 0.5f * (hi - lo);
     m[2][2] = 100.0f;
     m[3] = glm::vec4(0.5f * (hi + lo), 0.5f * (hi + lo), 0.0f, 1.0f);
-    p.invViewProj = m;
-    p.worldToIndex = glm::mat4(this->Geometry.WorldToIndex);
-    p.boxMin = glm::vec4(this->Geometry.BoxMin, 0.0f);
-    p.boxMax = glm::vec4(this->Geometry.BoxMax, 0.0f);
-    auto d = this->Volume->Dims();
-    p.dims = glm::vec4(d[0], d[1], d[2], 0);
-    auto t = this->TF->Params();
-    p.tf = glm::vec4(t[0], t[1], t[2], t[3]);
-    p.background = glm::vec4(0.0f, 0.0f, 0.0f, visibleEnvironment ? 1.0f : 0.0f);
-    p.viewport = glm::uvec4(w, h, 0u, seed);
-    p.sampling = glm::uvec4(strategy, spp, vs::shared::VS_CELL_STOCHASTIC, uint32_t(this->Environment->FinestLevel()));
-    p.sampling2 = glm::vec4(0.01f, 1.0f, float(this->Majorants->BrickSize()), 0.0f);
+    p.camera.invViewProj = m;
+    p.camera.width = w;
+    p.camera.height = h;
+    p.camera.seed = seed;
+    p.volume = vs::MakeVolumeParams(this->Geometry, *this->TF, vs::shared::VS_INTERPOLATION_LINEAR, {}, this->Majorants.get());
+    p.background = visibleEnvironment ? vs::shared::VS_BACKGROUND_ENVIRONMENT : vs::shared::VS_BACKGROUND_TRANSPARENT;
+    p.strategy = strategy;
+    p.samplesPerFrame = spp;
+    p.cellMode = vs::shared::VS_CELL_STOCHASTIC;
+    p.environmentLevels = uint32_t(this->Environment->FinestLevel());
+    p.visibilityEpsilon = 0.01f;
+    p.environmentIntensity = 1.0f;
     auto c = this->Grid->Cells();
-    p.grid = glm::uvec4(c[0], c[1], c[2], this->Grid->Side());
-    p.cellSize = glm::vec4(this->Grid->CellSize(), 0.0f);
-    auto b = this->Majorants->Bricks();
-    p.bricks = glm::uvec4(b[0], b[1], b[2], 0u);
+    p.grid.cells = glm::uvec3(c[0], c[1], c[2]);
+    p.grid.side = this->Grid->Side();
+    p.grid.cellSize = this->Grid->CellSize();
     return p;
   }
 
-  /** Renders `frames` x params.sampling.y samples; returns (mean, variance) per pixel and channel. */
-  std::pair<std::vector<float>, std::vector<double>> Render(vs::shared::VsRenderParams p, int frames)
+  /** Renders `frames` x params.samplesPerFrame samples; returns (mean, variance) per pixel and channel. */
+  std::pair<std::vector<float>, std::vector<double>> Render(vs::shared::VsMonteCarloParams p, int frames)
   {
     vs::MonteCarloPass pass(this->Context);
     pass.SetDirectionTable(this->DirectionTable);
     pass.SetEmptySpaceSkipping(this->EmptySpaceSkipping);
     pass.SetVolumeQuads(this->VolumeQuads);
     pass.SetCountLookups(this->CountLookups);
-    pass.Reset(p.viewport.x, p.viewport.y);
+    pass.Reset(p.camera.width, p.camera.height);
     for (int f = 0; f < frames; ++f)
     {
       pass.Render(*this->Volume, *this->TF, *this->Majorants, this->Grid.get(), *this->Environment, p, {});

@@ -286,16 +286,19 @@ TEST(MonteCarlo, GradientOpacityFactorIsUnbiased)
         if (strategy == VS_STRATEGY_UNIFORM && v.camera == VS_CAMERA_RESERVOIR)
           continue;
         auto p = baked.Params(8, 8, -2.0f, 26.0f, strategy, 512, 3u, true);
-        p.tracking.x = v.refine;
-        p.tracking.z = float(v.camera);
-        p.tracking.w = float(interpolation);
-        p.crop.y = v.control;
+        p.cellWalkDepth = v.refine;
+        p.cameraEstimator = v.camera;
+        p.volume.interpolation = interpolation;
+        p.controlExtinction = v.control;
         auto [a, va] = baked.Render(p, 2);
         const double n = baked.LastSamples;
         auto q = scaled.Params(8, 8, -2.0f, 26.0f, strategy, 512, 0x9e3779b9u,
           true); // independent samples
-        q.tracking = p.tracking;
-        q.crop.y = v.control;
+        q.cellWalkDepth = p.cellWalkDepth;
+        q.cameraEstimator = p.cameraEstimator;
+        q.volume.interpolation = p.volume.interpolation;
+        q.shadowRays = p.shadowRays;
+        q.controlExtinction = v.control;
         auto [b, vb] = scaled.Render(q, 2);
         const Agreement agreement = Compare(a, va, b, vb, n);
         const std::string what = std::string(kNames[strategy]) + ", " + v.name + (nearest ? ", nearest" : ", linear");

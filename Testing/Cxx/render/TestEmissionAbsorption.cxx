@@ -14,18 +14,19 @@ using namespace vs;
 namespace
 {
 // An orthographic view along +z: NDC x,y in [-1,1] -> world [lo, hi], NDC z -1 -> z0, +1 -> z1.
-shared::VsFrameParams OrthoAlongZ(uint32_t w, uint32_t h, float lo, float hi, float z0, float z1)
+shared::VsEmissionAbsorptionParams OrthoAlongZ(uint32_t w, uint32_t h, float lo, float hi, float z0, float z1)
 {
-  shared::VsFrameParams p{};
+  shared::VsEmissionAbsorptionParams p{};
   glm::mat4 m(1.0f);
   m[0][0] = 0.5f * (hi - lo);
   m[1][1] = 0.5f * (hi - lo);
   m[2][2] = 0.5f * (z1 - z0);
   m[3] = glm::vec4(0.5f * (hi + lo), 0.5f * (hi + lo), 0.5f * (z1 + z0), 1.0f);
-  p.invViewProj = m;
-  p.worldToIndex = glm::mat4(1.0f);
-  p.indexToWorld = glm::mat4(1.0f);
-  p.viewport = glm::uvec4(w, h, 0, 1);
+  p.camera.invViewProj = m;
+  p.camera.width = w;
+  p.camera.height = h;
+  p.camera.seed = 1;
+  p.volume.worldToIndex = glm::mat4(1.0f);
   return p;
 }
 }
@@ -48,12 +49,12 @@ TEST(EmissionAbsorption, HomogeneousCubeIsAnalytic)
 
   const uint32_t W = 32, H = 32;
   auto p = OrthoAlongZ(W, H, -4.0f, 19.0f, -10.0f, 30.0f);
-  p.boxMin = glm::vec4(0.0f);
-  p.boxMax = glm::vec4(float(n - 1));
-  p.dims = glm::vec4(float(n));
-  auto t = tf.Params();
-  p.tf = glm::vec4(t[0], t[1], t[2], t[3]);
-  p.march = glm::vec4(0.37f, 0.999f, 0.0f, 0.0f); // a step that does not divide L
+  p.volume.boxMin = glm::vec3(0.0f);
+  p.volume.boxMax = glm::vec3(float(n - 1));
+  p.volume.dims = glm::vec3(float(n));
+  p.volume.tf = tf.Params();
+  p.step = 0.37f; // a step that does not divide L
+  p.terminationOpacity = 0.999f;
 
   EmissionAbsorptionPass pass(ctx);
   std::vector<float> rgba = pass.Render(volume, tf, p, {});
@@ -94,12 +95,12 @@ TEST(EmissionAbsorption, OpaqueDepthStopsRays)
     [](double) { return 0.5; }, [](double, double c[3]) { c[0] = c[1] = c[2] = 1.0; }, 1.0, 1.0));
   const uint32_t W = 8, H = 8;
   auto p = OrthoAlongZ(W, H, 1.0f, 6.0f, -10.0f, 30.0f);
-  p.boxMin = glm::vec4(0.0f);
-  p.boxMax = glm::vec4(float(n - 1));
-  p.dims = glm::vec4(float(n));
-  auto t = tf.Params();
-  p.tf = glm::vec4(t[0], t[1], t[2], t[3]);
-  p.march = glm::vec4(0.25f, 0.999f, 0.0f, 0.0f);
+  p.volume.boxMin = glm::vec3(0.0f);
+  p.volume.boxMax = glm::vec3(float(n - 1));
+  p.volume.dims = glm::vec3(float(n));
+  p.volume.tf = tf.Params();
+  p.step = 0.25f;
+  p.terminationOpacity = 0.999f;
   // Opaque surface at world z = 2 (window depth = (z - z0) / (z1 - z0) for this linear projection).
   std::vector<float> depth(W * H, float((2.0 + 10.0) / 40.0));
   EmissionAbsorptionPass pass(ctx);

@@ -97,7 +97,7 @@ TEST(MonteCarlo, HomogeneousBoxMatchesQuadrature)
       const uint32_t strategy = run < 5 ? run : (run == 5 ? VS_STRATEGY_ENVIRONMENT : VS_STRATEGY_TWO_STEP);
       auto p = scene.Params(W, H, lo, hi, strategy, 512, 11u, true);
       if (run >= 5)
-        p.mixture.y = float(VS_TRANSMITTANCE_RAY_MARCHING);
+        p.transmittance = VS_TRANSMITTANCE_RAY_MARCHING;
       auto [mean, var] = scene.Render(p, 4);
       // Per channel, sum of z^2 over the 16 pixels ~ chi-square(16): reject beyond its 1e-4 quantile (45.1).
       double chi2[3] = { 0, 0, 0 };
@@ -140,11 +140,11 @@ TEST(MonteCarlo, ReproducibleWhateverTheFrameSplit)
   const uint32_t total = 512;
   uint32_t catchUps = 0;
   bool usedTable = false;
-  auto render = [&](vs::shared::VsRenderParams p, int frames, uint32_t perDispatch, bool table) {
+  auto render = [&](vs::shared::VsMonteCarloParams p, int frames, uint32_t perDispatch, bool table) {
     vs::MonteCarloPass pass(scene.Context);
     pass.SetSamplesPerDispatch(perDispatch);
     pass.SetDirectionTable(table);
-    pass.Reset(p.viewport.x, p.viewport.y);
+    pass.Reset(p.camera.width, p.camera.height);
     for (int f = 0; f < frames; ++f)
       pass.Render(*scene.Volume, *scene.TF, *scene.Majorants, scene.Grid.get(), *scene.Environment, p, {});
     EXPECT_EQ(pass.Samples(), total);
@@ -162,7 +162,7 @@ TEST(MonteCarlo, ReproducibleWhateverTheFrameSplit)
     EXPECT_EQ(usedTable, table) << name;
     if (strategy == VS_STRATEGY_TWO_STEP)
       EXPECT_GT(catchUps, 0u) << total << " " << name << " samples fit one dispatch's loop budget: the split is not exercised";
-    p.sampling.y = 32;
+    p.samplesPerFrame = 32;
     auto [b, vb] = render(p, total / 32, 1, table);
     auto [c, vc] = render(p, total / 32, 7, table);
     ASSERT_EQ(a.size(), b.size());
@@ -191,8 +191,8 @@ TEST(MonteCarlo, CellMajorantWalkIsUnbiased)
     auto p = scene.Params(8, 8, -2.0f, 18.0f, strategy, 512, 3u, true);
     auto [a, va] = scene.Render(p, 2);
     const double n = scene.LastSamples;
-    p.tracking.x = 0.05f;
-    p.viewport.w = 4u; // independent samples
+    p.cellWalkDepth = 0.05f;
+    p.camera.seed = 4u; // independent samples
     auto [b, vb] = scene.Render(p, 2);
     const Agreement g = Compare(a, va, b, vb, n);
     EXPECT_GT(g.dof, 150) << kNames[strategy];
@@ -214,8 +214,8 @@ TEST(MonteCarlo, ShadowRaySplittingIsUnbiased)
     auto p = scene.Params(8, 8, -2.0f, 18.0f, strategy, 512, 3u, true);
     auto [a, va] = scene.Render(p, 2);
     const double n = scene.LastSamples;
-    p.tracking.y = 4.0f;
-    p.viewport.w = 4u; // independent samples
+    p.shadowRays = 4u;
+    p.camera.seed = 4u; // independent samples
     auto [b, vb] = scene.Render(p, 2);
     const Agreement g = Compare(a, va, b, vb, n);
     EXPECT_GT(g.dof, 150) << kNames[strategy];
@@ -224,8 +224,8 @@ TEST(MonteCarlo, ShadowRaySplittingIsUnbiased)
     // The most the mapper accepts (vtkVisibilitySweepVolumeMapper::SetShadowRays clamps to 64): the
     // rays share the loop budget's tracking steps, so a sample still fits one dispatch (with each
     // ray at the full tracking cap no sample fitted beyond 6 rays, and the render failed).
-    p.tracking.y = 64.0f;
-    p.viewport.w = 5u;
+    p.shadowRays = 64u;
+    p.camera.seed = 5u;
     auto [c, vc] = scene.Render(p, 2);
     const Agreement g64 = Compare(a, va, c, vc, n);
     EXPECT_GT(g64.dof, 150) << kNames[strategy];
@@ -248,11 +248,11 @@ TEST(MonteCarlo, ReservoirCameraIsUnbiased)
     for (bool background : { false, true })
     {
       auto p = scene.Params(8, 8, -2.0f, 18.0f, strategy, 512, 3u, true);
-      p.background.w = background ? 1.0f : 0.0f;
+      p.background = background ? VS_BACKGROUND_ENVIRONMENT : VS_BACKGROUND_TRANSPARENT;
       auto [a, va] = scene.Render(p, 2);
       const double n = scene.LastSamples;
-      p.tracking.z = float(VS_CAMERA_RESERVOIR);
-      p.viewport.w = 4u; // independent samples
+      p.cameraEstimator = VS_CAMERA_RESERVOIR;
+      p.camera.seed = 4u; // independent samples
       auto [b, vb] = scene.Render(p, 2);
       const Agreement g = Compare(a, va, b, vb, n);
       const std::string what = std::string(kNames[strategy]) + (background ? ", environment seen" : ", transparent");
@@ -307,7 +307,7 @@ TEST(MonteCarlo, TheModuleWithoutTheGridRendersTheSameBits)
   scene.CountLookups = false;
 }
 
-// Control extinctions (render_params.h crop.y, VS_CONTROL_*): residual ratio tracking of the shadow
+// Control extinctions (mc_params.h controlExtinction, VS_CONTROL_*): residual ratio tracking of the shadow
 // rays and decomposition tracking of the camera rays integrate each brick's smallest extinction
 // exactly and track only the rest. Unbiased: on a dense medium whose bricks are filled throughout
 // (and one with a NaN voxel, which must get no control) each variant's image agrees with plain
@@ -327,8 +327,8 @@ TEST(MonteCarlo, ControlExtinctionIsUnbiased)
       const uint64_t reads = scene.LastLookups[0];
       for (uint32_t control : { VS_CONTROL_SHADOW, VS_CONTROL_CAMERA, VS_CONTROL_SHADOW | VS_CONTROL_CAMERA })
       {
-        p.crop.y = control;
-        p.viewport.w = 4u + control; // independent samples
+        p.controlExtinction = control;
+        p.camera.seed = 4u + control; // independent samples
         auto [b, vb] = scene.Render(p, 2);
         const Agreement g = Compare(a, va, b, vb, n);
         const std::string what = std::string(kNames[strategy]) + ", control " + std::to_string(control) +
@@ -351,8 +351,8 @@ TEST(MonteCarlo, ControlExtinctionIsUnbiased)
   }
 }
 
-// Kettunen et al. 2021's unbiased ray-marching transmittance of the shadow rays (render_params.h
-// mixture.y = VS_TRANSMITTANCE_RAY_MARCHING), with and without the shadow rays' control extinction:
+// Kettunen et al. 2021's unbiased ray-marching transmittance of the shadow rays (mc_params.h
+// transmittance = VS_TRANSMITTANCE_RAY_MARCHING), with and without the shadow rays' control extinction:
 // on the dense heterogeneous medium of ControlExtinctionIsUnbiased (and with its NaN voxel, empty
 // space to the march) the image agrees with plain ratio tracking's within the standard errors,
 // alpha included. The estimate of one shadow ray can be negative or above 1; the image's mean cannot
@@ -378,9 +378,9 @@ TEST(MonteCarlo, RayMarchedTransmittanceIsUnbiased)
       const uint64_t reads = scene.LastLookups[0];
       for (uint32_t control : { 0u, VS_CONTROL_SHADOW })
       {
-        p.crop.y = control;
-        p.mixture.y = float(VS_TRANSMITTANCE_RAY_MARCHING);
-        p.viewport.w = 9u + control; // independent samples
+        p.controlExtinction = control;
+        p.transmittance = VS_TRANSMITTANCE_RAY_MARCHING;
+        p.camera.seed = 9u + control; // independent samples
         auto [b, vb] = scene.Render(p, 2);
         const Agreement g = Compare(a, va, b, vb, n);
         const std::string what = std::string(kNames[strategy]) + ", ray marching, control " +
@@ -400,7 +400,7 @@ TEST(MonteCarlo, RayMarchedTransmittanceIsUnbiased)
   }
 }
 
-// The Sobol sampler (render_params.h crop.z = VS_SAMPLER_SOBOL: each pixel's jitter and light
+// The Sobol sampler (mc_params.h pixelSampler = VS_SAMPLER_SOBOL: each pixel's jitter and light
 // directions from its scrambled Sobol sequences) is unbiased: its image agrees with independent
 // sampling's within the standard errors (which, computed from the per-sample variance, overstate the
 // Sobol mean's error: the check is conservative); and it pays: the mean squared difference between
@@ -417,8 +417,8 @@ TEST(MonteCarlo, SobolSamplerIsUnbiasedAndConvergesFaster)
     auto p = scene.Params(8, 8, -2.0f, 18.0f, strategy, 512, 3u, true);
     auto [a, va] = scene.Render(p, 2);
     const double n = scene.LastSamples;
-    p.crop.z = VS_SAMPLER_SOBOL;
-    p.viewport.w = 4u; // independent scrambles
+    p.pixelSampler = VS_SAMPLER_SOBOL;
+    p.camera.seed = 4u; // independent scrambles
     auto [b, vb] = scene.Render(p, 2);
     const Agreement g = Compare(a, va, b, vb, n);
     EXPECT_GT(g.dof, 150) << kNames[strategy];
@@ -427,14 +427,14 @@ TEST(MonteCarlo, SobolSamplerIsUnbiasedAndConvergesFaster)
     // Two renders of 64 spp with different seeds, per sampler: their mean squared difference.
     auto msd = [&](uint32_t sampler) {
       auto q = scene.Params(8, 8, -2.0f, 18.0f, strategy, 64, 11u, true);
-      q.crop.z = sampler;
+      q.pixelSampler = sampler;
       double sum = 0.0;
       int count = 0;
       for (uint32_t pair = 0; pair < 4; ++pair)
       {
-        q.viewport.w = 100u + 2u * pair;
+        q.camera.seed = 100u + 2u * pair;
         auto x = scene.Render(q, 1).first;
-        q.viewport.w = 101u + 2u * pair;
+        q.camera.seed = 101u + 2u * pair;
         auto y = scene.Render(q, 1).first;
         for (size_t i = 0; i < x.size(); ++i)
         {
@@ -452,7 +452,7 @@ TEST(MonteCarlo, SobolSamplerIsUnbiasedAndConvergesFaster)
   }
 }
 
-// Nearest interpolation (render_params.h tracking.w = 1): a label map of the scalars 0 and 1 under
+// Nearest interpolation (volume.interpolation = VS_INTERPOLATION_NEAREST): a label map of the scalars 0 and 1 under
 // a transfer function opaque only at 0.5 has no medium anywhere, so delta tracking never collides
 // (alpha exactly 0 at every pixel) although every brick's majorant (over the scalar range [0, 1])
 // is that of 0.5 and the cell walk refines the optically thick bricks. Trilinear (as before) sees
@@ -465,7 +465,7 @@ TEST(MonteCarlo, NearestInterpolationSeesNoBlendedLabels)
   for (uint32_t strategy : { VS_STRATEGY_ENVIRONMENT, VS_STRATEGY_TWO_STEP })
   {
     auto p = scene.Params(8, 8, -1.0f, 18.0f, strategy, 16, 5u);
-    p.tracking.w = float(VS_INTERPOLATION_NEAREST);
+    p.volume.interpolation = VS_INTERPOLATION_NEAREST;
     auto [nearest, vn] = scene.Render(p, 2);
     double maxAlpha = 0.0;
     for (size_t i = 3; i < nearest.size(); i += 4)
@@ -473,7 +473,7 @@ TEST(MonteCarlo, NearestInterpolationSeesNoBlendedLabels)
       maxAlpha = std::max(maxAlpha, double(nearest[i]));
     }
     EXPECT_EQ(maxAlpha, 0.0) << kNames[strategy] << ": nearest samples never read a blended label";
-    p.tracking.w = float(VS_INTERPOLATION_LINEAR);
+    p.volume.interpolation = VS_INTERPOLATION_LINEAR;
     auto [linear, vl] = scene.Render(p, 2);
     double meanAlpha = 0.0;
     for (size_t i = 3; i < linear.size(); i += 4)
@@ -501,11 +501,11 @@ TEST(MonteCarlo, NearestCellMajorantWalkIsUnbiased)
   for (uint32_t strategy : { VS_STRATEGY_UNIFORM, VS_STRATEGY_ENVIRONMENT })
   {
     auto p = scene.Params(8, 8, -2.0f, 18.0f, strategy, 512, 3u, true);
-    p.tracking.w = float(VS_INTERPOLATION_NEAREST);
+    p.volume.interpolation = VS_INTERPOLATION_NEAREST;
     auto [a, va] = scene.Render(p, 4);
     const double n = scene.LastSamples;
-    p.tracking.x = 0.05f;
-    p.viewport.w = 4u; // independent samples
+    p.cellWalkDepth = 0.05f;
+    p.camera.seed = 4u; // independent samples
     auto [b, vb] = scene.Render(p, 4);
     const Agreement g = Compare(a, va, b, vb, n);
     std::printf("%s nearest: cell walk against brick walk chi2 %.1f over %d dof\n", kNames[strategy], g.chi2, g.dof);

@@ -164,7 +164,7 @@ TEST(DirectionTable, RenderingFromTheTableIsUnbiased)
     const double n = scene.LastSamples;
     scene.DirectionTable = true;
     auto [same, vsame] = scene.Render(p, 2);
-    p.viewport.w = 4u; // independent samples
+    p.camera.seed = 4u; // independent samples
     auto [b, vb] = scene.Render(p, 2);
     EXPECT_TRUE(scene.LastUsedDirectionTable);
     const vstest::Agreement g = vstest::Compare(a, va, b, vb, n);
@@ -250,12 +250,12 @@ TEST(DirectionTable, PassRebuildsForNewGridValuesAtOnceOrOnceTheLastBuildIsPaidF
   sweep();
   scene.Environment =
     std::make_unique<vs::DeviceEnvironment>(scene.Context, vs::EnvironmentMap::Constant(16, glm::vec3(1.0f)));
-  p.sampling.w = uint32_t(scene.Environment->FinestLevel());
+  p.environmentLevels = uint32_t(scene.Environment->FinestLevel());
   render();
   EXPECT_EQ(pass.DirectionTableBuilds(), 4u) << "a new environment is rebuilt whatever the ratio";
 }
 
-// TwoStep's defensive mixture with Environment sampling (render_params.h mixture.x) is unbiased in
+// TwoStep's defensive mixture with Environment sampling (mc_params.h defensiveWeight) is unbiased in
 // the kernel: with the table and with the per-scatter map, its image agrees with plain TwoStep's.
 TEST(DirectionTable, DefensiveTwoStepIsUnbiased)
 {
@@ -266,8 +266,8 @@ TEST(DirectionTable, DefensiveTwoStepIsUnbiased)
     auto p = scene.Params(8, 8, -2.0f, 18.0f, VS_STRATEGY_TWO_STEP, 512, 3u, true);
     auto [a, va] = scene.Render(p, 2);
     const double n = scene.LastSamples;
-    p.mixture.x = 0.3f;
-    p.viewport.w = 4u; // independent samples
+    p.defensiveWeight = 0.3f;
+    p.camera.seed = 4u; // independent samples
     auto [b, vb] = scene.Render(p, 2);
     EXPECT_EQ(scene.LastUsedDirectionTable, table);
     const vstest::Agreement g = vstest::Compare(a, va, b, vb, n);
@@ -275,6 +275,6 @@ TEST(DirectionTable, DefensiveTwoStepIsUnbiased)
     EXPECT_LT(g.chi2, g.Bound()) << (table ? "table" : "map");
   }
   auto p = scene.Params(8, 8, -2.0f, 18.0f, VS_STRATEGY_TWO_STEP, 4, 3u, true);
-  p.mixture.x = 1.5f;
+  p.defensiveWeight = 1.5f;
   EXPECT_THROW(scene.Render(p, 1), vs::InputError);
 }

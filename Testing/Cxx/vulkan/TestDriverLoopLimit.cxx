@@ -8,7 +8,7 @@
 #include "vsBuffer.h"
 #include "vsContext.h"
 #include "vsPipeline.h"
-#include "sampling/render_params.h"
+#include "sampling/mc_params.h"
 
 #include "vs_spirv_loop_probe.h"
 

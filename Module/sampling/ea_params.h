@@ -1,0 +1,45 @@
+/*
+ * ea_params.h — what an emission-absorption dispatch needs (ea_render.comp; std430, the layout rule
+ * of volume_params.h): the camera, the volume as every pass sees it, the march, the projections'
+ * settings and the Phong shading of the composite.
+ */
+#ifndef VS_EA_PARAMS_H
+#define VS_EA_PARAMS_H
+#include "camera_params.h"
+#include "volume_params.h"
+
+VS_NAMESPACE_BEGIN
+
+/* Blend modes, VTK's vtkVolumeMapper::BlendModes values. Composite is emission-absorption; the
+ * projections follow vtkGPUVolumeRayCastMapper (ea_render.comp). */
+VS_CONST uint VS_BLEND_COMPOSITE = 0u;
+VS_CONST uint VS_BLEND_MAXIMUM = 1u;
+VS_CONST uint VS_BLEND_MINIMUM = 2u;
+VS_CONST uint VS_BLEND_AVERAGE = 3u;
+VS_CONST uint VS_BLEND_ADDITIVE = 4u;
+
+struct VsEmissionAbsorptionParams
+{
+  VsCameraParams camera;    /* camera.frame: the frame's index (its jitter) */
+  VsVolumeParams volume;    /* volume.majorant*: unused (the march takes fixed steps) */
+  float step;               /* march step (world units) */
+  float terminationOpacity; /* the composite stops at this opacity */
+  uint blend;               /* VS_BLEND_* */
+  uint unused;
+  /* The projections (VS_BLEND_MAXIMUM..ADDITIVE). */
+  float averageMin;          /* the average's scalar range (vtkVolumeMapper AverageIPScalarRange) */
+  float averageMax;
+  float opacityUnitDistance; /* the opacity of extinction sigma_t: alpha = 1 - exp(-sigma_t u) */
+  float unused2;
+  /* Phong shading of the composite (with VS_EA_SHADE). */
+  float ambient;
+  float diffuse;
+  float specular;
+  float specularPower;
+  vec3 lightDirection; /* world direction towards the light (VTK's headlight: against the view direction) */
+  float lightIntensity;
+};
+
+VS_NAMESPACE_END
+
+#endif
