@@ -176,12 +176,15 @@ bool OpenVDBFile::Open(openvdb::io::File& file, const std::string& topologyGrid,
     error = Quote(path) + ": cannot read the file size (" + ec.message() + ")";
     return false;
   }
-  if (!vtkOpenVDBVolumeReader::CanReadFile(path.c_str()))
+  // A file shorter than the magic number that is the start of it (an empty file too) is a VDB
+  // file cut short: the check reports its truncated header.
+  if (!vtkOpenVDBVolumeReader::CanReadFile(path.c_str()) &&
+    !OpenVDBFileCheck::EndsInsideMagic(path, int64_t(size)))
   {
     error = Quote(path) + " is not a VDB file (it does not start with OpenVDB's magic number)";
     return false;
   }
-  // Checked before OpenVDB parses anything beyond the magic number.
+  // Checked before OpenVDB parses anything beyond the magic number (first the header's length).
   OpenVDBFileCheck checker;
   try
   {

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -22,6 +23,39 @@ namespace vs
 {
 namespace
 {
+/* Whether the first n bytes of a file (n <= 8) are those of OPENVDB_MAGIC: a 64-bit integer
+ * in the byte order io::Archive writes and reads it in (the machine's). */
+bool StartsLikeMagic(const char* bytes, std::size_t n)
+{
+  const int64_t magic = openvdb::OPENVDB_MAGIC;
+  return std::memcmp(bytes, &magic, std::min<std::size_t>(n, sizeof(magic))) == 0;
+}
+
+/* The bytes io::Archive::readHeader (OpenVDB 10) reads from a file of format `version`: the
+ * magic number (8) and the format version (4); the library major and minor versions (4 + 4,
+ * from format 211); the "has grid offsets" byte (from 212); a compression byte (formats 220
+ * and 221 only); the UUID, 36 ASCII characters from format 218 (16 bytes before). 57 bytes for
+ * every format this reader supports (222 and later). */
+int64_t HeaderBytes(uint32_t version)
+{
+  int64_t n = 8 + 4;
+  if (version >= 211)
+  {
+    n += 4 + 4;
+  }
+  if (version >= 212)
+  {
+    n += 1;
+  }
+  if (version >= openvdb::OPENVDB_FILE_VERSION_SELECTIVE_COMPRESSION &&
+    version < openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION)
+  {
+    n += 1;
+  }
+  n += version >= openvdb::OPENVDB_FILE_VERSION_BOOST_UUID ? 36 : 16;
+  return n;
+}
+
 /* The walk of OpenVDBFileCheck::Check (see vsOpenVDBFileCheck.h): an io::Archive, whose protected
  * members read the header and set the stream's format version and compression as io::File does. */
 class FileChecker : public openvdb::io::Archive
@@ -40,6 +74,7 @@ public:
       OPENVDB_THROW(openvdb::IoError, "could not open file " << path);
     }
     this->Size = size;
+    this->CheckHeaderLength(is);
     this->readHeader(is); // fixed-size fields
     if (!this->inputHasGridOffsets())
     {
@@ -130,6 +165,38 @@ public:
 
 private:
   int64_t Size = 0;
+
+  /* Before io::Archive::readHeader, which reads its fixed-size fields without checking the
+   * stream: from a file that ends inside them it keeps whatever the variables held (a file of
+   * only the magic number left the "has grid offsets" flag uninitialised, and failed with one
+   * of two messages from run to run; a cut UUID left boost's parser reading an uninitialised
+   * character). The format version decides the header's length; a file too short to hold it
+   * is measured against the header of this library's format. A file that does not start like
+   * a VDB file is left to readHeader ("not a VDB file"). */
+  void CheckHeaderLength(std::istream& is)
+  {
+    char head[12] = {};
+    is.read(head, sizeof(head));
+    const int64_t got = int64_t(is.gcount());
+    is.clear();
+    is.seekg(0);
+    if (!StartsLikeMagic(head, std::size_t(got)))
+    {
+      return;
+    }
+    uint32_t version = openvdb::OPENVDB_FILE_VERSION;
+    if (got >= int64_t(sizeof(head)))
+    {
+      std::memcpy(&version, head + 8, sizeof(version));
+    }
+    const int64_t needed = HeaderBytes(version);
+    if (this->Size < needed)
+    {
+      OPENVDB_THROW(openvdb::IoError,
+        "truncated: the file ends inside the OpenVDB file header ("
+          << this->Size << " bytes, the header needs " << needed << ")");
+    }
+  }
 
   int64_t Remaining(std::istream& is) const
   {
@@ -433,5 +500,21 @@ void OpenVDBFileCheck::Check(const std::string& path, int64_t size, const std::s
   this->Names = checker.Names;
   this->LastGridEnd = checker.LastGridEnd;
   this->Streamed = checker.Streamed;
+}
+
+//------------------------------------------------------------------------------
+bool OpenVDBFileCheck::EndsInsideMagic(const std::string& path, int64_t size)
+{
+  if (size < 0 || size >= 8)
+  {
+    return false;
+  }
+  std::ifstream is(path, std::ios_base::in | std::ios_base::binary);
+  char head[8] = {};
+  if (!is || !is.read(head, std::streamsize(size)))
+  {
+    return false;
+  }
+  return StartsLikeMagic(head, std::size_t(size));
 }
 }

@@ -19,7 +19,9 @@ namespace vs
  *  it allocate without bound (or loop over a failed stream leaking nodes) instead of failing.
  *  Also collects what io::File keeps private: the grids in file order and where each ends (a
  *  file cut short inside its last leaf nodes still "reads" in OpenVDB, the missing tail
- *  decompressing to garbage). Covers the header, the metadata, the grid descriptors and
+ *  decompressing to garbage). Covers the header (its length before anything reads it:
+ *  io::Archive::readHeader does not check its stream either, and a file ending inside the
+ *  header left fields uninitialised), the metadata, the grid descriptors and
  *  the transforms of every grid and, for the float grid to be read (topologyGrid), its whole
  *  tree: node masks, and the size and blosc header of every compressed chunk. What it cannot
  *  judge is left to OpenVDB (a map type it does not know, a blosc stream that does not
@@ -31,8 +33,15 @@ public:
   int64_t LastGridEnd = -1;       // largest end offset of a grid; -1 without grid offsets
   bool Streamed = false;          // the file has no grid offsets (written by io::Stream)
 
-  /** Throws openvdb::IoError naming what is corrupt (or OpenVDB's own exceptions). */
+  /** Throws openvdb::IoError naming what is corrupt (or OpenVDB's own exceptions). The first
+   *  check is the length of the file header: a file that ends inside it (down to an empty
+   *  file, or one cut inside the magic number) is reported as such. */
   void Check(const std::string& path, int64_t size, const std::string& topologyGrid);
+
+  /** Whether a file of `size` bytes shorter than OpenVDB's 8-byte magic number is the start
+   *  of one (an empty file included): a VDB file cut short, which Check reports as a
+   *  truncated header rather than as a file of another kind. False for 8 bytes or more. */
+  static bool EndsInsideMagic(const std::string& path, int64_t size);
 };
 }
 #endif

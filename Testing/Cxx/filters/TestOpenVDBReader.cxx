@@ -20,7 +20,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -856,4 +859,163 @@ TEST_F(OpenVDBReader, DamagedLeafValuesAreErrors)
     vtkNew<vtkOpenVDBVolumeReader> reader;
     ExpectErrorContaining(reader, path, { "has 4 active voxels but the file's metadata says 5" }, "voxel count");
   }
+}
+
+// Found with valgrind: a file of only OpenVDB's 8-byte magic number failed with one of two
+// different messages from run to run. OpenVDB's io::Archive::readHeader reads the fixed-size
+// header (magic, format version, library major and minor, the "has grid offsets" byte, the
+// 36-character UUID) without checking the stream, so a file that ends inside it left the flag
+// uninitialised: sometimes "has no grid offsets", sometimes a corrupt metadata count. The
+// structure check now measures the header before anything reads it. Every truncation of a
+// valid file inside its header (from an empty file up to one byte short of the header) must
+// give one error, the same on every read, that names the truncation, and an empty output.
+namespace
+{
+/* The bytes of a .vdb file (the whole file). */
+std::vector<char> ReadBytes(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+/* The length of OpenVDB's file header in a file of format 222 or later: the 8-byte magic
+ * number, the 32-bit format version, the library major and minor versions (32 bits each), the
+ * "has grid offsets" byte and the UUID as 36 ASCII characters. Checked against the bytes. */
+std::size_t HeaderLength(const std::vector<char>& bytes)
+{
+  EXPECT_GE(bytes.size(), 61u);
+  uint32_t version = 0;
+  std::memcpy(&version, bytes.data() + 8, 4);
+  EXPECT_GE(version, uint32_t(openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION));
+  EXPECT_EQ(bytes[20], 1) << "has grid offsets";
+  const std::size_t uuid = 21, length = uuid + 36;
+  for (std::size_t i = uuid; i < length; ++i)
+  {
+    const bool hyphen = i == uuid + 8 || i == uuid + 13 || i == uuid + 18 || i == uuid + 23;
+    EXPECT_TRUE(hyphen ? bytes[i] == '-' : std::isxdigit(static_cast<unsigned char>(bytes[i])))
+      << "UUID character " << (i - uuid) << ": " << int(bytes[i]);
+  }
+  return length;
+}
+
+/* Reads `path` twice, each time with a new reader: one error each time, the same, and an
+ * empty output. Returns the error. */
+std::string ReadTwiceExpectingOneError(const std::string& path)
+{
+  std::string first;
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    SCOPED_TRACE(pass);
+    vtkNew<vtkOpenVDBVolumeReader> reader;
+    vtkSmartPointer<Messages> msgs = RunFile(reader, path);
+    EXPECT_EQ(msgs->Errors.size(), 1u) << msgs->AllErrors();
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+    EXPECT_EQ(reader->GetOutput()->GetPointData()->GetNumberOfArrays(), 0);
+    EXPECT_EQ(reader->GetNumberOfGrids(), 0);
+    // vtkErrorMacro's text without its "ERROR: In <file>, line <n>\n<class> (<address>): "
+    // prefix (the address changes with the reader).
+    std::string error = msgs->Errors.empty() ? std::string() : msgs->Errors[0];
+    const std::size_t text = error.find("): ");
+    EXPECT_NE(text, std::string::npos) << error;
+    if (text != std::string::npos)
+    {
+      error = error.substr(text + 3);
+    }
+    if (pass == 0)
+    {
+      first = error;
+    }
+    else
+    {
+      EXPECT_EQ(error, first) << "a different message on the second read";
+    }
+  }
+  return first;
+}
+
+void ExpectHeaderTruncation(const std::string& error, const std::string& name, std::size_t size,
+  std::size_t needed)
+{
+  const std::string cause = "ends inside the OpenVDB file header (" + std::to_string(size) +
+    " bytes, the header needs " + std::to_string(needed) + ")";
+  EXPECT_NE(error.find(name), std::string::npos) << error;
+  EXPECT_NE(error.find(cause), std::string::npos) << "no \"" << cause << "\" in " << error;
+}
+} // namespace
+
+TEST_F(OpenVDBReader, MagicNumberOnlyIsOneTruncationError)
+{
+  TempDir tmp;
+  const std::vector<char> bytes = ReadBytes(SmokeDir + "smoke_0004.vdb");
+  const std::size_t header = HeaderLength(bytes);
+  ASSERT_EQ(header, 57u);
+  const std::string path = tmp.File("magic_only.vdb");
+  std::ofstream(path, std::ios::binary).write(bytes.data(), 8);
+  ASSERT_EQ(vtkOpenVDBVolumeReader::CanReadFile(path.c_str()), 1);
+  // More reads than two: the old failure changed with the stack's garbage.
+  std::string first;
+  for (int i = 0; i < 5; ++i)
+  {
+    const std::string error = ReadTwiceExpectingOneError(path);
+    ExpectHeaderTruncation(error, "magic_only.vdb", 8, header);
+    if (i == 0)
+    {
+      first = error;
+    }
+    EXPECT_EQ(error, first);
+  }
+}
+
+TEST_F(OpenVDBReader, EveryTruncationInsideTheHeaderIsOneTruncationError)
+{
+  TempDir tmp;
+  // The real smoke frame (written by Blender's OpenVDB) and a file written here.
+  const std::string written = tmp.File("written.vdb");
+  Write(written, { SmallGrid(ScaleTranslate(1, 1, 1, 0, 0, 0)) });
+  for (const std::string& source : { SmokeDir + "smoke_0004.vdb", written })
+  {
+    SCOPED_TRACE(source);
+    const std::vector<char> bytes = ReadBytes(source);
+    const std::size_t header = HeaderLength(bytes);
+    ASSERT_EQ(header, 57u);
+    {
+      vtkNew<vtkOpenVDBVolumeReader> reader;
+      EXPECT_TRUE(RunFile(reader, source)->Errors.empty()) << "the whole file reads";
+    }
+    const std::string stem = source == written ? "written_" : "smoke_";
+    for (std::size_t keep = 0; keep < header; ++keep)
+    {
+      SCOPED_TRACE(keep);
+      const std::string name = stem + std::to_string(keep) + ".vdb";
+      const std::string path = tmp.File(name);
+      std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(keep));
+      ExpectHeaderTruncation(ReadTwiceExpectingOneError(path), name, keep, header);
+    }
+    // The whole header and nothing after it: the file metadata (its count first) is missing.
+    // Not a header truncation, but still one deterministic error.
+    const std::string name = stem + std::to_string(header) + ".vdb";
+    const std::string path = tmp.File(name);
+    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(header));
+    const std::string error = ReadTwiceExpectingOneError(path);
+    EXPECT_NE(error.find(name), std::string::npos) << error;
+    EXPECT_NE(error.find("the file metadata"), std::string::npos) << error;
+    EXPECT_EQ(error.find("file header"), std::string::npos) << error;
+  }
+
+  // The header's length follows the format version: formats 220 and 221 have a compression
+  // byte before the UUID (58 bytes), so 57 bytes of a format-221 file end inside the header.
+  {
+    std::vector<char> bytes = ReadBytes(written);
+    const uint32_t version = 221;
+    std::memcpy(bytes.data() + 8, &version, 4);
+    const std::string path = tmp.File("format221_57.vdb");
+    std::ofstream(path, std::ios::binary).write(bytes.data(), 57);
+    ExpectHeaderTruncation(ReadTwiceExpectingOneError(path), "format221_57.vdb", 57, 58);
+  }
+
+  // A short file that is not the start of a VDB file is still "not a VDB file".
+  const std::string path = tmp.File("short_text.vdb");
+  std::ofstream(path, std::ios::binary) << "VDB";
+  const std::string error = ReadTwiceExpectingOneError(path);
+  EXPECT_NE(error.find("not a VDB file"), std::string::npos) << error;
 }
