@@ -18,6 +18,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -54,9 +55,9 @@ LightVolume::~LightVolume() = default;
 std::vector<glm::vec3> LightVolume::DirectionRadiance(
   const DeviceEnvironment& environment, uint32_t side, double intensity)
 {
-  if (!(intensity >= 0.0) || !std::isfinite(intensity))
+  if (!(intensity >= 0.0) || !(intensity <= double(std::numeric_limits<float>::max())))
   {
-    throw InputError("the light volume's environment intensity must be finite and >= 0, got " +
+    throw InputError("the light volume's environment intensity must be >= 0 and a finite float, got " +
       std::to_string(intensity));
   }
   if (side < 2 || side > 16 || (side & (side - 1)) != 0)

@@ -36,7 +36,7 @@ public:
   explicit LightVolume(std::shared_ptr<Context> context);
   ~LightVolume();
 
-  /** Makes the light volume current for this grid, environment and intensity (>= 0, finite): builds
+  /** Makes the light volume current for this grid, environment and intensity (>= 0, a finite float): builds
    *  it unless it was built from exactly these. Returns whether it built. Throws InputError for a grid
    *  not computed yet, an environment coarser than the grid's directions or a bad intensity. */
   bool Update(const VisibilityGrid& grid, const DeviceEnvironment& environment, double intensity = 1.0);

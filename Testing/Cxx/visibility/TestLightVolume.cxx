@@ -388,6 +388,7 @@ TEST(LightVolume, BadInputIsAnError)
   EXPECT_THROW(light.Update(grid, env, 1.0), vs::InputError);
   EXPECT_THROW(light.Update(grid, env, std::nan("")), vs::InputError);
   EXPECT_THROW(light.Update(grid, env, -1.0), vs::InputError);
+  EXPECT_THROW(light.Update(grid, env, 1e39), vs::InputError); // beyond the device's float
   EXPECT_THROW(vs::LightVolume::DirectionRadiance(env, 3, 1.0), vs::InputError);
   EXPECT_FALSE(light.Valid());
 }
