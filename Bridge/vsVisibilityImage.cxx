@@ -1,5 +1,7 @@
 #include "vsVisibilityImage.h"
 
+#include "vsError.h"
+#include "vsLightVolume.h"
 #include "vsSweepPlan.h"
 #include "vsVisibilityGrid.h"
 #include "vsVolumeGeometry.h"
@@ -92,5 +94,27 @@ void VisibilityGridToImage(const VisibilityGrid& grid, const VolumeGeometry& phy
   method->SetName("Method");
   method->InsertNextValue(p.Algorithm == VisibilityGridParameters::Method::Sweep ? "Sweep" : "BruteForce");
   out->GetFieldData()->AddArray(method);
+}
+
+void LightVolumeToImage(const LightVolume& light, vtkImageData* out)
+{
+  const auto cells = light.Cells();
+  int dims[3];
+  out->GetDimensions(dims);
+  if (!light.Valid() || dims[0] != int(cells[0]) || dims[1] != int(cells[1]) || dims[2] != int(cells[2]))
+  {
+    throw InputError("the light volume was not built from this image's grid");
+  }
+  const std::vector<float> rgba = light.Download();
+  const vtkIdType n = vtkIdType(cells[0]) * cells[1] * cells[2];
+  vtkNew<vtkFloatArray> irradiance;
+  irradiance->SetName("Irradiance");
+  irradiance->SetNumberOfComponents(3);
+  irradiance->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    irradiance->SetTypedTuple(i, &rgba[4 * size_t(i)]);
+  }
+  out->GetPointData()->AddArray(irradiance);
 }
 }

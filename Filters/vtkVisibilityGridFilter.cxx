@@ -1,8 +1,13 @@
 #include "vtkVisibilityGridFilter.h"
 
+#include "vtkEnvironmentMapAlgorithm.h"
+
 #include "vsContext.h"
+#include "vsDeviceEnvironment.h"
 #include "vsDeviceVolume.h"
+#include "vsEnvironmentMap.h"
 #include "vsError.h"
+#include "vsLightVolume.h"
 #include "vsVisibilityGrid.h"
 #include "vsVisibilityImage.h"
 #include "vsVolumeInput.h"
@@ -20,6 +25,8 @@
 #include "vtkVolumeProperty.h"
 
 #include <array>
+#include <string>
+#include <vector>
 
 vtkStandardNewMacro(vtkVisibilityGridFilter);
 vtkCxxSetObjectMacro(vtkVisibilityGridFilter, VolumeProperty, vtkVolumeProperty);
@@ -29,13 +36,38 @@ struct vtkVisibilityGridFilter::Internals
 {
   std::unique_ptr<vs::VolumeScene> Scene;
   std::unique_ptr<vs::VisibilityGrid> Grid;
+  /** The settings and planes the grid was computed with (empty: compute it again). A run that only
+   *  changes the environment or its intensity keeps the grid and rebuilds the light volume. */
+  std::vector<double> GridKey;
+  /** The environment of input port 1 on the device, uploaded again when the image changes. */
+  std::unique_ptr<vs::DeviceEnvironment> Environment;
+  vtkMTimeType EnvironmentTime = 0;
+  std::unique_ptr<vs::LightVolume> Light;
+
+  /** The environment of `image` on the device with at least `side` texels a side. */
+  const vs::DeviceEnvironment& UpdateEnvironment(const std::shared_ptr<vs::Context>& context, vtkImageData* image, int side)
+  {
+    if (!this->Environment || image->GetMTime() != this->EnvironmentTime || this->Environment->Size() < side)
+    {
+      this->Environment.reset();
+      std::string error;
+      std::shared_ptr<const vs::EnvironmentMap> map = vtkEnvironmentMapAlgorithm::EnvironmentMapFromImage(image, &error);
+      if (!map)
+      {
+        throw vs::InputError("the environment input is not an environment map: " + error);
+      }
+      this->Environment = std::make_unique<vs::DeviceEnvironment>(context, *map, std::max(8, side));
+      this->EnvironmentTime = image->GetMTime();
+    }
+    return *this->Environment;
+  }
 };
 
 vtkVisibilityGridFilter::vtkVisibilityGridFilter()
   : FilterAngleFraction(vs::VisibilityGridParameters().FilterAngleFraction)
   , Impl(new Internals)
 {
-  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(1);
 }
 
@@ -70,9 +102,28 @@ double vtkVisibilityGridFilter::GetNumberOfComputedDirections()
   return this->Impl->Grid ? double(this->Impl->Grid->DirectionsComputed()) : 0.0;
 }
 
-int vtkVisibilityGridFilter::FillInputPortInformation(int, vtkInformation* info)
+double vtkVisibilityGridFilter::GetNumberOfIrradianceBuilds()
+{
+  return this->Impl->Light ? double(this->Impl->Light->Builds()) : 0.0;
+}
+
+void vtkVisibilityGridFilter::SetEnvironmentConnection(vtkAlgorithmOutput* port)
+{
+  this->SetInputConnection(1, port);
+}
+
+void vtkVisibilityGridFilter::SetEnvironmentData(vtkImageData* environment)
+{
+  this->SetInputData(1, environment);
+}
+
+int vtkVisibilityGridFilter::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
   return 1;
 }
 
@@ -118,9 +169,15 @@ int vtkVisibilityGridFilter::RequestInformation(
 int vtkVisibilityGridFilter::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
-    inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+  // The whole volume, and the whole environment map when there is one.
+  for (int port = 0; port < 2; ++port)
+  {
+    if (vtkInformation* inInfo = inputVector[port]->GetInformationObject(0))
+    {
+      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+        inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+    }
+  }
   return 1;
 }
 
@@ -128,6 +185,7 @@ int vtkVisibilityGridFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0]);
+  vtkImageData* environment = vtkImageData::GetData(inputVector[1]);
   vtkImageData* output = vtkImageData::GetData(outputVector);
   output->Initialize();
   if (!this->VolumeProperty)
@@ -180,17 +238,44 @@ int vtkVisibilityGridFilter::RequestData(
     }
     const vs::VolumeScene& scene = *this->Impl->Scene;
     planes = vs::EffectiveClipPlanes(planes, scene.Geometry()); // only those that cut the volume count
-    vs::VisibilityGrid::CheckFits(*ctx, scene.Geometry(), p);
-    this->UpdateProgress(0.0);
-    this->Impl->Grid->Compute(scene.Volume(), scene.TF(), scene.Majorants(), scene.Geometry(), planes, p, {},
-      [this](double f) { this->UpdateProgress(f); });
-    this->LastDeviceSeconds = this->Impl->Grid->LastSeconds();
+    // The grid is computed again when its settings, planes or extinction changed (the filter also
+    // runs for a new environment or intensity, which change only the light volume).
+    std::vector<double> key = { double(p.DirectionResolution), p.VoxelsPerCell, double(p.KernelResolution),
+      p.StepSize, double(p.Filtering), p.FilterAngleFraction, double(this->Method), double(p.BruteForceSamples),
+      double(this->StorageFormat), double(p.NearestInterpolation) };
+    for (const glm::dvec4& plane : planes)
+    {
+      key.insert(key.end(), { plane.x, plane.y, plane.z, plane.w });
+    }
+    if (key != this->Impl->GridKey || changes.Data || changes.Extinction || changes.Geometry ||
+      changes.Interpolation || !this->Impl->Grid->Valid())
+    {
+      this->Impl->GridKey.clear();
+      vs::VisibilityGrid::CheckFits(*ctx, scene.Geometry(), p);
+      this->UpdateProgress(0.0);
+      this->Impl->Grid->Compute(scene.Volume(), scene.TF(), scene.Majorants(), scene.Geometry(), planes, p, {},
+        [this](double f) { this->UpdateProgress(f); });
+      this->LastDeviceSeconds = this->Impl->Grid->LastSeconds();
+      this->Impl->GridKey = key;
+    }
     vs::VisibilityGridToImage(*this->Impl->Grid, scene.Geometry(), output);
+    if (environment)
+    {
+      if (!this->Impl->Light)
+      {
+        this->Impl->Light = std::make_unique<vs::LightVolume>(ctx);
+      }
+      const vs::DeviceEnvironment& env =
+        this->Impl->UpdateEnvironment(ctx, environment, int(this->Impl->Grid->Side()));
+      this->Impl->Light->Update(*this->Impl->Grid, env, this->EnvironmentIntensity);
+      vs::LightVolumeToImage(*this->Impl->Light, output);
+    }
     return 1;
   }
   catch (const std::exception& e)
   {
     output->Initialize();
+    this->Impl->GridKey.clear(); // the next run computes the grid again
     vtkErrorMacro(<< "cannot compute the visibility grid: " << e.what());
     return 0;
   }
@@ -209,8 +294,11 @@ void vtkVisibilityGridFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BruteForceSamples: " << this->BruteForceSamples << "\n";
   os << indent << "StorageFormat: " << this->GetStorageFormatAsString() << "\n";
   os << indent << "DensityScale: " << this->DensityScale << "\n";
+  os << indent << "EnvironmentIntensity: " << this->EnvironmentIntensity << "\n";
+  os << indent << "Environment: " << (this->GetNumberOfInputConnections(1) > 0 ? "connected" : "(none)") << "\n";
   os << indent << "VolumeProperty: " << this->VolumeProperty << "\n";
   os << indent << "ClippingPlanes: " << this->ClippingPlanes << "\n";
   os << indent << "NumberOfComputedDirections: " << this->GetNumberOfComputedDirections() << "\n";
   os << indent << "LastDeviceSeconds: " << this->LastDeviceSeconds << "\n";
+  os << indent << "NumberOfIrradianceBuilds: " << this->GetNumberOfIrradianceBuilds() << "\n";
 }

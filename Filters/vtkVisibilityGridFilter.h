@@ -11,6 +11,13 @@
  *   the centre of texel (n % D, n / D) of the equal-area octahedral map (field data
  *   "Directions" lists them);
  * - point scalars "MeanVisibility": the mean over the sphere (1 - ambient occlusion);
+ * - point array "Irradiance", when an environment is given (input port 1, SetEnvironmentConnection):
+ *   3 components (linear RGB), the environment light reaching the cell, the light volume
+ *   sum_n V(cell, n) E_n over the D x D directions, E_n the environment's radiance (times
+ *   EnvironmentIntensity) integrated over the solid angle 4 pi / D^2 of direction n's texel
+ *   (radiance x sr; under a constant sky of radiance L and no occluder, 4 pi L). For the renderer's
+ *   isotropic phase function the single-scattered radiance at the cell is albedo x sigma_t / (4 pi) x
+ *   Irradiance. A new environment or intensity rebuilds only this array, not the grid;
  * - field data with the parameters and the device time.
  *
  * Computed on the Vulkan device by plane sweeps (Method Sweep, default) or by brute-force
@@ -22,6 +29,7 @@
  * f.SetInputConnection(reader.GetOutputPort())
  * f.SetVolumeProperty(volume_property)
  * f.Update()   # f.GetOutput().GetPointData().GetArray("Visibility")
+ * f.SetEnvironmentConnection(env_reader.GetOutputPort())  # adds "Irradiance"
  * @endcode
  */
 #ifndef vtkVisibilityGridFilter_h
@@ -32,6 +40,7 @@
 
 #include <memory>
 
+class vtkAlgorithmOutput;
 class vtkPlaneCollection;
 class vtkVolumeProperty;
 
@@ -57,6 +66,18 @@ public:
   /** The transfer function (component 0) and unit distance that define extinction. */
   void SetVolumeProperty(vtkVolumeProperty* property);
   vtkGetObjectMacro(VolumeProperty, vtkVolumeProperty);
+
+  ///@{
+  /** The environment (input port 1, optional): a vtkEnvironmentMapReader / vtkEnvironmentMapSource
+   *  output, as vtkVisibilitySweepVolumeMapper takes it. With one, the output has "Irradiance". */
+  void SetEnvironmentConnection(vtkAlgorithmOutput* port);
+  void SetEnvironmentData(vtkImageData* environment);
+  ///@}
+  ///@{
+  /** Scales the environment's radiance in "Irradiance" (the mapper's EnvironmentIntensity). Default 1. */
+  vtkSetClampMacro(EnvironmentIntensity, double, 0.0, VTK_FLOAT_MAX);
+  vtkGetMacro(EnvironmentIntensity, double);
+  ///@}
 
   /** Planes whose negative side holds no occluders (as vtkVolumeMapper's clipping planes). */
   void SetClippingPlanes(vtkPlaneCollection* planes);
@@ -129,6 +150,8 @@ public:
   double GetNumberOfComputedDirections();
   /** Device seconds of the last computation. */
   vtkGetMacro(LastDeviceSeconds, double);
+  /** Times "Irradiance" (the light volume) was built since the filter was made. */
+  double GetNumberOfIrradianceBuilds();
 
   vtkMTimeType GetMTime() override;
 
@@ -153,6 +176,7 @@ protected:
   int BruteForceSamples = 1;
   int StorageFormat = Unorm8;
   double DensityScale = 1.0;
+  double EnvironmentIntensity = 1.0;
   double LastDeviceSeconds = 0.0;
 
 private:

@@ -4,6 +4,7 @@
 #include "vsBenchStress.h"
 #include "vsBenchOverhead.h"
 #include "vsBenchAnimation.h"
+#include "vsBenchLightVolume.h"
 #include "vsBenchSweeps.h"
 #include "vsRenderCommand.h"
 #include "vsContext.h"
@@ -30,6 +31,7 @@ int main(int argc, char** argv)
   vstool::AddBenchConvergence(*bench);
   vstool::AddBenchStress(*bench);
   vstool::AddBenchAnimation(*bench);
+  vstool::AddBenchLightVolume(*bench);
   vstool::AddRender(app);
   try
   {

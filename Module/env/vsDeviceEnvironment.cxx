@@ -66,15 +66,36 @@ DeviceEnvironment::DeviceEnvironment(std::shared_ptr<Context> context, const Env
   const int coarsest = std::min(this->Level_, kHostLevels);
   this->CoarseMips_.assign(map->ImportanceMips.begin(),
     map->ImportanceMips.begin() + std::ptrdiff_t(EnvironmentMap::MipOffset(coarsest + 1)));
+  // The radiance at the finest kept level: its coarser levels are exact means of it (nested texels).
+  const std::vector<glm::vec3> coarse = map->MeanRadianceLevel(1 << coarsest);
+  this->Coarse_ = std::make_unique<EnvironmentMap>(EnvironmentMap::Allocate(1 << coarsest));
+  for (size_t i = 0; i < coarse.size(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      this->Coarse_->Radiance[3 * i + c] = coarse[i][c];
+    }
+  }
+}
+
+void DeviceEnvironment::CheckHostLevel(int level) const
+{
+  if (level < 0 || level > std::min(this->Level_, kHostLevels))
+  {
+    throw InputError("environment level " + std::to_string(level) + " is not kept (levels 0.." +
+      std::to_string(std::min(this->Level_, kHostLevels)) + ")");
+  }
+}
+
+std::vector<glm::vec3> DeviceEnvironment::RadianceLevel(int level) const
+{
+  this->CheckHostLevel(level);
+  return this->Coarse_->MeanRadianceLevel(1 << level);
 }
 
 std::vector<float> DeviceEnvironment::ImportanceLevel(int level) const
 {
-  if (level < 0 || level > std::min(this->Level_, kHostLevels))
-  {
-    throw InputError("environment importance level " + std::to_string(level) + " is not kept (levels 0.." +
-      std::to_string(std::min(this->Level_, kHostLevels)) + ")");
-  }
+  this->CheckHostLevel(level);
   const size_t first = EnvironmentMap::MipOffset(level), last = EnvironmentMap::MipOffset(level + 1);
   return std::vector<float>(this->CoarseMips_.begin() + std::ptrdiff_t(first), this->CoarseMips_.begin() + std::ptrdiff_t(last));
 }

@@ -6,6 +6,8 @@
 
 #include "vissweepCoreModule.h"
 
+#include <glm/glm.hpp>
+
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -39,6 +41,11 @@ public:
    *  the same octahedral texels as a D x D visibility map with D = 2^level), kept on the host
    *  for levels up to 6. Throws InputError beyond FinestLevel() or 6. */
   std::vector<float> ImportanceLevel(int level) const;
+  /** The mean RGB radiance over each node of the same level (EnvironmentMap::MeanRadianceLevel):
+   *  times 4 pi / 4^level, the exact integral over the node of the radiance the renderer looks up
+   *  (before the renderer's intensity). Luminance(RadianceLevel(l)[n]) is ImportanceLevel(l)[n] up
+   *  to float rounding. Throws InputError beyond FinestLevel() or 6. */
+  std::vector<glm::vec3> RadianceLevel(int level) const;
 
 private:
   std::unique_ptr<Buffer> Radiance_, Mips_;
@@ -46,6 +53,8 @@ private:
   double MaxLuminance_ = 0.0;
   uint64_t Serial_ = 0;
   std::vector<float> CoarseMips_; // levels 0..min(Level_, 6) of the importance quadtree
+  std::unique_ptr<EnvironmentMap> Coarse_; // the map's mean radiance at level min(Level_, 6)
+  void CheckHostLevel(int level) const;
 };
 }
 

@@ -180,6 +180,30 @@ double EnvironmentMap::TexelSolidAngle() const
   return this->Size > 0 ? 4.0 * Pi / (double(this->Size) * this->Size) : 0.0;
 }
 
+std::vector<glm::vec3> EnvironmentMap::MeanRadianceLevel(int side) const
+{
+  if (!IsPowerOfTwo(side) || side > this->Size)
+  {
+    throw std::invalid_argument("MeanRadianceLevel: " + std::to_string(side) +
+      " is not a power of two of at most the map's size " + std::to_string(this->Size));
+  }
+  const int f = this->Size / side;
+  std::vector<glm::dvec3> sum(std::size_t(side) * side, glm::dvec3(0.0));
+  for (int y = 0; y < this->Size; ++y)
+  {
+    for (int x = 0; x < this->Size; ++x)
+    {
+      sum[std::size_t(y / f) * side + x / f] += glm::dvec3(this->Texel(x, y));
+    }
+  }
+  std::vector<glm::vec3> mean(sum.size());
+  for (std::size_t t = 0; t < sum.size(); ++t)
+  {
+    mean[t] = glm::vec3(sum[t] / (double(f) * f));
+  }
+  return mean;
+}
+
 double EnvironmentMap::TotalPower() const
 {
   return 4.0 * Pi * this->MeanLuminance;

@@ -116,6 +116,12 @@ public:
    * the texel that holds it (nearest). Piecewise constant per texel, which is
    * exactly the function the texel-based importance sampling integrates. */
   glm::vec3 Evaluate(glm::vec3 dir) const;
+  /* The mean RGB radiance over each texel of a side x side octahedral map (row-major) laid over this
+   * one: side a power of two of at most Size. Such a texel is the union of (Size / side)^2 of this
+   * map's texels, all of the same solid angle, so this is its exact mean radiance (summed in double),
+   * and times 4 pi / side^2 the exact integral of the radiance the renderer looks up over it. Throws
+   * std::invalid_argument for another side. */
+  std::vector<glm::vec3> MeanRadianceLevel(int side) const;
   /* The integral of luminance over the sphere: 4 pi * MeanLuminance. */
   double TotalPower() const;
   /* Solid angle of one texel, 4 pi / Size^2. */

@@ -95,6 +95,15 @@ VS_CONST uint VS_TABLE_OUTPUT = 2u;
 VS_CONST uint VS_TABLE_SOURCES = 3u;
 VS_CONST uint VS_TABLE_BINDING_COUNT = 4u;
 
+/* The light volume (visibility/light_volume.glsl, visibility/vsLightVolume.cxx): per visibility cell,
+ * the sum over the grid's directions of V(cell, n) times the environment's radiance integrated over
+ * direction n's texel. Push constants: VsLightVolumeParams (light_volume_params.h). */
+VS_CONST uint VS_LIGHT_VISIBILITY = 0u;  /* the visibility grid (its storage format) */
+VS_CONST uint VS_LIGHT_SOURCES = 1u;     /* storage buffer: VisibilityGrid::DirectionSources */
+VS_CONST uint VS_LIGHT_RADIANCE = 2u;    /* storage buffer: vec4 per direction, rgb = E_n (radiance x sr) */
+VS_CONST uint VS_LIGHT_OUTPUT = 3u;      /* rgba32f image, one texel per cell: the light volume */
+VS_CONST uint VS_LIGHT_BINDING_COUNT = 4u;
+
 /* The majorant bricks' scalar ranges (volume/majorant_minmax.comp, volume/vsMajorantGrid.cxx). */
 VS_CONST uint VS_RANGES_VOLUME = 0u;
 VS_CONST uint VS_RANGES_OUTPUT = 1u;

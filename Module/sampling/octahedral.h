@@ -12,6 +12,12 @@
 
 VS_NAMESPACE_BEGIN
 
+/* The solid angle of each texel of an n x n map: 4π/n². */
+VS_FUNC float vs_octa_texel_solid_angle(uint n)
+{
+  return 4.0f * VS_PI / (float(n) * float(n));
+}
+
 /* [0,1]^2 -> unit direction. */
 VS_FUNC vec3 vs_octa_to_dir(vec2 uv)
 {

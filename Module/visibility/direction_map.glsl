@@ -7,7 +7,8 @@
  * The includer declares `uVisibility` (the grid image, VS_VIS_FORMAT), defines VS_COUNT(i)
  * (empty unless it counts reads) and VS_DIRECTION_SOURCE(n) (the direction whose values direction n
  * reads: n, or the nearest swept one while a grid fills in; VisibilityGrid::DirectionSources), and
- * includes strategies.h or warp.h (vs_env_node) before.
+ * includes strategies.h or warp.h (vs_env_node) before. The grid's entries are read through
+ * visibility_texel.glsl.
  */
 
 /* The map of this invocation (D x D <= 256 values) and its sum pyramid, which the strategies read
@@ -19,14 +20,8 @@ float vs_map_value(uint n)
   return gValues[n];
 }
 
-/* Direction n of the D x D tile of `cell` (vsVisibilityGrid.h's layout), read where its source is. */
-float visibility_texel(uvec3 cell, uint n, uint D)
-{
-  uint m = VS_DIRECTION_SOURCE(n);
-  ivec3 t = ivec3(int(cell.x * D + m % D), int(cell.y * D + m / D), int(cell.z));
-  VS_COUNT(2);
-  return imageLoad(uVisibility, t).r;
-}
+/* visibility_texel(cell, n, D): one entry of the grid, where its source is. */
+#include "visibility_texel.glsl"
 
 /* gValues[n] = entry n of the strategy's map from the visibility v (+ epsilon): v for Visibility,
  * v times the environment's importance at level log2(D) for Combined and TwoStep. */

@@ -1,6 +1,6 @@
 # Drives the benchmarks in their quick forms for the tool's ctests (cmake -P) and checks
 # that what they report is consistent, not how fast it is (speed lives in the benchmarks).
-#   -DVISSWEEP=<exe> -DOUT_DIR=<dir> -DBENCH=overhead|frames|animation|stress -DSCENE=<json>
+#   -DVISSWEEP=<exe> -DOUT_DIR=<dir> -DBENCH=overhead|frames|animation|stress|lightvolume -DSCENE=<json>
 cmake_minimum_required(VERSION 3.19)
 file(REMOVE_RECURSE "${OUT_DIR}")
 file(MAKE_DIRECTORY "${OUT_DIR}")
@@ -9,6 +9,8 @@ if (BENCH STREQUAL "overhead")
   set(args bench overhead "${SCENE}" --quick --json "${json}")
 elseif (BENCH STREQUAL "stress")
   set(args bench stress "${SCENE}" --changes 30 --samples 400 --size 4 --json "${json}")
+elseif (BENCH STREQUAL "lightvolume")
+  set(args bench lightvolume "${SCENE}" --repeats 2 --json "${json}")
 elseif (BENCH STREQUAL "animation")
   set(args bench animation "${SCENE}" --frames 0:2 --width 16 --height 16 --reference-spp 16 --budget-per-frame 0.2
     --repeats 2 --json "${json}" --plot "${OUT_DIR}/plot.png")
@@ -61,6 +63,16 @@ if (BENCH STREQUAL "overhead")
   endforeach ()
   string(JSON march GET "${j}" plain_march samples_per_second)
   require_positive(${march} "plain march samples per second")
+elseif (BENCH STREQUAL "lightvolume")
+  # One rebuild per rotation (the command fails otherwise), each timed.
+  foreach (key light_volume_wall_seconds light_volume_device_seconds environment_seconds)
+    string(JSON n LENGTH "${j}" ${key})
+    if (NOT n EQUAL 2)
+      message(FATAL_ERROR "${key}: ${n} times, expected 2")
+    endif ()
+    string(JSON t GET "${j}" ${key} 1)
+    require_positive(${t} "${key}")
+  endforeach ()
 elseif (BENCH STREQUAL "stress")
   foreach (key churn.errors churn.non_finite accumulation.non_finite)
     string(REPLACE "." ";" path "${key}")

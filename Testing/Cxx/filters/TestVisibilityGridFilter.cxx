@@ -3,7 +3,16 @@
 // something that changes extinction changes, and errors that name the cause.
 #include "vtkVisibilityGridFilter.h"
 
+#include "vsContext.h"
+#include "vsDeviceEnvironment.h"
+#include "vsEnvironmentMap.h"
+#include "vsLightVolume.h"
+#include "vsVisibilityGrid.h"
+#include "vsVolumeScene.h"
+
 #include "vtkCallbackCommand.h"
+#include "vtkEnvironmentMapSource.h"
+#include "vtkMath.h"
 #include "vtkExecutive.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkFieldData.h"
@@ -19,6 +28,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 namespace
 {
@@ -184,4 +194,114 @@ TEST(VisibilityGridFilter, ErrorsNameTheCause)
     f->SetVolumeProperty(Property(0.5));
     EXPECT_FALSE(run(f).empty());
   }
+}
+
+// With an environment (input port 1), "Irradiance" beside "MeanVisibility": 3 components, the light
+// volume of vs::LightVolume built from the same grid and map; a new environment or intensity rebuilds
+// only it, never the grid.
+TEST(VisibilityGridFilter, IrradianceIsTheLightVolume)
+{
+  auto image = Box(17, 1.0, 0.5);
+  auto property = Property(0.3);
+  vtkNew<vtkEnvironmentMapSource> sky;
+  sky->SetTypeToTwoToneSky();
+  sky->SetOctahedralSize(32);
+  sky->SetUpperColor(1.0, 0.8, 0.6);
+  sky->SetLowerColor(0.1, 0.2, 0.3);
+  vtkNew<vtkVisibilityGridFilter> f;
+  f->SetInputData(image);
+  f->SetVolumeProperty(property);
+  f->Update();
+  EXPECT_EQ(f->GetOutput()->GetPointData()->GetArray("Irradiance"), nullptr); // no environment, no light
+  f->SetEnvironmentConnection(sky->GetOutputPort());
+  f->SetEnvironmentIntensity(1.5);
+  f->Update();
+  EXPECT_EQ(f->GetNumberOfComputedDirections(), 64); // the environment did not recompute the grid
+  EXPECT_EQ(f->GetNumberOfIrradianceBuilds(), 1);
+  vtkImageData* out = f->GetOutput();
+  ASSERT_NE(out->GetPointData()->GetArray("Irradiance"), nullptr);
+  vtkNew<vtkFloatArray> irradiance; // a copy: the next run replaces the output's arrays
+  irradiance->DeepCopy(out->GetPointData()->GetArray("Irradiance"));
+  EXPECT_EQ(irradiance->GetNumberOfComponents(), 3);
+  ASSERT_EQ(irradiance->GetNumberOfTuples(), out->GetNumberOfPoints());
+  ASSERT_NE(out->GetPointData()->GetArray("MeanVisibility"), nullptr);
+  EXPECT_EQ(std::string(out->GetPointData()->GetScalars()->GetName()), "MeanVisibility");
+
+  // The same grid and map through the core classes.
+  auto ctx = vs::Context::Default();
+  vs::VolumeScene scene(ctx);
+  scene.Update(image, image->GetPointData()->GetScalars(), property, nullptr, 1.0);
+  vs::VisibilityGridParameters p;
+  p.NearestInterpolation = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION;
+  vs::VisibilityGrid grid(ctx);
+  grid.Compute(scene.Volume(), scene.TF(), scene.Majorants(), scene.Geometry(), {}, p);
+  const vs::DeviceEnvironment env(ctx, *sky->GetEnvironmentMap(), 8);
+  vs::LightVolume light(ctx);
+  light.Update(grid, env, 1.5);
+  const std::vector<float> rgba = light.Download();
+  ASSERT_EQ(rgba.size(), 4 * size_t(out->GetNumberOfPoints()));
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    for (int c = 0; c < 3; ++c)
+      worst = std::max(worst, std::abs(irradiance->GetComponent(i, c) - rgba[4 * size_t(i) + c]));
+  EXPECT_EQ(worst, 0.0);
+  // Bounded by the unoccluded sphere, 1.5 x 2 pi (upper + lower), and darker inside the box.
+  EXPECT_LT(irradiance->GetComponent(0, 0), 1.5 * 2.0 * vtkMath::Pi() * 1.1 + 1e-6);
+  EXPECT_GT(irradiance->GetComponent(0, 0), 0.0);
+
+  // A new intensity or environment: the light volume again, the grid kept.
+  f->SetEnvironmentIntensity(3.0);
+  f->Update();
+  EXPECT_EQ(f->GetNumberOfIrradianceBuilds(), 2);
+  EXPECT_NEAR(f->GetOutput()->GetPointData()->GetArray("Irradiance")->GetComponent(5, 1),
+    2.0 * irradiance->GetComponent(5, 1), 1e-5 * irradiance->GetComponent(5, 1));
+  sky->SetUpperColor(2.0, 0.8, 0.6);
+  f->Update();
+  EXPECT_EQ(f->GetNumberOfIrradianceBuilds(), 3);
+  f->Update(); // nothing changed
+  EXPECT_EQ(f->GetNumberOfIrradianceBuilds(), 3);
+  EXPECT_EQ(f->GetNumberOfComputedDirections(), 64);
+  // New extinction: the grid and the light volume.
+  property->GetScalarOpacity()->AddPoint(0.5, 0.1);
+  f->Update();
+  EXPECT_EQ(f->GetNumberOfComputedDirections(), 128);
+  EXPECT_EQ(f->GetNumberOfIrradianceBuilds(), 4);
+  // Disconnected: no light.
+  f->SetEnvironmentConnection(nullptr);
+  f->Update();
+  EXPECT_EQ(f->GetOutput()->GetPointData()->GetArray("Irradiance"), nullptr);
+  EXPECT_EQ(f->GetNumberOfComputedDirections(), 128);
+}
+
+TEST(VisibilityGridFilter, BadEnvironmentIsAnError)
+{
+  vtkNew<vtkCallbackCommand> cb;
+  std::string last;
+  cb->SetClientData(&last);
+  cb->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+    *static_cast<std::string*>(client) += std::string(static_cast<const char*>(data)) + "\n";
+  });
+  auto image = Box(9, 1.0);
+  auto notAMap = Box(5, 1.0); // no "Radiance", not Size x Size x 1
+  vtkNew<vtkVisibilityGridFilter> f;
+  f->SetInputData(image);
+  f->SetVolumeProperty(Property(0.5));
+  f->SetEnvironmentData(notAMap);
+  f->AddObserver(vtkCommand::ErrorEvent, cb);
+  f->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, cb);
+  f->Update();
+  EXPECT_NE(last.find("environment"), std::string::npos) << last;
+  EXPECT_EQ(f->GetOutput()->GetNumberOfPoints(), 0);
+  // NaN intensity: refused with a message, no crash.
+  vtkNew<vtkEnvironmentMapSource> sky;
+  f->SetEnvironmentConnection(sky->GetOutputPort());
+  f->SetEnvironmentIntensity(std::nan(""));
+  last.clear();
+  f->Update();
+  EXPECT_NE(last.find("intensity"), std::string::npos) << last;
+  f->SetEnvironmentIntensity(1.0);
+  last.clear();
+  f->Update();
+  EXPECT_TRUE(last.empty()) << last;
+  EXPECT_NE(f->GetOutput()->GetPointData()->GetArray("Irradiance"), nullptr);
 }
