@@ -26,6 +26,13 @@
 
 VS_NAMESPACE_BEGIN
 
+/* The table pass's push constants (direction_table.glsl; vsDirectionTable), std430 as in C++. */
+struct VsDirectionTablePush
+{
+  uvec3 cells;   /* visibility cells per axis */
+  float epsilon; /* added to the visibility in the map (the strategies' epsilon) */
+};
+
 #ifndef __cplusplus
 /* Defined by the includer: entry i of the table (its storage buffer). */
 uint vs_table_value(uint i);

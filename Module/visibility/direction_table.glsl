@@ -20,11 +20,7 @@ layout(binding = VS_TABLE_VISIBILITY, VS_VIS_FORMAT) uniform readonly image3D uV
 layout(std430, binding = VS_TABLE_MIPS) readonly buffer EnvMips { float uMips[]; };
 layout(std430, binding = VS_TABLE_OUTPUT) writeonly buffer Table { uint uTable[]; };
 layout(std430, binding = VS_TABLE_SOURCES) readonly buffer Sources { uint uSources[]; }; /* VisibilityGrid::DirectionSources */
-layout(push_constant) uniform Push
-{
-  uvec4 cells;  /* xyz: cells per axis */
-  uvec4 params; /* y: epsilon (float bits) */
-} pc;
+layout(push_constant) uniform Push { VsDirectionTablePush pc; };
 
 #define VS_COUNT(i)
 #define VS_DIRECTION_SOURCE(n) uSources[n]
@@ -52,11 +48,11 @@ void main()
   barrier();
 
   uint i = gl_GlobalInvocationID.x;
-  uvec3 cells = pc.cells.xyz;
+  uvec3 cells = pc.cells;
   if (i >= cells.x * cells.y * cells.z)
     return;
   uvec3 cell = uvec3(i % cells.x, (i / cells.x) % cells.y, i / (cells.x * cells.y));
-  float epsilon = uintBitsToFloat(pc.params.y);
+  float epsilon = pc.epsilon;
   uint base = 2u * vs_table_nodes(D) * i;
   /* The inner nodes' weights, level by level (vs_env_level_offset), as the map's sum pyramid has them. */
   float sums[85];

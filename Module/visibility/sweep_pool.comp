@@ -14,7 +14,7 @@
  * what is not used is compiled out (lavapipe runs both sides of a branch).
  */
 #include "bindings.h"
-#include "volume_params.h"
+#include "pool_params.h"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(constant_id = 0) const int VS_POOL_P = 2;
 layout(constant_id = 1) const uint VS_POOL_MAX = 0u;
@@ -25,27 +25,19 @@ layout(binding = VS_POOL_VOLUME, r32f) uniform readonly image3D uVolume;
 layout(binding = VS_POOL_TF) uniform samplerBuffer uTF; /* r32f: the table's floats (volume_access.glsl) */
 layout(binding = VS_POOL_POOLED, r32f) uniform writeonly image3D uPooled;
 layout(binding = VS_POOL_FACTOR_IMAGE, r32f) uniform readonly image3D uFactor; /* read only with VS_POOL_FACTOR */
-layout(push_constant) uniform Push
-{
-  ivec4 dims;   /* voxels per axis */
-  ivec4 pooled; /* pooled texels per axis */
-  VsTransferFunction tf;
-  vec4 cropLo;  /* the cropping regions (vsVolumeGeometry.h): hidden voxels pool as 0 */
-  vec4 cropHi;
-  uvec4 crop;   /* x: flags; y: the first pooled slice of this dispatch (slab by slab builds) */
-} pc;
+layout(push_constant) uniform Push { VsPoolPush pc; };
 
 #include "volume_access.glsl"
 
 void main()
 {
-  ivec3 j = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, int(pc.crop.y));
-  if (any(greaterThanEqual(j, pc.pooled.xyz)))
+  ivec3 j = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, int(pc.firstSlice));
+  if (any(greaterThanEqual(j, pc.pooled)))
     return;
   ivec3 lo = j * VS_POOL_P;
-  ivec3 last = pc.dims.xyz - 1;
+  ivec3 last = pc.dims - 1;
   if (VS_POOL_CROP == 1u)
-    vs_set_cropping(pc.cropLo.xyz, pc.cropHi.xyz, pc.crop.x);
+    vs_set_cropping(pc.cropLo, pc.cropHi, pc.cropFlags);
   float sum = 0.0, largest = 0.0;
   for (int z = 0; z < VS_POOL_P; ++z)
     for (int y = 0; y < VS_POOL_P; ++y)
@@ -63,6 +55,6 @@ void main()
         sum += all(lessThanEqual(v, last)) ? e : 0.0;
         largest = max(largest, e);
       }
-  ivec3 n = min(lo + VS_POOL_P, pc.dims.xyz) - lo;
+  ivec3 n = min(lo + VS_POOL_P, pc.dims) - lo;
   imageStore(uPooled, j, vec4(VS_POOL_MAX == 1u ? largest : sum / float(n.x * n.y * n.z)));
 }

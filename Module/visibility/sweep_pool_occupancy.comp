@@ -6,22 +6,19 @@
  * pooled interpolant is 0 throughout the brick, so the march skips it whole.
  */
 #include "bindings.h"
+#include "pool_params.h"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(binding = VS_OCCUPANCY_POOLED, r32f) uniform readonly image3D uPooled;
 layout(binding = VS_OCCUPANCY_OUTPUT, r32f) uniform writeonly image3D uOccupancy;
-layout(push_constant) uniform Push
-{
-  ivec4 pooled; /* pooled texels per axis */
-  ivec4 bricks; /* bricks per axis, w: B */
-} pc;
+layout(push_constant) uniform Push { VsOccupancyPush pc; };
 
 void main()
 {
   ivec3 i = ivec3(gl_GlobalInvocationID);
-  if (any(greaterThanEqual(i, pc.bricks.xyz)))
+  if (any(greaterThanEqual(i, pc.bricks)))
     return;
-  ivec3 lo = max(i * pc.bricks.w - 1, ivec3(0));
-  ivec3 hi = min((i + 1) * pc.bricks.w, pc.pooled.xyz - 1);
+  ivec3 lo = max(i * pc.brickTexels - 1, ivec3(0));
+  ivec3 hi = min((i + 1) * pc.brickTexels, pc.pooled - 1);
   float largest = 0.0;
   for (int z = lo.z; z <= hi.z; ++z)
     for (int y = lo.y; y <= hi.y; ++y)

@@ -83,12 +83,12 @@ std::shared_ptr<ComputePipeline> DirectionTable::Pipeline(
   const std::string name = std::string("direction table (") +
     (map == shared::VS_STRATEGY_VISIBILITY ? "visibility" : "product") + ", D " + std::to_string(D);
   if (format == vk::Format::eR8Unorm)
-    return SharedPipeline(context, VS_SPIRV(vs_spirv_direction_table_r8), bindings, 32, name + ", r8)", specialization);
+    return SharedPipeline(context, VS_SPIRV(vs_spirv_direction_table_r8), bindings, sizeof(shared::VsDirectionTablePush), name + ", r8)", specialization);
   if (format == vk::Format::eR16Unorm)
     return SharedPipeline(
-      context, VS_SPIRV(vs_spirv_direction_table_r16), bindings, 32, name + ", r16)", specialization);
+      context, VS_SPIRV(vs_spirv_direction_table_r16), bindings, sizeof(shared::VsDirectionTablePush), name + ", r16)", specialization);
   return SharedPipeline(
-    context, VS_SPIRV(vs_spirv_direction_table_r32f), bindings, 32, name + ", r32f)", specialization);
+    context, VS_SPIRV(vs_spirv_direction_table_r32f), bindings, sizeof(shared::VsDirectionTablePush), name + ", r32f)", specialization);
 }
 
 bool DirectionTable::Update(
@@ -120,12 +120,12 @@ bool DirectionTable::Update(
     .Bind(shared::VS_TABLE_MIPS, environment.Mips())
     .Bind(shared::VS_TABLE_OUTPUT, *this->Nodes_)
     .Bind(shared::VS_TABLE_SOURCES, grid.DirectionSourceBuffer());
-  uint32_t epsilonBits;
-  std::memcpy(&epsilonBits, &epsilon, sizeof(epsilonBits));
-  const uint32_t push[8] = { cells[0], cells[1], cells[2], 0u, 0u, epsilonBits, 0u, 0u };
+  shared::VsDirectionTablePush push{};
+  push.cells = glm::uvec3(cells[0], cells[1], cells[2]);
+  push.epsilon = epsilon;
   Batch batch(this->Context_);
   batch.BeginTimer("direction table");
-  batch.Dispatch(*pipeline, set, push, sizeof(push), uint32_t((count + 63) / 64), 1, 1);
+  batch.Dispatch(*pipeline, set, &push, sizeof(push), uint32_t((count + 63) / 64), 1, 1);
   batch.EndTimer();
   batch.Submit();
   this->LastSeconds_ = batch.Seconds("direction table");

@@ -1,5 +1,6 @@
 #include "vsPooledExtinction.h"
 #include "sampling/bindings.h"
+#include "sampling/pool_params.h"
 #include "vsBatch.h"
 #include "vsContext.h"
 #include "vsDeviceVolume.h"
@@ -23,22 +24,6 @@ namespace vs
 {
 namespace
 {
-/** sweep_pool.comp's push constants. */
-struct PoolPush
-{
-  glm::ivec4 dims;
-  glm::ivec4 pooled;
-  shared::VsTransferFunction tf;
-  glm::vec4 cropLo, cropHi;
-  glm::uvec4 crop; // x: flags, y: the slab's first pooled slice
-};
-/** sweep_pool_occupancy.comp's push constants. */
-struct OccupancyPush
-{
-  glm::ivec4 pooled;
-  glm::ivec4 bricks;
-};
-
 template <typename T>
 size_t HashOf(const std::vector<T>& v)
 {
@@ -112,14 +97,14 @@ void PooledExtinction::Start(const Key& key, const DeviceVolume& volume)
       BindingTypes(shared::VS_POOL_BINDING_COUNT,
         { { shared::VS_POOL_VOLUME, B::StorageImage }, { shared::VS_POOL_TF, B::UniformTexelBuffer },
           { shared::VS_POOL_POOLED, B::StorageImage }, { shared::VS_POOL_FACTOR_IMAGE, B::StorageImage } }),
-      sizeof(PoolPush),
+      sizeof(shared::VsPoolPush),
       "sweep pool (P " + std::to_string(factor) + (key.Pooling.Max ? ", max" : ", mean") +
         (cropped ? ", cropped" : "") + (scaled ? ", gradient opacity)" : ")"),
       { factor, key.Pooling.Max ? 1u : 0u, cropped, scaled });
     this->OccupancyPipeline_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_pool_occupancy),
       BindingTypes(shared::VS_OCCUPANCY_BINDING_COUNT,
         { { shared::VS_OCCUPANCY_POOLED, B::StorageImage }, { shared::VS_OCCUPANCY_OUTPUT, B::StorageImage } }),
-      sizeof(OccupancyPush), "sweep pool occupancy");
+      sizeof(shared::VsOccupancyPush), "sweep pool occupancy");
   }
   const uint32_t brick = BrickTexels(factor);
   for (int i = 0; i < 3; ++i)
@@ -149,10 +134,14 @@ double PooledExtinction::PoolSlices(
     .Bind(shared::VS_POOL_POOLED, *this->Pooled_);
   set.Bind(shared::VS_POOL_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   const Key& key = this->Key_;
-  PoolPush pp{ glm::ivec4(int(key.Dims[0]), int(key.Dims[1]), int(key.Dims[2]), key.Pooling.Max ? 1 : 0),
-    glm::ivec4(this->PooledDims_, int(key.Pooling.Factor)), tf.Params(),
-    glm::vec4(key.Pooling.CropLo, 0.0f), glm::vec4(key.Pooling.CropHi, 0.0f),
-    glm::uvec4(key.Pooling.CropFlags, z0, 0u, 0u) };
+  shared::VsPoolPush pp{};
+  pp.dims = glm::ivec3(int(key.Dims[0]), int(key.Dims[1]), int(key.Dims[2]));
+  pp.firstSlice = z0;
+  pp.pooled = this->PooledDims_;
+  pp.cropLo = key.Pooling.CropLo;
+  pp.cropHi = key.Pooling.CropHi;
+  pp.cropFlags = key.Pooling.CropFlags;
+  pp.tf = tf.Params();
   Batch cmd(this->Context_);
   cmd.BeginTimer("pool");
   cmd.Dispatch(*this->Pool_, set, &pp, sizeof(pp), uint32_t(this->PooledDims_.x + 3) / 4,
@@ -167,8 +156,10 @@ double PooledExtinction::Finish()
 {
   DescriptorSet set(*this->OccupancyPipeline_);
   set.Bind(shared::VS_OCCUPANCY_POOLED, *this->Pooled_).Bind(shared::VS_OCCUPANCY_OUTPUT, *this->Occupancy_);
-  OccupancyPush op{ glm::ivec4(this->PooledDims_, 0),
-    glm::ivec4(this->Bricks_, int(BrickTexels(this->Key_.Pooling.Factor))) };
+  shared::VsOccupancyPush op{};
+  op.pooled = this->PooledDims_;
+  op.bricks = this->Bricks_;
+  op.brickTexels = int(BrickTexels(this->Key_.Pooling.Factor));
   Batch cmd(this->Context_);
   cmd.BeginTimer("occupancy");
   cmd.Dispatch(*this->OccupancyPipeline_, set, &op, sizeof(op), uint32_t(this->Bricks_.x + 3) / 4,

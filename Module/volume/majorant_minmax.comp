@@ -9,19 +9,20 @@
  * so a transfer-function change needs no pass over the voxels.
  */
 #include "bindings.h"
+#include "majorant_params.h"
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(binding = VS_RANGES_VOLUME, r32f) uniform readonly image3D uVolume;
 layout(std430, binding = VS_RANGES_OUTPUT) writeonly buffer Ranges { vec4 uRange[]; };
-layout(push_constant) uniform Push { uvec4 bricks; ivec4 dims; } pc; /* bricks.w = brick size */
+layout(push_constant) uniform Push { VsMajorantPush pc; };
 
 void main()
 {
   uvec3 b = gl_GlobalInvocationID;
-  if (any(greaterThanEqual(b, pc.bricks.xyz)))
+  if (any(greaterThanEqual(b, pc.bricks)))
     return;
-  int B = int(pc.bricks.w);
+  int B = int(pc.brickSize);
   ivec3 lo = ivec3(b) * B;
-  ivec3 hi = min(lo + B, pc.dims.xyz - 1);
+  ivec3 hi = min(lo + B, pc.dims - 1);
   float mn = 3.4e38, mx = -3.4e38;
   bool gap = false;
   for (int z = lo.z; z <= hi.z; ++z)

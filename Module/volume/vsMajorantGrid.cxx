@@ -1,5 +1,6 @@
 #include "vsMajorantGrid.h"
 #include "sampling/bindings.h"
+#include "sampling/majorant_params.h"
 #include "vsBatch.h"
 #include "vsBuffer.h"
 #include "vsContext.h"
@@ -141,17 +142,15 @@ void MajorantGrid::UpdateRanges(const DeviceVolume& volume, const float* hostSca
     auto shared = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_majorant_minmax),
       BindingTypes(shared::VS_RANGES_BINDING_COUNT,
         { { shared::VS_RANGES_VOLUME, BindingType::StorageImage }, { shared::VS_RANGES_OUTPUT, BindingType::StorageBuffer } }),
-      32, "majorant ranges");
+      sizeof(shared::VsMajorantPush), "majorant ranges");
     const ComputePipeline& pipeline = *shared;
     Buffer ranges(this->Context_, count * 4 * sizeof(float), "brick ranges");
     DescriptorSet set(pipeline);
     set.Bind(shared::VS_RANGES_VOLUME, volume.Image()).Bind(shared::VS_RANGES_OUTPUT, ranges);
-    struct
-    {
-      uint32_t bricks[4];
-      int32_t dims[4];
-    } push = { { bricks[0], bricks[1], bricks[2], this->BrickSize_ },
-      { int32_t(dims[0]), int32_t(dims[1]), int32_t(dims[2]), 0 } };
+    shared::VsMajorantPush push{};
+    push.bricks = glm::uvec3(bricks[0], bricks[1], bricks[2]);
+    push.brickSize = this->BrickSize_;
+    push.dims = glm::ivec3(int32_t(dims[0]), int32_t(dims[1]), int32_t(dims[2]));
     Batch batch(this->Context_);
     batch.BeginTimer("ranges");
     batch.Dispatch(pipeline, set, &push, sizeof(push), (bricks[0] + 3) / 4, (bricks[1] + 3) / 4, (bricks[2] + 3) / 4);
