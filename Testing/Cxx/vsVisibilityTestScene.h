@@ -11,11 +11,27 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+
+#include <glm/glm.hpp>
 #include <memory>
 #include <vector>
 
 namespace vstest
 {
+/** Distance from p along w to the exit of box [lo, hi] (0 outside it). */
+inline double ExitDistance(glm::dvec3 p, glm::dvec3 w, glm::dvec3 lo, glm::dvec3 hi)
+{
+  double t = 1e300;
+  for (int i = 0; i < 3; ++i)
+  {
+    if (w[i] > 0)
+      t = std::min(t, (hi[i] - p[i]) / w[i]);
+    else if (w[i] < 0)
+      t = std::min(t, (lo[i] - p[i]) / w[i]);
+  }
+  return std::max(0.0, t);
+}
+
 /** A volume, a linear transfer function (sigma_t = scalar * sigmaPerUnit, white albedo) and its majorants. */
 struct VisibilityScene
 {

@@ -24,20 +24,6 @@ namespace
 {
 const double Pi = 3.14159265358979323846;
 
-// Distance from p along w to the exit of box [lo, hi] (TestVisibilityGrid.cxx's).
-double ExitDistance(glm::dvec3 p, glm::dvec3 w, glm::dvec3 lo, glm::dvec3 hi)
-{
-  double t = 1e300;
-  for (int i = 0; i < 3; ++i)
-  {
-    if (w[i] > 0)
-      t = std::min(t, (hi[i] - p[i]) / w[i]);
-    else if (w[i] < 0)
-      t = std::min(t, (lo[i] - p[i]) / w[i]);
-  }
-  return std::max(0.0, t);
-}
-
 glm::dvec3 CellCentre(const vs::VisibilityGrid& grid, const vs::VolumeGeometry& g, uint32_t x, uint32_t y, uint32_t z)
 {
   return glm::dvec3(g.BoxMin) + (glm::dvec3(x, y, z) + 0.5) * glm::dvec3(grid.CellSize());
@@ -82,7 +68,8 @@ TEST(LightVolume, HomogeneousBoxUnderConstantSkyIsAnalytic)
   p.Filtering = false;
   const uint32_t D = p.DirectionResolution, DD = D * D;
   const double texelSolidAngle = 4.0 * Pi / DD;
-  auto depth = [&](glm::dvec3 x, glm::dvec3 w) { return sigma * ExitDistance(x, w, glm::dvec3(0.0), glm::dvec3(32.0)); };
+  auto depth = [&](glm::dvec3 x, glm::dvec3 w)
+  { return sigma * vstest::ExitDistance(x, w, glm::dvec3(0.0), glm::dvec3(32.0)); };
 
   // The brute-force grid is exact to 1e-4 per entry (TestVisibilityGrid HomogeneousBoxIsAnalytic), the
   // sweep's mean error 2e-3 and its largest 0.08: the light volume of a cell is off by at most
@@ -191,8 +178,8 @@ TEST(LightVolume, HomogeneousBoxUnderASunIsTheAnalyticSum)
         glm::dvec3 expected(0.0), bound(0.0);
         for (uint32_t n = 0; n < D * D; ++n)
         {
-          const double v = std::exp(
-            -sigma * ExitDistance(centre, glm::dvec3(vs::SweepPlan::Direction(n, D)), glm::dvec3(0.0), glm::dvec3(32.0, 20.0, 14.0)));
+          const glm::dvec3 w(vs::SweepPlan::Direction(n, D));
+          const double v = std::exp(-sigma * vstest::ExitDistance(centre, w, glm::dvec3(0.0), glm::dvec3(32.0, 20.0, 14.0)));
           expected += v * glm::dvec3(e[n]);
           bound += glm::dvec3(e[n]);
         }

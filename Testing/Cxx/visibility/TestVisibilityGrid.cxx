@@ -26,20 +26,6 @@ using vstest::VisibilityScene;
 
 namespace
 {
-// Distance from p along w to the exit of box [lo, hi] (and of the half-space plane, if given).
-double ExitDistance(glm::dvec3 p, glm::dvec3 w, glm::dvec3 lo, glm::dvec3 hi)
-{
-  double t = 1e300;
-  for (int i = 0; i < 3; ++i)
-  {
-    if (w[i] > 0)
-      t = std::min(t, (hi[i] - p[i]) / w[i]);
-    else if (w[i] < 0)
-      t = std::min(t, (lo[i] - p[i]) / w[i]);
-  }
-  return std::max(0.0, t);
-}
-
 struct Errors
 {
   double mean = 0.0, max = 0.0;
@@ -80,7 +66,7 @@ TEST(VisibilityGrid, HomogeneousBoxIsAnalytic)
   p.Filtering = false;
   auto plan = vs::SweepPlan::Make(scene.Geometry, p, 1ull << 30);
   auto depth = [&](glm::dvec3 x, glm::dvec3 w) {
-    return sigma * ExitDistance(x, w, glm::dvec3(0.0), glm::dvec3(32.0));
+    return sigma * vstest::ExitDistance(x, w, glm::dvec3(0.0), glm::dvec3(32.0));
   };
 
   vs::VisibilityGrid sweep(scene.Context);
@@ -110,7 +96,7 @@ TEST(VisibilityGrid, ClippedBoxIsAnalytic)
   auto plan = vs::SweepPlan::Make(scene.Geometry, p, 1ull << 30);
   std::vector<glm::dvec4> planes = { glm::dvec4(-1.0, 0.0, 0.0, cut) };
   auto depth = [&](glm::dvec3 x, glm::dvec3 w) {
-    double t1 = ExitDistance(x, w, glm::dvec3(0.0), glm::dvec3(32.0));
+    double t1 = vstest::ExitDistance(x, w, glm::dvec3(0.0), glm::dvec3(32.0));
     // The part of [0, t1] with x + t w inside the kept half-space x <= cut.
     double t0 = 0.0;
     if (w.x > 0)
