@@ -104,6 +104,7 @@ int Run(const RenderOptions& o)
   stats["outputs"] = o.Outputs;
   stats["width"] = scene.Render.Width;
   stats["height"] = scene.Render.Height;
+  stats["mode"] = scene.Render.Mode;
   stats["strategy"] = scene.Render.Strategy;
   // What the last frame sampled with (Auto chooses per frame), and the grid's state.
   stats["effective_strategy"] = mapper->GetEffectiveStrategyAsString();
