@@ -16,6 +16,7 @@
 #include "vtkImageShrink3D.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -173,6 +174,23 @@ int TestMapperPreview(int argc, char* argv[])
   win->Render();
   Check(mapper->GetLightVolumeBuildCount() == 2, "a new intensity builds the light volume again");
   mapper->SetEnvironmentIntensity(1.0);
+
+  // A clipping plane opens the head: the preview follows it (a new grid and light volume).
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(90, 108, 90);
+  plane->SetNormal(-1, 0, 0);
+  mapper->AddClippingPlane(plane);
+  win->Render();
+  Check(std::string(mapper->GetLastError()).empty(), std::string("a clipped preview renders: ") + mapper->GetLastError());
+  Check(RadianceOf(mapper) != first && AllFinite(RadianceOf(mapper)), "the clipping plane changed the preview");
+  Check(mapper->GetLightVolumeBuildCount() == 3, "the clipped grid has its own light volume");
+  mapper->RemoveAllClippingPlanes();
+  // Without an environment: the constant white sky, as the Monte Carlo mode.
+  mapper->SetEnvironmentConnection(nullptr);
+  win->Render();
+  Check(std::string(mapper->GetLastError()).empty(), std::string("a preview without environment renders: ") + mapper->GetLastError());
+  Check(AllFinite(RadianceOf(mapper)), "the preview under the white sky is finite");
+  mapper->SetEnvironmentConnection(env->GetOutputPort());
 
   // Ambient occlusion renders.
   mapper->SetRenderModeToAmbientOcclusion();
