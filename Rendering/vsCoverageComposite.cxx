@@ -34,11 +34,11 @@ double CoverageComposite::OpaqueVariance(uint32_t n)
   return std::max(0.0, (double(float(n)) / N - m * m) * N / (N - 1.0));
 }
 
-// The environment's display colour (rgb in [0, 1]) through the centre of each pixel of a w x h
-// image under invViewProj: bilinear between octahedral texels, as the kernel shows the environment
-// (env_radiance_display) and vtkEnvironmentMapBackground draws it, through the display transform.
-std::vector<float> CoverageComposite::EnvironmentDisplay(
-  const vs::EnvironmentMap& map, const glm::mat4& invViewProj, uint32_t w, uint32_t h, float scale, bool toneMapping)
+// The environment's radiance (times scale) through the centre of each pixel of a w x h image under
+// invViewProj: bilinear between octahedral texels, as the kernel shows the environment
+// (env_radiance_display) and vtkEnvironmentMapBackground draws it.
+std::vector<float> CoverageComposite::EnvironmentRadiance(
+  const vs::EnvironmentMap& map, const glm::mat4& invViewProj, uint32_t w, uint32_t h, float scale)
 {
   std::vector<float> out(size_t(w) * h * 3);
   const glm::dmat4 inv(invViewProj);
@@ -64,9 +64,22 @@ std::vector<float> CoverageComposite::EnvironmentDisplay(
       float* o = out.data() + 3 * (size_t(y) * w + x);
       for (int k = 0; k < 3; ++k)
       {
-        o[k] = vs::DisplayValue(scale * radiance[k], toneMapping);
+        o[k] = scale * radiance[k];
       }
     }
+  }
+  return out;
+}
+
+// The environment's display colour (rgb in [0, 1]) through the centre of each pixel: its radiance
+// (EnvironmentRadiance) through the display transform.
+std::vector<float> CoverageComposite::EnvironmentDisplay(
+  const vs::EnvironmentMap& map, const glm::mat4& invViewProj, uint32_t w, uint32_t h, float scale, bool toneMapping)
+{
+  std::vector<float> out = EnvironmentRadiance(map, invViewProj, w, h, scale);
+  for (float& v : out)
+  {
+    v = vs::DisplayValue(v, toneMapping);
   }
   return out;
 }

@@ -23,6 +23,9 @@ public:
   static float OpaqueMean(uint32_t n);
   /** Its per-sample variance, as MonteCarloPass::Variance() computes it. */
   static double OpaqueVariance(uint32_t n);
+  /** The environment's radiance times `scale` (rgb) through each pixel's centre of a w x h image. */
+  static std::vector<float> EnvironmentRadiance(
+    const EnvironmentMap& map, const glm::mat4& invViewProj, uint32_t w, uint32_t h, float scale);
   /** The environment's display colour (rgb in [0, 1]) through each pixel's centre of a w x h image. */
   static std::vector<float> EnvironmentDisplay(
     const EnvironmentMap& map, const glm::mat4& invViewProj, uint32_t w, uint32_t h, float scale, bool toneMapping);

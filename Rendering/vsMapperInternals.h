@@ -14,6 +14,7 @@
 #include "vsDirectionTable.h"
 #include "vsEmissionAbsorptionPass.h"
 #include "vsEnvironmentMap.h"
+#include "vsLightVolume.h"
 #include "vsMapperEnvironment.h"
 #include "vsMonteCarloPass.h"
 #include "vsPeelingDeferral.h"
@@ -58,6 +59,7 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::unique_ptr<vs::MonteCarloPass> Tile;   // the tiles of a tiled render (the views' accumulators stay)
   vs::PeelingDeferral Peeling; // inside VTK's depth peeling of volumes: draw at the frame's end instead
   std::unique_ptr<vs::VisibilityGridUpdater> Grid;
+  std::unique_ptr<vs::LightVolume> Light; // Preview and AmbientOcclusion: the light reaching each cell
   vs::MapperEnvironment Environment; // port 1's map (or a white sky) on the device
   bool GridNeedsFull = true;          // extinction or geometry changed since the last full sweep
   vs::VolumeGeometry GridGeometry;    // the geometry the grid is computed for (set each frame)

@@ -131,6 +131,7 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
   I.Prewarm.Join();
   I.GridPrewarm.Join();
   I.Environment.Release();
+  I.Light.reset();
   I.Grid.reset();
   I.Interactive.reset();
   I.MC.reset();
@@ -191,7 +192,7 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
   // path renders them whatever the RenderMode.
   const bool projection = EmissionAbsorptionFrame::IsProjection(this->BlendMode);
   for (const auto& w : I.Checks.NewWarnings(vs::PropertyChecks::Ignored(
-         this, vol ? vol->GetProperty() : nullptr, ren, this->RenderMode == MonteCarlo && !projection, projection)))
+         this, vol ? vol->GetProperty() : nullptr, ren, this->RenderMode != EmissionAbsorption && !projection, projection)))
   {
     vtkWarningMacro(<< w);
   }
@@ -246,6 +247,10 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     {
       this->RenderEmissionAbsorption(ren, vol);
     }
+    else if (this->RenderMode == Preview || this->RenderMode == AmbientOcclusion)
+    {
+      this->RenderLit(ren, vol);
+    }
     else
     {
       this->RenderMonteCarlo(ren, vol);
@@ -266,6 +271,124 @@ void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, 
     this->LastRenderComplete = true;
     vs::WindowCompositor::Draw(ren, vs::WindowCompositor::GetViewport(ren), rgba);
   }
+}
+
+// Preview and AmbientOcclusion: the emission-absorption pass lit from the light volume of the whole
+// visibility grid (swept at once at DirectionResolution: a still must not change as a grid fills in).
+// The light volume is made again only when the grid's values, the environment or its intensity
+// change, never for a camera move. A volume without extinction (or cropped away) needs neither: its
+// lit image is transparent, and the preview shows the environment alone.
+void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol)
+{
+  Internals& I = *this->Impl;
+  const bool preview = this->RenderMode == Preview;
+  const vs::VolumeGeometry geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
+  const bool croppedAway = glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax));
+  vs::CameraView view = vs::FrameGeometry::MakeView(ren);
+  const vs::Viewport vp = view.Port;
+  if (vp.Width <= 0 || vp.Height <= 0)
+  {
+    return;
+  }
+  vs::FrameGeometry::CheckViewport(*I.Context, vp);
+  this->UpdateEnvironmentInput();
+  const bool emptyVolume = I.Scene->Majorants().MaxMajorant() <= 0.0f || croppedAway;
+  I.GridGeometry = geometry;
+  this->UpdateVisibilityGrid(!emptyVolume, false);
+  const vs::VisibilityGrid* grid = nullptr;
+  if (!emptyVolume && I.Grid && I.Grid->Grid())
+  {
+    const uint32_t side = I.Grid->Grid()->Side();
+    if (I.Grid->PendingDirections() > 0 || I.Grid->SweptDirections() < side * side)
+    {
+      const auto start = std::chrono::steady_clock::now();
+      const vs::GridUpdateResult result = I.Grid->Complete(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(),
+        I.LastGridRequest, [this](double f) { this->UpdateProgress(f); });
+      if (result.DirectionsSwept > 0)
+      {
+        this->NoteSweeps(result.DirectionsSwept, result.Seconds,
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      }
+    }
+    grid = I.Grid->Grid();
+    if (!I.Light)
+    {
+      I.Light = std::make_unique<vs::LightVolume>(I.Context);
+    }
+    I.Light->Update(*grid, I.Environment.Device(), this->EnvironmentIntensity);
+    this->LightVolumeBuildCount = int(I.Light->Builds());
+  }
+  const std::vector<float> depth = vs::WindowCompositor::ReadDepth(ren, vp);
+  bool shade = false;
+  vs::shared::VsEmissionAbsorptionParams p =
+    EmissionAbsorptionFrame::Params(this, ren, vol, geometry, view, *I.Scene, I.Frame++, shade);
+  if (grid)
+  {
+    const auto c = grid->Cells();
+    p.grid.cells = glm::uvec3(c[0], c[1], c[2]);
+    p.grid.side = grid->Side();
+    p.grid.cellSize = grid->CellSize();
+  }
+  p.lightIntensity = float(this->EnvironmentIntensity); // ambient occlusion's sky
+  if (!I.EA)
+  {
+    I.EA = std::make_unique<vs::EmissionAbsorptionPass>(I.Context);
+  }
+  std::vector<float> rgba = I.EA->Render(I.Scene->Volume(), I.Scene->TF(), p, depth, false,
+    preview ? vs::shared::VS_EA_LIGHTING_PREVIEW : vs::shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION,
+    grid ? &I.Light->Image() : nullptr);
+  this->LastDeviceSeconds = I.EA->LastSeconds();
+  this->LastRenderComplete = true;
+  if (!preview)
+  {
+    vs::WindowCompositor::Draw(ren, vp, rgba); // as the emission-absorption image
+    return;
+  }
+  // The environment seen through the volume, T x L_env through each pixel's centre, and the image
+  // shown as the Monte Carlo mode's is (vs::CoverageComposite: over the skybox with the coverage
+  // 1 - T, or painting the environment, or transparent where empty).
+  const uint32_t w = uint32_t(vp.Width), h = uint32_t(vp.Height);
+  const bool asBackground = this->GetShowsEnvironmentAsBackground();
+  if (asBackground)
+  {
+    vs::EnvironmentBackground::Observe(ren);
+  }
+  const bool behind = asBackground && vs::EnvironmentBackground::InFrame(ren);
+  const bool paints = this->EnvironmentVisible && !behind && vs::RendererFrame::Claim(ren, this);
+  std::vector<uint8_t> environmentPixels;
+  if (asBackground || paints)
+  {
+    const std::vector<float> environment = vs::CoverageComposite::EnvironmentRadiance(
+      I.Environment.Map(), p.camera.invViewProj, w, h, float(this->EnvironmentIntensity));
+    environmentPixels.assign(size_t(w) * h, 0);
+    for (size_t i = 0; i < environmentPixels.size(); ++i)
+    {
+      if (!depth.empty() && depth[i] < 1.0f)
+      {
+        continue; // opaque geometry in front of the environment
+      }
+      environmentPixels[i] = 1;
+      const float T = 1.0f - rgba[4 * i + 3];
+      for (int c = 0; c < 3; ++c)
+      {
+        rgba[4 * i + c] += T * environment[3 * i + c];
+      }
+    }
+  }
+  if (!I.Radiance)
+  {
+    I.Radiance = vtkSmartPointer<vtkImageData>::New();
+  }
+  vs::RadianceImage::Fill(I.Radiance, rgba, w, h, environmentPixels, 1.0f);
+  I.EnvironmentPixels = environmentPixels;
+  const bool composite = asBackground && !paints;
+  if (composite)
+  {
+    I.Composite.UpdateBackground(I.Environment.Map(), p.camera.invViewProj, w, h,
+      float(this->EnvironmentIntensity * this->Exposure), this->ToneMapping, this->EnvironmentUploadCount);
+  }
+  vs::WindowCompositor::Draw(
+    ren, vp, I.Composite.Display(rgba, environmentPixels, 1.0f, composite, float(this->Exposure), this->ToneMapping));
 }
 
 // In a vtkHardwareSelector pass: the prop's colour where the volume's opacity exceeds 3/255, as
@@ -366,18 +489,10 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume
   I.Prewarm.Start(I.Context, p, table, quads, cellWalk, false);
 }
 
-void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol)
+// The environment: port 1, or a constant white sky, on the device at DirectionResolution.
+void vtkVisibilitySweepVolumeMapper::UpdateEnvironmentInput()
 {
   Internals& I = *this->Impl;
-  this->LastRenderComplete = false;
-  I.SwitchView(ren); // one accumulator per renderer
-  const vs::VolumeGeometry geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
-  const bool croppedAway = glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax));
-  // The camera and the image size first: nothing is uploaded, swept or read back for a view
-  // that cannot render.
-  vs::CameraView view = vs::FrameGeometry::MakeView(ren);
-  vs::FrameGeometry::CheckViewport(*I.Context, view.Port);
-
   // The environment: port 1, or a constant white sky.
   vtkImageData* envImage = nullptr;
   if (this->GetNumberOfInputConnections(1) > 0)
@@ -400,6 +515,21 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   {
     ++this->EnvironmentUploadCount;
   }
+}
+
+void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol)
+{
+  Internals& I = *this->Impl;
+  this->LastRenderComplete = false;
+  I.SwitchView(ren); // one accumulator per renderer
+  const vs::VolumeGeometry geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
+  const bool croppedAway = glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax));
+  // The camera and the image size first: nothing is uploaded, swept or read back for a view
+  // that cannot render.
+  vs::CameraView view = vs::FrameGeometry::MakeView(ren);
+  vs::FrameGeometry::CheckViewport(*I.Context, view.Port);
+
+  this->UpdateEnvironmentInput();
 
   // The visibility grid, only for the strategies that use it.
   const std::vector<glm::dvec4> planes = vs::FrameGeometry::WorldPlanes(this->ClippingPlanes, geometry);
@@ -837,7 +967,8 @@ float vtkVisibilitySweepVolumeMapper::OpaqueAlpha(bool autoStrategy)
 
 bool vtkVisibilitySweepVolumeMapper::GetShowsEnvironmentAsBackground()
 {
-  return this->EnvironmentVisible && this->EnvironmentAsBackground && this->RenderMode == MonteCarlo &&
+  return this->EnvironmentVisible && this->EnvironmentAsBackground &&
+    (this->RenderMode == MonteCarlo || this->RenderMode == Preview) &&
     !EmissionAbsorptionFrame::IsProjection(this->BlendMode);
 }
 
@@ -1001,7 +1132,17 @@ void vtkVisibilitySweepVolumeMapper::SetDirectionResolution(int resolution)
 
 const char* vtkVisibilitySweepVolumeMapper::GetRenderModeAsString()
 {
-  return this->RenderMode == EmissionAbsorption ? "EmissionAbsorption" : "MonteCarlo";
+  switch (this->RenderMode)
+  {
+    case EmissionAbsorption:
+      return "EmissionAbsorption";
+    case Preview:
+      return "Preview";
+    case AmbientOcclusion:
+      return "AmbientOcclusion";
+    default:
+      return "MonteCarlo";
+  }
 }
 
 const char* vtkVisibilitySweepVolumeMapper::GetCellModeAsString()
@@ -1057,7 +1198,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "InteractiveSubsampling: " << this->InteractiveSubsampling << "\n";
   os << indent << "SampleDistance: " << this->SampleDistance
-     << " (EmissionAbsorption only: MonteCarlo tracking is exact and needs no step)\n";
+     << " (EmissionAbsorption, Preview and AmbientOcclusion: MonteCarlo tracking is exact and needs no step)\n";
   os << indent << "DensityScale: " << this->DensityScale << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "VolumeUploadCount: " << this->VolumeUploadCount << "\n";
@@ -1088,6 +1229,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MajorantUpdateCount: " << this->GetMajorantUpdateCount() << "\n";
   os << indent << "LastSweepSeconds: " << this->LastSweepSeconds << "\n";
   os << indent << "DirectionTableBuildCount: " << this->DirectionTableBuildCount << "\n";
+  os << indent << "LightVolumeBuildCount: " << this->LightVolumeBuildCount << "\n";
   os << indent << "LastDirectionTableSeconds: " << this->LastDirectionTableSeconds << "\n";
   os << indent << "LastUpdateSeconds: " << this->LastUpdateSeconds << "\n";
   os << indent << "LastFrameSweepSeconds: " << this->LastFrameSweepSeconds << "\n";

@@ -20,6 +20,18 @@
  *   opacity, unit distance, density scale, clipping).
  * - EmissionAbsorption: ray casting of VTK's transfer functions (opacity per
  *   ScalarOpacityUnitDistance, colour as emission), a jittered sample per step.
+ * - Preview: a noise-free, deterministic ray march of the camera rays (the emission-absorption
+ *   pass without jitter) with single scattering from the light volume, the environment light
+ *   reaching each visibility cell (vs::LightVolume, interpolated trilinearly): per step,
+ *   T (1 - exp(-sigma_t dt)) albedo I / (4 pi), plus T x the environment behind. Biased only by
+ *   the grid's resolution and the step; the image the Monte Carlo mode converges to, at the cost
+ *   of one emission-absorption render once the grid is swept. The grid (at DirectionResolution)
+ *   and the light volume are made when the volume, the environment or its intensity change, never
+ *   for a camera move (GetLightVolumeBuildCount()). Shown through the display transform as
+ *   MonteCarlo (Exposure, ToneMapping, the environment as background).
+ * - AmbientOcclusion: the same march, each sample emitting albedo x EnvironmentIntensity x its
+ *   mean visibility (the light volume's alpha, the fraction of unoccluded directions): the preview
+ *   under a constant white sky, whatever the environment. Shown as EmissionAbsorption is.
  *
  * Blend modes: COMPOSITE_BLEND renders in the RenderMode. MAXIMUM_INTENSITY_BLEND,
  * MINIMUM_INTENSITY_BLEND, AVERAGE_INTENSITY_BLEND and ADDITIVE_BLEND are projections, not light
@@ -69,7 +81,9 @@ public:
   enum RenderModes
   {
     EmissionAbsorption = 0,
-    MonteCarlo = 1
+    MonteCarlo = 1,
+    Preview = 2,         // single scattering from the light volume, deterministic
+    AmbientOcclusion = 3 // albedo x mean visibility, emission-absorption composited
   };
   enum SamplingStrategies
   {
@@ -88,10 +102,12 @@ public:
 
   ///@{
   /** The render path. Default MonteCarlo. */
-  vtkSetClampMacro(RenderMode, int, EmissionAbsorption, MonteCarlo);
+  vtkSetClampMacro(RenderMode, int, EmissionAbsorption, AmbientOcclusion);
   vtkGetMacro(RenderMode, int);
   void SetRenderModeToEmissionAbsorption() { this->SetRenderMode(EmissionAbsorption); }
   void SetRenderModeToMonteCarlo() { this->SetRenderMode(MonteCarlo); }
+  void SetRenderModeToPreview() { this->SetRenderMode(Preview); }
+  void SetRenderModeToAmbientOcclusion() { this->SetRenderMode(AmbientOcclusion); }
   const char* GetRenderModeAsString();
   ///@}
 
@@ -482,6 +498,9 @@ public:
    *  strategies render with), and the device seconds of the last build (part of
    *  GetLastDeviceSeconds() in the frame that built it). */
   vtkGetMacro(DirectionTableBuildCount, int);
+  /** Builds of the light volume (the Preview and AmbientOcclusion modes): it is made again only when
+   *  the grid's values, the environment or its intensity change. */
+  vtkGetMacro(LightVolumeBuildCount, int);
   vtkGetMacro(LastDirectionTableSeconds, double);
   ///@}
 
@@ -587,6 +606,7 @@ protected:
   bool DirectionTable = true;
   double DefensiveWeight = 0.0;
   int DirectionTableBuildCount = 0;
+  int LightVolumeBuildCount = 0;
   double LastDirectionTableSeconds = 0.0;
   int CameraEstimator = CollisionCamera;
   int ControlExtinction = ShadowRayControl;
@@ -646,6 +666,10 @@ private:
   std::vector<float> EmissionAbsorptionImage(vtkRenderer* ren, vtkVolume* vol);
   void RenderSelection(vtkRenderer* ren, vtkVolume* vol);
   void RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol);
+  /** Preview and AmbientOcclusion: the emission-absorption pass lit from the light volume. */
+  void RenderLit(vtkRenderer* ren, vtkVolume* vol);
+  /** Port 1's environment (or the white sky) on the device at DirectionResolution. */
+  void UpdateEnvironmentInput();
   /** Starts making the first frame's render pipeline on another thread (the scene's conversion
    *  and upload keep this one busy meanwhile): the strategy's, or Environment sampling's for Auto. */
   void StartPrewarm(vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars);

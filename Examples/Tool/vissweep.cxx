@@ -5,6 +5,7 @@
 #include "vsBenchOverhead.h"
 #include "vsBenchAnimation.h"
 #include "vsBenchLightVolume.h"
+#include "vsBenchPreview.h"
 #include "vsBenchSweeps.h"
 #include "vsRenderCommand.h"
 #include "vsContext.h"
@@ -32,6 +33,7 @@ int main(int argc, char** argv)
   vstool::AddBenchStress(*bench);
   vstool::AddBenchAnimation(*bench);
   vstool::AddBenchLightVolume(*bench);
+  vstool::AddBenchPreview(*bench);
   vstool::AddRender(app);
   try
   {

@@ -104,6 +104,7 @@ int Run(const RenderOptions& o)
   stats["outputs"] = o.Outputs;
   stats["width"] = scene.Render.Width;
   stats["height"] = scene.Render.Height;
+  stats["mode"] = scene.Render.Mode;
   stats["strategy"] = scene.Render.Strategy;
   // What the last frame sampled with (Auto chooses per frame), and the grid's state.
   stats["effective_strategy"] = mapper->GetEffectiveStrategyAsString();
@@ -210,6 +211,10 @@ Scene LoadScene(const RenderOptions& o)
   {
     scene.Render.Seed = o.Seed;
   }
+  if (!o.Mode.empty())
+  {
+    scene.Render.Mode = SceneRenderModes()[RenderModeIndex(o.Mode, "--mode")];
+  }
   return scene;
 }
 
@@ -227,6 +232,27 @@ ProgressiveResult RenderProgressively(
   const bool timed = timeBudget > 0.0;
   ProgressiveResult r;
   const auto loopStart = Clock::now();
+  if (mapper->GetRenderMode() != vtkVisibilitySweepVolumeMapper::MonteCarlo)
+  {
+    // The deterministic modes (preview, ambient occlusion, emission-absorption): one render is the image.
+    objects.Window->Render();
+    const char* error = mapper->GetLastError();
+    if (error && *error)
+    {
+      throw std::runtime_error(std::string("render failed: ") + error);
+    }
+    r.Frames = 1;
+    r.Seconds = r.FirstFrameSeconds = Seconds(loopStart, Clock::now());
+    r.UpdateSeconds = mapper->GetLastUpdateSeconds();
+    r.DirectionsUpdated = mapper->GetDirectionsUpdatedLastFrame();
+    r.DeviceSeconds = mapper->GetLastDeviceSeconds();
+    r.SweepSeconds = mapper->GetLastFrameSweepSeconds();
+    if (bar)
+    {
+      Progress(target, target, r.Seconds, 0.0, true);
+    }
+    return r;
+  }
   int stalled = 0, previousSpp = 0;
   while (true)
   {
@@ -338,6 +364,9 @@ void AddRender(CLI::App& app)
   cmd->add_option("--strategy", o->Strategy,
     "auto (the default), uniform, environment, visibility, combined or two-step, or the API's spelling (TwoStep) "
     "(overrides the scene)");
+  cmd->add_option("--mode", o->Mode,
+    "monte-carlo (the default), preview (noise-free single scattering from the light volume), ambient-occlusion "
+    "or emission-absorption (overrides the scene's render.mode)");
   // CLI::NonNegativeNumber printed its bound as a 309-digit double ("not in range 0.000000 to 17976...").
   cmd->add_option("--seed", o->Seed, "random seed, 0 to 2147483647 (overrides the scene)")
     ->check(CLI::Range(0, std::numeric_limits<int>::max()));

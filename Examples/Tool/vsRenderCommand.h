@@ -29,6 +29,7 @@ struct RenderOptions
   int Spp = 0;
   double TimeBudget = 0.0;
   std::string Strategy;
+  std::string Mode; // the render mode (overrides render.mode)
   int Seed = -1;
   int SamplesPerFrame = 0; // 0: frames of about AutoFrameSeconds
   std::string Json;

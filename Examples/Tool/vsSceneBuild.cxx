@@ -179,7 +179,7 @@ vtkSmartPointer<vtkAlgorithm> MakeEnvironment(const Scene& scene)
 
 void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
 {
-  mapper->SetRenderModeToMonteCarlo();
+  mapper->SetRenderMode(RenderModeIndex(scene.Render.Mode));
   mapper->SetSamplingStrategy(StrategyIndex(scene.Render.Strategy));
   mapper->SetSeed(scene.Render.Seed);
   mapper->SetMaximumSamples(scene.Render.Spp);

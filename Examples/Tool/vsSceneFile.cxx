@@ -230,6 +230,7 @@ Scene::RenderSection ParseRender(const json& value)
   v.Read("control_extinction", s.ControlExtinction);
   v.Read("transmittance_estimator", s.TransmittanceEstimator);
   v.Read("sampler", s.Sampler);
+  v.Read("mode", s.Mode);
   return s;
 }
 
@@ -333,6 +334,11 @@ int TransmittanceEstimatorIndex(const std::string& name, const std::string& key)
 int SamplerIndex(const std::string& name, const std::string& key)
 {
   return NameIndex(SceneSamplers(), name, key, "sampler");
+}
+
+int RenderModeIndex(const std::string& name, const std::string& key)
+{
+  return NameIndex(SceneRenderModes(), name, key, "render mode");
 }
 
 int UpdateSchemeIndex(const std::string& name, const std::string& key)

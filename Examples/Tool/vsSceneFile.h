@@ -100,6 +100,9 @@ struct Scene
     std::string Sampler = "sobol";
     // Shadow rays per scatter point (vtkVisibilitySweepVolumeMapper::ShadowRays, 1-64: splitting).
     int ShadowRays = 1;
+    // vtkVisibilitySweepVolumeMapper::RenderMode: "monte-carlo", "preview", "ambient-occlusion" or
+    // "emission-absorption".
+    std::string Mode = "monte-carlo";
     bool operator==(const RenderSection& o) const;
   };
   struct VisibilitySection
@@ -152,6 +155,7 @@ int UpdateSchemeIndex(const std::string& name, const std::string& key = "render.
 int ControlExtinctionIndex(const std::string& name, const std::string& key = "render.control_extinction");
 int TransmittanceEstimatorIndex(const std::string& name, const std::string& key = "render.transmittance_estimator");
 int SamplerIndex(const std::string& name, const std::string& key = "render.sampler");
+int RenderModeIndex(const std::string& name, const std::string& key = "render.mode");
 
 /** Parses a scene; relative paths resolve against baseDir. Throws std::runtime_error naming the key path. */
 Scene ParseScene(const nlohmann::json& j, const std::string& baseDir);

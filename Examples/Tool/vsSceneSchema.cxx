@@ -86,6 +86,7 @@ const std::vector<SceneKey>& SceneSchema()
     { "render", "control_extinction", T::Word, R::Any, 0, 0, "\"shadow\"", false, "control extinction", "", { "none", "shadow", "camera", "both" }, "which rays integrate each brick's smallest extinction exactly" },
     { "render", "transmittance_estimator", T::Word, R::Any, 0, 0, "\"ratio-tracking\"", false, "transmittance estimator", "", { "ratio-tracking", "ray-marching" }, "the shadow rays' transmittance estimator" },
     { "render", "sampler", T::Word, R::Any, 0, 0, "\"sobol\"", false, "sampler", "", { "independent", "sobol" }, "where a sample's jitter and light direction come from" },
+    { "render", "mode", T::Word, R::Any, 0, 0, "\"monte-carlo\"", false, "render mode", "", { "emission-absorption", "monte-carlo", "preview", "ambient-occlusion" }, "the mapper's RenderMode" },
     { "render", "shadow_rays", T::Integer, R::Closed, 1, 64, "1", false, "shadow rays per scatter point", "", {}, "shadow rays per scatter point (splitting)" },
 
     // The mapper's settings: absent = the mapper's default (vtkVisibilitySweepVolumeMapper.h).
@@ -145,6 +146,11 @@ const std::vector<std::string>& SceneTransmittanceEstimators()
 const std::vector<std::string>& SceneSamplers()
 {
   return SceneSchemaKey("render", "sampler").Words;
+}
+
+const std::vector<std::string>& SceneRenderModes()
+{
+  return SceneSchemaKey("render", "mode").Words;
 }
 
 std::vector<std::string> SceneSchemaKeys(const std::string& section)

@@ -78,6 +78,8 @@ const std::vector<std::string>& SceneControlExtinctions();
 const std::vector<std::string>& SceneTransmittanceEstimators();
 /** The sampler names, in the order of vtkVisibilitySweepVolumeMapper::Samplers. */
 const std::vector<std::string>& SceneSamplers();
+/** The render mode names, in the order of vtkVisibilitySweepVolumeMapper::RenderModes. */
+const std::vector<std::string>& SceneRenderModes();
 }
 
 #endif

@@ -58,10 +58,10 @@ bool Scene::CameraSection::operator==(const CameraSection& o) const
 bool Scene::RenderSection::operator==(const RenderSection& o) const
 {
   return std::tie(Width, Height, Spp, Strategy, Seed, Exposure, ToneMapping, UpdateScheme, DirectionsPerFrame,
-           StaticInterval, ControlExtinction, TransmittanceEstimator, Sampler, ShadowRays) ==
+           StaticInterval, ControlExtinction, TransmittanceEstimator, Sampler, ShadowRays, Mode) ==
     std::tie(o.Width, o.Height, o.Spp, o.Strategy, o.Seed, o.Exposure, o.ToneMapping, o.UpdateScheme,
       o.DirectionsPerFrame, o.StaticInterval, o.ControlExtinction, o.TransmittanceEstimator, o.Sampler,
-      o.ShadowRays);
+      o.ShadowRays, o.Mode);
 }
 
 bool Scene::VisibilitySection::operator==(const VisibilitySection& o) const
@@ -177,7 +177,7 @@ json ToJson(const Scene& s)
     { "directions_per_frame", s.Render.DirectionsPerFrame }, { "static_interval", s.Render.StaticInterval },
     { "control_extinction", s.Render.ControlExtinction },
     { "transmittance_estimator", s.Render.TransmittanceEstimator }, { "sampler", s.Render.Sampler },
-    { "shadow_rays", s.Render.ShadowRays } };
+    { "shadow_rays", s.Render.ShadowRays }, { "mode", s.Render.Mode } };
 
   const auto& v = s.Visibility;
   json vis = json::object();

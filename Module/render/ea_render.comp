@@ -14,6 +14,14 @@
  * (the vtkVolumeProperty's ShadeOn): ambient x albedo + intensity x (diffuse |n.l| albedo +
  * specular |n.h|^power), n the normalised gradient of the scalar (central differences, in world
  * units), l the headlight, two-sided; where the gradient vanishes, ambient only.
+ * With VS_EA_LIGHTING (ea_params.h) the composite is lit from the light volume uLight instead of
+ * emitting the colour transfer function (issue 15's preview): per segment of constant medium,
+ * sigma_t and the albedo at its midpoint (no jitter: the image is deterministic), the segment adds
+ * T (1 - exp(-sigma_t dt)) albedo I(x) / (4 pi), the exact integral of T sigma_s I / (4 pi) over it
+ * (VS_EA_LIGHTING_PREVIEW: single scattering of the light volume I, trilinear between cell centres,
+ * clamped at the box); VS_EA_LIGHTING_AMBIENT_OCCLUSION puts 4 pi lightIntensity V(x) for I, V the
+ * mean visibility (the light volume's alpha). Alpha is 1 - T; the environment seen through the
+ * volume is the mapper's to add (T (1 - alpha) x the environment). Not shaded (VS_EA_SHADE ignored).
  * Output: premultiplied RGBA per pixel, rows bottom-up (OpenGL order).
  */
 #include "bindings.h"
@@ -27,8 +35,10 @@ layout(std430, binding = VS_EA_PARAMS) readonly buffer Params { VsEmissionAbsorp
 layout(std430, binding = VS_EA_DEPTH) readonly buffer Depth { float uDepth[]; };
 layout(std430, binding = VS_EA_RESULT) writeonly buffer Result { vec4 uOut[]; };
 layout(binding = VS_EA_FACTOR_IMAGE, r32f) uniform readonly image3D uFactor; /* read only with VS_EA_FACTOR */
+layout(binding = VS_EA_LIGHT, rgba32f) uniform readonly image3D uLight; /* read only with VS_EA_LIGHTING */
 layout(constant_id = 0) const uint VS_EA_FACTOR = 0u;
 layout(constant_id = 1) const uint VS_EA_SHADE = 0u;
+layout(constant_id = 2) const uint VS_EA_LIGHTING = 0u; /* VS_EA_LIGHTING_* */
 #define VS_FACTOR_IMAGE
 
 #include "volume_access.glsl"
@@ -108,6 +118,21 @@ vec3 shade(vec3 x, vec3 albedo, ivec3 dims, vec3 toEye)
   return color;
 }
 
+/* The light volume at index-space point x: trilinear between the cells' centres, clamped at the box. */
+vec4 light_at(vec3 x)
+{
+  ivec3 cells = ivec3(P.grid.cells);
+  vec3 g = clamp((x - P.volume.boxMin) / P.grid.cellSize - 0.5, vec3(0.0), vec3(cells - 1));
+  ivec3 i0 = min(ivec3(floor(g)), cells - 1);
+  ivec3 i1 = min(i0 + 1, cells - 1);
+  vec3 f = g - vec3(i0);
+  vec4 c00 = mix(imageLoad(uLight, ivec3(i0.x, i0.y, i0.z)), imageLoad(uLight, ivec3(i1.x, i0.y, i0.z)), f.x);
+  vec4 c10 = mix(imageLoad(uLight, ivec3(i0.x, i1.y, i0.z)), imageLoad(uLight, ivec3(i1.x, i1.y, i0.z)), f.x);
+  vec4 c01 = mix(imageLoad(uLight, ivec3(i0.x, i0.y, i1.z)), imageLoad(uLight, ivec3(i1.x, i0.y, i1.z)), f.x);
+  vec4 c11 = mix(imageLoad(uLight, ivec3(i0.x, i1.y, i1.z)), imageLoad(uLight, ivec3(i1.x, i1.y, i1.z)), f.x);
+  return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
+}
+
 void main()
 {
   uvec2 pix = gl_GlobalInvocationID.xy;
@@ -150,7 +175,7 @@ void main()
   }
   if (t.x < t.y)
   {
-    float jitter = vs_rng_float(rng);
+    float jitter = VS_EA_LIGHTING == VS_EA_LIGHTING_NONE ? vs_rng_float(rng) : 0.5;
     for (float a = t.x; a < t.y; a += stepSize)
     {
       float b = min(a + stepSize, t.y);
@@ -159,7 +184,11 @@ void main()
       vec4 c = vs_classify(vs_sample(x, dims, P.volume.interpolation), P.volume.tf);
       if (VS_EA_FACTOR == 1u)
         c.w *= vs_sample_factor(x, dims, P.volume.interpolation);
-      if (VS_EA_SHADE == 1u)
+      if (VS_EA_LIGHTING == VS_EA_LIGHTING_PREVIEW)
+        c.rgb *= light_at(x).rgb * (1.0 / (4.0 * VS_PI));
+      else if (VS_EA_LIGHTING == VS_EA_LIGHTING_AMBIENT_OCCLUSION)
+        c.rgb *= P.lightIntensity * light_at(x).a;
+      else if (VS_EA_SHADE == 1u)
         c.rgb = shade(x, c.rgb, dims, -d);
       float A = 1.0 - exp(-c.w * (b - a));
       color += (1.0 - alpha) * A * c.rgb;

@@ -32,20 +32,24 @@ EmissionAbsorptionPass::EmissionAbsorptionPass(std::shared_ptr<Context> context)
 {
 }
 
-const ComputePipeline& EmissionAbsorptionPass::PipelineFor(bool factor, bool shade)
+const ComputePipeline& EmissionAbsorptionPass::PipelineFor(bool factor, bool shade, uint32_t lighting)
 {
-  auto& pipeline = this->Pipelines_[factor ? 1 : 0][shade ? 1 : 0];
+  shade = shade && lighting == shared::VS_EA_LIGHTING_NONE; // the lit modes are not Phong-shaded
+  auto& pipeline = this->Pipelines_[factor ? 1 : 0][shade ? 1 : 0][lighting];
   if (!pipeline)
   {
-    std::string name = "emission-absorption";
+    std::string name = lighting == shared::VS_EA_LIGHTING_PREVIEW ? "preview"
+      : lighting == shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION     ? "ambient occlusion"
+                                                                  : "emission-absorption";
     name += factor ? (shade ? " (gradient opacity, shaded)" : " (gradient opacity)") : (shade ? " (shaded)" : "");
     pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_ea_render),
       BindingTypes(shared::VS_EA_BINDING_COUNT,
         { { shared::VS_EA_VOLUME, BindingType::StorageImage }, { shared::VS_EA_TF, BindingType::StorageBuffer },
           { shared::VS_EA_PARAMS, BindingType::StorageBuffer }, { shared::VS_EA_DEPTH, BindingType::StorageBuffer },
           { shared::VS_EA_RESULT, BindingType::StorageBuffer },
-          { shared::VS_EA_FACTOR_IMAGE, BindingType::StorageImage } }),
-      0, name, { factor ? 1u : 0u, shade ? 1u : 0u });
+          { shared::VS_EA_FACTOR_IMAGE, BindingType::StorageImage },
+          { shared::VS_EA_LIGHT, BindingType::StorageImage } }),
+      0, name, { factor ? 1u : 0u, shade ? 1u : 0u, lighting });
   }
   return *pipeline;
 }
@@ -54,13 +58,36 @@ EmissionAbsorptionPass::~EmissionAbsorptionPass() = default;
 
 // Rows of 16 bytes (volume_params.h): a member that breaks the rule changes the size.
 static_assert(sizeof(shared::VsEmissionAbsorptionParams) ==
-    sizeof(shared::VsCameraParams) + sizeof(shared::VsVolumeParams) + 4 * 16,
+    sizeof(shared::VsCameraParams) + sizeof(shared::VsVolumeParams) + 4 * 16 + sizeof(shared::VsGridParams),
   "VsEmissionAbsorptionParams: rows of 16 bytes (volume_params.h)");
 
 std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
-  const TransferFunctionTable& tf, const shared::VsEmissionAbsorptionParams& params, const std::vector<float>& depth,
-  bool shade)
+  const TransferFunctionTable& tf, const shared::VsEmissionAbsorptionParams& inParams, const std::vector<float>& depth,
+  bool shade, uint32_t lighting, const Image3D* light)
 {
+  if (lighting > shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION)
+  {
+    throw InputError("unknown lighting of the emission-absorption pass: " + std::to_string(lighting));
+  }
+  shared::VsEmissionAbsorptionParams params = inParams;
+  if (lighting != shared::VS_EA_LIGHTING_NONE)
+  {
+    if (light)
+    {
+      const glm::uvec3 c = params.grid.cells;
+      if (light->Width() != c.x || light->Height() != c.y || light->Depth() != c.z || c.x == 0 || c.y == 0 || c.z == 0)
+      {
+        throw InputError("the light volume (" + std::to_string(light->Width()) + " x " + std::to_string(light->Height()) +
+          " x " + std::to_string(light->Depth()) + ") does not match the grid's cells (" + std::to_string(c.x) + " x " +
+          std::to_string(c.y) + " x " + std::to_string(c.z) + ")");
+      }
+    }
+    else
+    {
+      params.grid.cells = glm::uvec3(1u);
+      params.grid.cellSize = glm::max(params.volume.boxMax - params.volume.boxMin, glm::vec3(1e-30f));
+    }
+  }
   const uint32_t w = params.camera.width, h = params.camera.height;
   if (w == 0 || h == 0)
   {
@@ -86,7 +113,13 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
   {
     this->Depth_->Upload(depth.data(), pixels * sizeof(float));
   }
-  const ComputePipeline& pipeline = this->PipelineFor(volume.Factor() != nullptr, shade);
+  if (!this->NoLight_)
+  {
+    this->NoLight_ = std::make_unique<Image3D>(this->Context_, 1, 1, 1, vk::Format::eR32G32B32A32Sfloat, "no light");
+    const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+    this->NoLight_->Upload(zero, sizeof(zero));
+  }
+  const ComputePipeline& pipeline = this->PipelineFor(volume.Factor() != nullptr, shade, lighting);
   DescriptorSet set(pipeline);
   set.Bind(shared::VS_EA_VOLUME, volume.Image())
     .Bind(shared::VS_EA_TF, tf.Lut())
@@ -94,6 +127,7 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
     .Bind(shared::VS_EA_DEPTH, *this->Depth_)
     .Bind(shared::VS_EA_RESULT, *this->Out_);
   set.Bind(shared::VS_EA_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
+  set.Bind(shared::VS_EA_LIGHT, lighting != shared::VS_EA_LIGHTING_NONE && light ? *light : *this->NoLight_);
   Batch batch(this->Context_);
   batch.BeginTimer("render");
   batch.Dispatch(pipeline, set, nullptr, 0, (w + 7) / 8, (h + 7) / 8, 1);

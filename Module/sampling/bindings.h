@@ -39,7 +39,9 @@ VS_CONST uint VS_EA_PARAMS = 2u;         /* storage buffer: VsEmissionAbsorption
 VS_CONST uint VS_EA_DEPTH = 3u;
 VS_CONST uint VS_EA_RESULT = 4u;
 VS_CONST uint VS_EA_FACTOR_IMAGE = 5u;
-VS_CONST uint VS_EA_BINDING_COUNT = 6u;
+VS_CONST uint VS_EA_LIGHT = 6u;          /* rgba32f image: the light volume (vsLightVolume.h), read by the lit
+                                            modes (VS_EA_LIGHTING_*; a 1-texel placeholder otherwise) */
+VS_CONST uint VS_EA_BINDING_COUNT = 7u;
 
 /* The sweeps' march along each direction (visibility/sweep_march.glsl: the full-resolution volume
  * or, VS_SWEEP_POOLED, the pooled extinction volume and its occupancy). */

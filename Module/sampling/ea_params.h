@@ -1,11 +1,12 @@
 /*
  * ea_params.h — what an emission-absorption dispatch needs (ea_render.comp; std430, the layout rule
  * of volume_params.h): the camera, the volume as every pass sees it, the march, the projections'
- * settings and the Phong shading of the composite.
+ * settings, the Phong shading of the composite and the light volume of the lit modes.
  */
 #ifndef VS_EA_PARAMS_H
 #define VS_EA_PARAMS_H
 #include "camera_params.h"
+#include "grid_params.h"
 #include "volume_params.h"
 
 VS_NAMESPACE_BEGIN
@@ -17,6 +18,14 @@ VS_CONST uint VS_BLEND_MAXIMUM = 1u;
 VS_CONST uint VS_BLEND_MINIMUM = 2u;
 VS_CONST uint VS_BLEND_AVERAGE = 3u;
 VS_CONST uint VS_BLEND_ADDITIVE = 4u;
+
+/* How the composite's colour is lit (ea_render.comp's specialization constant VS_EA_LIGHTING). */
+VS_CONST uint VS_EA_LIGHTING_NONE = 0u;    /* emission-absorption: the colour transfer function is emitted */
+VS_CONST uint VS_EA_LIGHTING_PREVIEW = 1u; /* single scattering from the light volume: the colour is the albedo,
+                                              a sample emits albedo x I(x) / (4 pi) (I: vsLightVolume.h) */
+VS_CONST uint VS_EA_LIGHTING_AMBIENT_OCCLUSION = 2u; /* the albedo x lightIntensity x the mean visibility V(x)
+                                              (the light volume's alpha): the preview under a constant sky of
+                                              radiance lightIntensity */
 
 struct VsEmissionAbsorptionParams
 {
@@ -37,7 +46,10 @@ struct VsEmissionAbsorptionParams
   float specular;
   float specularPower;
   vec3 lightDirection; /* world direction towards the light (VTK's headlight: against the view direction) */
-  float lightIntensity;
+  float lightIntensity; /* also the ambient occlusion's sky radiance */
+  /* The light volume's cells (VS_EA_LIGHTING_PREVIEW, _AMBIENT_OCCLUSION): the visibility grid's shape over
+     volume.boxMin..boxMax, one light-volume texel per cell; grid.side unused. */
+  VsGridParams grid;
 };
 
 VS_NAMESPACE_END

@@ -3,6 +3,7 @@
 #   good:   -DSCENE=<json>          renders 32x32, writes .exr + .png + stats, checks them
 #           [-DCHECK=framed]        and that the volume is centred in the view (vsCheckExr)
 #   budget: -DSCENE=<json>          --time-budget instead of --spp
+#   preview: -DSCENE=<json>         --mode preview: one deterministic frame (0 spp), render.mode "preview"
 #   bad:    -DSCENE=<json> -DEXPECT=<text> [-DEXTRA=<args;...>] [-DMKDIRS=<names>]  exit code 2,
 #           message, no output
 #   split:  -DSCENE=<json>          24 spp with one sample per frame and with automatic frames: same EXR
@@ -55,9 +56,11 @@ if (MODE STREQUAL "split")
   return()
 endif ()
 
-if (MODE STREQUAL "good" OR MODE STREQUAL "budget")
+if (MODE STREQUAL "good" OR MODE STREQUAL "budget" OR MODE STREQUAL "preview")
   if (MODE STREQUAL "good")
     set(amount --spp 3)
+  elseif (MODE STREQUAL "preview")
+    set(amount --mode preview)
   else ()
     set(amount --time-budget 2)
   endif ()
@@ -111,7 +114,12 @@ if (MODE STREQUAL "good" OR MODE STREQUAL "budget")
   if (MODE STREQUAL "good" AND NOT spp EQUAL 3)
     message(FATAL_ERROR "stats: spp ${spp}, expected 3")
   endif ()
-  if (spp LESS 1)
+  string(JSON renderMode GET "${json}" mode)
+  if (MODE STREQUAL "preview")
+    if (NOT renderMode STREQUAL "preview" OR NOT spp EQUAL 0)
+      message(FATAL_ERROR "stats: mode '${renderMode}', spp ${spp}; expected preview, 0")
+    endif ()
+  elseif (spp LESS 1)
     message(FATAL_ERROR "stats: spp ${spp}")
   endif ()
   message(STATUS "spp ${spp}, paths/s ${pps}")

@@ -40,7 +40,7 @@ json FullScene()
     "render": {"width": 320, "height": 200, "spp": 64, "strategy": "combined", "seed": 7, "exposure": 1.5,
                "tone_mapping": false, "update_scheme": "round-robin", "directions_per_frame": 8,
                "static_interval": 12, "control_extinction": "camera",
-               "transmittance_estimator": "ray-marching", "sampler": "independent", "shadow_rays": 3},
+               "transmittance_estimator": "ray-marching", "sampler": "independent", "shadow_rays": 3, "mode": "preview"},
     "visibility": {"direction_resolution": 16, "voxels_per_cell": 8, "kernel_resolution": 64, "filtering": false,
                    "filter_angle_fraction": 0.25, "epsilon": 0.02, "cell_mode": "trilinear",
                    "skip_unlit_directions": false, "progressive": false, "sweep_frame_fraction": 0.5,
@@ -104,6 +104,7 @@ TEST(SceneFile, ParsesEverySection)
   EXPECT_EQ(s.Render.TransmittanceEstimator, "ray-marching");
   EXPECT_EQ(vstool::TransmittanceEstimatorIndex(s.Render.TransmittanceEstimator), 1);
   EXPECT_EQ(s.Render.Sampler, "independent");
+  EXPECT_EQ(s.Render.Mode, "preview");
   EXPECT_EQ(s.Render.ShadowRays, 3);
 
   EXPECT_EQ(s.Visibility.DirectionResolution.value(), 16);
@@ -143,6 +144,7 @@ TEST(SceneFile, DefaultsOfOptionalSections)
   EXPECT_EQ(s.Render.ControlExtinction, "shadow");
   EXPECT_EQ(s.Render.TransmittanceEstimator, "ratio-tracking");
   EXPECT_EQ(s.Render.Sampler, "sobol");
+  EXPECT_EQ(s.Render.Mode, "monte-carlo");
   EXPECT_EQ(s.Render.ShadowRays, 1);
 
   EXPECT_FALSE(s.Visibility.DirectionResolution.has_value());
@@ -245,6 +247,9 @@ TEST(SceneFile, EqualityNoticesChanges)
   EXPECT_FALSE(a == b);
   b = a;
   b.Render.Sampler = a.Render.Sampler == "sobol" ? "independent" : "sobol";
+  EXPECT_FALSE(a == b);
+  b = a;
+  b.Render.Mode = a.Render.Mode == "preview" ? "monte-carlo" : "preview";
   EXPECT_FALSE(a == b);
   b = a;
   b.Render.ShadowRays = a.Render.ShadowRays + 1;
@@ -408,6 +413,8 @@ TEST(SceneFile, BadValues)
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["seed"] = -1; }), "render.seed: seed -1 not in");
   EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["strategy"] = "foo"; }),
     "render.strategy: unknown strategy 'foo' (expected uniform, environment, visibility, combined, two-step, auto)");
+  EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["mode"] = "fast"; }),
+    "render.mode: unknown render mode 'fast' (expected emission-absorption, monte-carlo, preview, ambient-occlusion)");
   EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["sampler"] = "halton"; }),
     "render.sampler: unknown sampler 'halton' (expected independent, sobol)");
   EXPECT_EQ(ErrorAfter([](json& j) { j["render"]["control_extinction"] = "residual"; }),

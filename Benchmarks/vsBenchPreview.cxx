@@ -1,0 +1,249 @@
+#include "vsBenchPreview.h"
+#include "vsSceneBuild.h"
+#include "vsSceneFile.h"
+#include "vsToolCommand.h"
+
+#include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkVisibilitySweepVolumeMapper.h"
+#include "vtkVolumeProperty.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace vstool
+{
+namespace
+{
+struct PreviewOptions
+{
+  std::string SceneFile;
+  int Size = 512;
+  int ReferenceSpp = 1024;
+  int Repeats = 3;
+  std::string Json;
+};
+
+double SecondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The volume's radiance of the last render (rgb per pixel), empty without one.
+std::vector<double> Radiance(vtkVisibilitySweepVolumeMapper* mapper)
+{
+  std::vector<double> out;
+  vtkImageData* image = mapper->GetRadiance();
+  vtkDataArray* a = image ? image->GetPointData()->GetArray("Radiance") : nullptr;
+  if (!a)
+  {
+    return out;
+  }
+  out.reserve(size_t(a->GetNumberOfTuples()) * 3);
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      out.push_back(a->GetComponent(i, c));
+    }
+  }
+  return out;
+}
+
+// sum (x - ref)^2 / sum ref^2 over the pixels' rgb; NaN when they do not compare.
+double RelativeMSE(const std::vector<double>& x, const std::vector<double>& ref)
+{
+  if (x.size() != ref.size() || ref.empty())
+  {
+    return std::nan("");
+  }
+  double num = 0.0, den = 0.0;
+  for (size_t i = 0; i < x.size(); ++i)
+  {
+    num += (x[i] - ref[i]) * (x[i] - ref[i]);
+    den += ref[i] * ref[i];
+  }
+  return den > 0.0 ? num / den : std::nan("");
+}
+
+void CheckRender(vtkVisibilitySweepVolumeMapper* mapper)
+{
+  const char* error = mapper->GetLastError();
+  if (error && *error)
+  {
+    throw std::runtime_error(std::string("render failed: ") + error);
+  }
+}
+
+struct Row
+{
+  std::string Mode;
+  double FirstSeconds = 0.0; // the first frame (grid, light volume, pipelines)
+  double FrameSeconds = 0.0; // median frame after a camera move (Monte Carlo: the whole accumulation)
+  double Error = std::nan("");
+};
+
+int Run(const PreviewOptions& o)
+{
+  Scene scene = ReadSceneFile(o.SceneFile);
+  scene.Render.Width = scene.Render.Height = o.Size;
+  // The volume's own radiance: the environment seen through it is exact in the preview and estimated in
+  // Monte Carlo, and would dominate the norm.
+  scene.Environment.VisibleBackground = false;
+  SceneObjects objects = BuildScene(scene);
+  vtkVisibilitySweepVolumeMapper* mapper = objects.Mapper;
+  vtkCamera* camera = objects.Renderer->GetActiveCamera();
+  std::vector<Row> rows;
+  std::vector<std::vector<double>> images;
+
+  // A deterministic mode: its first frame, then the median of `Repeats` frames after small camera moves.
+  auto deterministic = [&](const char* name, int mode, bool shade) {
+    mapper->SetRenderMode(mode);
+    objects.Property->SetShade(shade ? 1 : 0);
+    Row r;
+    r.Mode = name;
+    auto start = std::chrono::steady_clock::now();
+    objects.Window->Render();
+    r.FirstSeconds = SecondsSince(start);
+    CheckRender(mapper);
+    std::vector<double> frames;
+    for (int i = 0; i < o.Repeats; ++i)
+    {
+      camera->Azimuth(i % 2 ? -0.5 : 0.5);
+      start = std::chrono::steady_clock::now();
+      objects.Window->Render();
+      frames.push_back(SecondsSince(start));
+      CheckRender(mapper);
+    }
+    if (o.Repeats % 2)
+    {
+      camera->Azimuth(-0.5);
+      objects.Window->Render();
+    }
+    std::sort(frames.begin(), frames.end());
+    r.FrameSeconds = frames.empty() ? r.FirstSeconds : frames[frames.size() / 2];
+    rows.push_back(r);
+    images.push_back(mode == vtkVisibilitySweepVolumeMapper::Preview ? Radiance(mapper) : std::vector<double>());
+    std::printf("  %-28s first frame %.3f s, frame %.3f s\n", name, r.FirstSeconds, r.FrameSeconds);
+    std::fflush(stdout);
+  };
+  // Monte Carlo from scratch to `spp` with `seed`: the accumulation's wall time.
+  auto monteCarlo = [&](int spp, int seed) {
+    mapper->SetRenderModeToMonteCarlo();
+    objects.Property->SetShade(0);
+    mapper->SetSeed(seed);
+    mapper->SetMaximumSamples(spp);
+    mapper->SetSamplesPerFrame(std::min(spp, 16));
+    const auto start = std::chrono::steady_clock::now();
+    int frames = 0;
+    do
+    {
+      objects.Window->Render();
+      CheckRender(mapper);
+    } while (++frames < 4 * spp && !mapper->IsConverged());
+    if (mapper->GetAccumulatedSamples() != spp)
+    {
+      throw std::runtime_error("Monte Carlo reached " + std::to_string(mapper->GetAccumulatedSamples()) + " of " +
+        std::to_string(spp) + " spp");
+    }
+    return std::make_pair(Radiance(mapper), SecondsSince(start));
+  };
+
+  std::printf("scene %s at %d x %d (the volume's radiance, environment not visible)\n", o.SceneFile.c_str(), o.Size,
+    o.Size);
+  const bool shaded = objects.Property->GetShade(0) != 0;
+  deterministic("emission-absorption", vtkVisibilitySweepVolumeMapper::EmissionAbsorption, false);
+  deterministic("emission-absorption, Phong", vtkVisibilitySweepVolumeMapper::EmissionAbsorption, true);
+  deterministic("ambient occlusion", vtkVisibilitySweepVolumeMapper::AmbientOcclusion, false);
+  deterministic("preview", vtkVisibilitySweepVolumeMapper::Preview, false);
+  monteCarlo(1, 1); // the Monte Carlo pipelines, compiled before anything is timed
+  for (int spp : { 1, 4, 16, 64 })
+  {
+    auto mc = monteCarlo(spp, 100 + spp);
+    Row r;
+    r.Mode = "Monte Carlo " + std::to_string(spp) + " spp";
+    r.FrameSeconds = mc.second;
+    rows.push_back(r);
+    images.push_back(mc.first);
+    std::printf("  %-28s %.3f s\n", r.Mode.c_str(), r.FrameSeconds);
+    std::fflush(stdout);
+  }
+  const auto reference = monteCarlo(o.ReferenceSpp, 7919);
+  std::printf("  reference: Monte Carlo %d spp in %.1f s\n", o.ReferenceSpp, reference.second);
+  objects.Property->SetShade(shaded ? 1 : 0);
+
+  nlohmann::json report;
+  report["scene"] = o.SceneFile;
+  report["size"] = o.Size;
+  report["reference_spp"] = o.ReferenceSpp;
+  std::printf("\n%-28s %14s %12s %22s\n", "mode", "first frame s", "frame s", "relative MSE vs ref");
+  for (size_t i = 0; i < rows.size(); ++i)
+  {
+    Row& r = rows[i];
+    r.Error = RelativeMSE(images[i], reference.first);
+    char error[64];
+    if (std::isnan(r.Error))
+    {
+      std::snprintf(error, sizeof(error), "%s", "n/a (not L)");
+    }
+    else
+    {
+      std::snprintf(error, sizeof(error), "%.3e", r.Error);
+    }
+    char first[32] = "";
+    if (r.FirstSeconds > 0.0)
+    {
+      std::snprintf(first, sizeof(first), "%.3f", r.FirstSeconds);
+    }
+    std::printf("%-28s %14s %12.3f %22s\n", r.Mode.c_str(), first, r.FrameSeconds, error);
+    nlohmann::json row = { { "mode", r.Mode }, { "frame_seconds", r.FrameSeconds } };
+    if (r.FirstSeconds > 0.0)
+    {
+      row["first_frame_seconds"] = r.FirstSeconds;
+    }
+    if (!std::isnan(r.Error))
+    {
+      row["relative_mse"] = r.Error;
+    }
+    report["modes"].push_back(row);
+  }
+  std::printf("(Monte Carlo: the accumulation's wall time; emission-absorption, Phong and ambient occlusion are not "
+              "estimates of the scattered radiance: no error)\n");
+  if (!o.Json.empty())
+  {
+    std::ofstream(o.Json) << report.dump(2) << "\n";
+    std::printf("wrote %s\n", o.Json.c_str());
+  }
+  return 0;
+}
+}
+
+void AddBenchPreview(CLI::App& bench)
+{
+  auto o = std::make_shared<PreviewOptions>();
+  auto* cmd = bench.add_subcommand("preview",
+    "frame time and error against converged Monte Carlo: emission-absorption, Phong, ambient occlusion, preview, "
+    "Monte Carlo at 1/4/16/64 spp");
+  cmd->add_option("scene", o->SceneFile, "the scene file")->required();
+  cmd->add_option("--size", o->Size, "image width and height (default 512)")->check(CLI::Range(1, 16384));
+  cmd->add_option("--reference-spp", o->ReferenceSpp, "the converged Monte Carlo image's spp (default 1024)")
+    ->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--repeats", o->Repeats, "timed frames per deterministic mode (default 3)")->check(CLI::Range(1, 1000));
+  cmd->add_option("--json", o->Json, "write the table as JSON");
+  SetCommandRun(cmd, [o]() { return Run(*o); });
+}
+}
