@@ -298,18 +298,7 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol)
   const vs::VisibilityGrid* grid = nullptr;
   if (!emptyVolume && I.Grid && I.Grid->Grid())
   {
-    const uint32_t side = I.Grid->Grid()->Side();
-    if (I.Grid->PendingDirections() > 0 || I.Grid->SweptDirections() < side * side)
-    {
-      const auto start = std::chrono::steady_clock::now();
-      const vs::GridUpdateResult result = I.Grid->Complete(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(),
-        I.LastGridRequest, [this](double f) { this->UpdateProgress(f); });
-      if (result.DirectionsSwept > 0)
-      {
-        this->NoteSweeps(result.DirectionsSwept, result.Seconds,
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-      }
-    }
+    this->CompleteVisibilityGrid();
     grid = I.Grid->Grid();
     if (!I.Light)
     {
@@ -899,6 +888,26 @@ void vtkVisibilitySweepVolumeMapper::NoteSweeps(unsigned int directions, double 
   I.VisibilityImage = nullptr;
 }
 
+// Sweeps the grid's directions the renders left unswept or pending (every direction, with the last
+// request's settings), counted as sweeps.
+void vtkVisibilitySweepVolumeMapper::CompleteVisibilityGrid()
+{
+  Internals& I = *this->Impl;
+  const uint32_t side = I.Grid->Grid()->Side();
+  if (I.Grid->PendingDirections() == 0 && I.Grid->SweptDirections() >= side * side)
+  {
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const vs::GridUpdateResult result = I.Grid->Complete(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(),
+    I.LastGridRequest, [this](double f) { this->UpdateProgress(f); });
+  if (result.DirectionsSwept > 0)
+  {
+    this->NoteSweeps(result.DirectionsSwept, result.Seconds,
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+}
+
 int vtkVisibilitySweepVolumeMapper::GetPendingDirections()
 {
   return this->Impl->Grid ? int(this->Impl->Grid->PendingDirections()) : 0;
@@ -1008,24 +1017,14 @@ vtkImageData* vtkVisibilitySweepVolumeMapper::GetVisibilityGrid()
   }
   // The renderer may have left directions unswept (without environment light, or not yet filled
   // in): a user asking for the grid gets every direction.
-  if (I.Grid->PendingDirections() > 0 || I.Grid->SweptDirections() < I.Grid->Grid()->Side() * I.Grid->Grid()->Side())
+  try
   {
-    try
-    {
-      const auto start = std::chrono::steady_clock::now();
-      const vs::GridUpdateResult result = I.Grid->Complete(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(),
-        I.LastGridRequest, [this](double f) { this->UpdateProgress(f); });
-      if (result.DirectionsSwept > 0)
-      {
-        this->NoteSweeps(result.DirectionsSwept, result.Seconds,
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-      }
-    }
-    catch (const std::exception& e)
-    {
-      vtkErrorMacro("GetVisibilityGrid: sweeping the directions the render skipped failed: " << e.what());
-      return nullptr;
-    }
+    this->CompleteVisibilityGrid();
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("GetVisibilityGrid: sweeping the directions the render skipped failed: " << e.what());
+    return nullptr;
   }
   if (!I.VisibilityImage)
   {

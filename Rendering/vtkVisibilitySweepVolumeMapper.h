@@ -675,6 +675,7 @@ private:
   void StartPrewarm(vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars);
   void UpdateVisibilityGrid(bool needGrid, bool usesGridOnly);
   void NoteSweeps(unsigned int directions, double deviceSeconds, double wallSeconds);
+  void CompleteVisibilityGrid();
   uint32_t AccumulatedSamplesOf(bool autoStrategy);
   std::vector<float> CombinedMean(bool autoStrategy);
   std::vector<double> CombinedVariance(bool autoStrategy);
