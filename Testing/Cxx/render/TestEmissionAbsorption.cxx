@@ -1,5 +1,6 @@
 // Emission-absorption on the device against the analytic homogeneous cube:
 // alpha = 1 - exp(-sigma_t L), colour = c * alpha, for every ray through the cube.
+#include "vsOrthoCamera.h"
 #include "vsContext.h"
 #include "vsDeviceVolume.h"
 #include "vsEmissionAbsorptionPass.h"
@@ -13,19 +14,11 @@ using namespace vs;
 
 namespace
 {
-// An orthographic view along +z: NDC x,y in [-1,1] -> world [lo, hi], NDC z -1 -> z0, +1 -> z1.
+// An orthographic view along +z (vstest::OrthoAlongZ) of a volume in world = index space.
 shared::VsEmissionAbsorptionParams OrthoAlongZ(uint32_t w, uint32_t h, float lo, float hi, float z0, float z1)
 {
   shared::VsEmissionAbsorptionParams p{};
-  glm::mat4 m(1.0f);
-  m[0][0] = 0.5f * (hi - lo);
-  m[1][1] = 0.5f * (hi - lo);
-  m[2][2] = 0.5f * (z1 - z0);
-  m[3] = glm::vec4(0.5f * (hi + lo), 0.5f * (hi + lo), 0.5f * (z1 + z0), 1.0f);
-  p.camera.invViewProj = m;
-  p.camera.width = w;
-  p.camera.height = h;
-  p.camera.seed = 1;
+  p.camera = vstest::OrthoAlongZ(w, h, lo, hi, z0, z1);
   p.volume.worldToIndex = glm::mat4(1.0f);
   return p;
 }

@@ -2,6 +2,7 @@
 // scattering from the light volume against the 1D quadrature of a homogeneous box's single scattering
 // under a constant sky (the light volume's analytic values, as TestLightVolume has them); the preview
 // is deterministic (no jitter, no random stream); ambient occlusion is the preview under a white sky.
+#include "vsOrthoCamera.h"
 #include "vsVisibilityTestScene.h"
 
 #include "vsDeviceEnvironment.h"
@@ -29,20 +30,6 @@ const double Sigma = 0.05;          // extinction per voxel of the box (world = 
 const uint32_t Voxels = 33;         // box [0, 32]^3
 const double Edge = Voxels - 1.0;
 
-// Distance from p along w to the exit of box [lo, hi] (TestLightVolume.cxx's).
-double ExitDistance(glm::dvec3 p, glm::dvec3 w, glm::dvec3 lo, glm::dvec3 hi)
-{
-  double t = 1e300;
-  for (int i = 0; i < 3; ++i)
-  {
-    if (w[i] > 0)
-      t = std::min(t, (hi[i] - p[i]) / w[i]);
-    else if (w[i] < 0)
-      t = std::min(t, (lo[i] - p[i]) / w[i]);
-  }
-  return std::max(0.0, t);
-}
-
 // The light volume's analytic value per unit sky radiance: sum_n (4 pi / D^2) exp(-sigma d(x, w_n)).
 double AnalyticLight(glm::dvec3 x, uint32_t D)
 {
@@ -50,7 +37,7 @@ double AnalyticLight(glm::dvec3 x, uint32_t D)
   for (uint32_t n = 0; n < D * D; ++n)
   {
     sum += 4.0 * Pi / (D * D) *
-      std::exp(-Sigma * ExitDistance(x, glm::dvec3(vs::SweepPlan::Direction(n, D)), glm::dvec3(0.0), glm::dvec3(Edge)));
+      std::exp(-Sigma * vstest::ExitDistance(x, glm::dvec3(vs::SweepPlan::Direction(n, D)), glm::dvec3(0.0), glm::dvec3(Edge)));
   }
   return sum;
 }
@@ -79,20 +66,6 @@ double InterpolatedLight(const std::vector<float>& rgba, const vs::VisibilityGri
   return v;
 }
 
-// An orthographic view along +z over [lo, hi]^2 (TestEmissionAbsorption.cxx's).
-void OrthoAlongZ(vs::shared::VsEmissionAbsorptionParams& p, uint32_t w, uint32_t h, float lo, float hi, float z0, float z1)
-{
-  glm::mat4 m(1.0f);
-  m[0][0] = 0.5f * (hi - lo);
-  m[1][1] = 0.5f * (hi - lo);
-  m[2][2] = 0.5f * (z1 - z0);
-  m[3] = glm::vec4(0.5f * (hi + lo), 0.5f * (hi + lo), 0.5f * (z1 + z0), 1.0f);
-  p.camera.invViewProj = m;
-  p.camera.width = w;
-  p.camera.height = h;
-  p.camera.seed = 1;
-}
-
 struct LitBox
 {
   VisibilityScene Scene;
@@ -113,7 +86,7 @@ struct LitBox
     g.Algorithm = vs::VisibilityGridParameters::Method::BruteForce; // V exact to 1e-4 (TestVisibilityGrid)
     Scene.Grid(this->Grid, g);
     this->Light.Update(this->Grid, *this->Env, 1.0);
-    OrthoAlongZ(this->Params, W, H, Lo, Hi, -10.0f, 40.0f);
+    this->Params.camera = vstest::OrthoAlongZ(W, H, Lo, Hi, -10.0f, 40.0f);
     this->Params.volume = vs::MakeVolumeParams(Scene.Geometry, *Scene.TF, vs::shared::VS_INTERPOLATION_LINEAR, {});
     this->Params.step = 0.25f;
     this->Params.terminationOpacity = 0.995f;
