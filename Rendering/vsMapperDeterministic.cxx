@@ -1,0 +1,245 @@
+// vsMapperDeterministic.cxx — vtkVisibilitySweepVolumeMapper's deterministic paths: the
+// emission-absorption image (and the projections), the preview and ambient occlusion lit from the
+// light volume, and the hardware selector's pass. Members of the mapper, in a file of their own.
+#include "vtkVisibilitySweepVolumeMapper.h"
+
+#include "vsMapperInternals.h"
+#include "vsAccumulationSignature.h"
+#include "vsFrameGeometry.h"
+#include "vsCoverageComposite.h"
+#include "vsPipelinePrewarm.h"
+#include "vsCombinedAccumulators.h"
+#include "vsRadianceImage.h"
+#include "vsMapperEnvironment.h"
+#include "vsGridSchedule.h"
+#include "vsEmissionAbsorptionFrame.h"
+#include "vsMonteCarloFrame.h"
+#include "vsContext.h"
+#include "vsDeviceEnvironment.h"
+#include "vsDeviceVolume.h"
+#include "vsEmissionAbsorptionPass.h"
+#include "vsEnvironmentBackground.h"
+#include "vsEnvironmentMap.h"
+#include "vsMajorantGrid.h"
+#include "vsDirectionTable.h"
+#include "vsMonteCarloPass.h"
+#include "vsPeelingDeferral.h"
+#include "vsPropertyChecks.h"
+#include "vsRendererFrame.h"
+#include "vsSelectionMask.h"
+#include "vsVoxelPicker.h"
+#include "vsRenderTargetLimits.h"
+#include "vsStrategySelector.h"
+#include "vsVisibilityGrid.h"
+#include "vsVisibilityGridUpdater.h"
+#include "sampling/interpolation.h"
+#include "vsVisibilityImage.h"
+#include "vsError.h"
+#include "vsFloatRange.h"
+#include "vsGradientOpacity.h"
+#include "vsVolumeInput.h"
+#include "vsVolumeScene.h"
+#include "vsWindowCompositor.h"
+
+#include "vtkAlgorithmOutput.h"
+#include "vtkCommand.h"
+#include "vtkHardwareSelector.h"
+#include "vtkInformation.h"
+#include "vtkRenderWindow.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtkWeakPointer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+using vs::EmissionAbsorptionFrame;
+
+void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol)
+{
+  std::vector<float> rgba = this->EmissionAbsorptionImage(ren, vol);
+  if (!rgba.empty())
+  {
+    this->LastRenderComplete = true;
+    vs::WindowCompositor::Draw(ren, vs::WindowCompositor::GetViewport(ren), rgba);
+  }
+}
+
+// Preview and AmbientOcclusion: the emission-absorption pass lit from the light volume of the whole
+// visibility grid (swept at once at DirectionResolution: a still must not change as a grid fills in).
+// The light volume is made again only when the grid's values, the environment or its intensity
+// change, never for a camera move. A volume without extinction (or cropped away) needs neither: its
+// lit image is transparent, and the preview shows the environment alone.
+void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol)
+{
+  Internals& I = *this->Impl;
+  const bool preview = this->RenderMode == Preview;
+  const vs::VolumeGeometry geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
+  const bool croppedAway = glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax));
+  vs::CameraView view = vs::FrameGeometry::MakeView(ren);
+  const vs::Viewport vp = view.Port;
+  if (vp.Width <= 0 || vp.Height <= 0)
+  {
+    return;
+  }
+  vs::FrameGeometry::CheckViewport(*I.Context, vp);
+  this->UpdateEnvironmentInput();
+  const bool emptyVolume = I.Scene->Majorants().MaxMajorant() <= 0.0f || croppedAway;
+  I.GridGeometry = geometry;
+  this->UpdateVisibilityGrid(!emptyVolume, false);
+  const vs::VisibilityGrid* grid = nullptr;
+  if (!emptyVolume && I.Grid && I.Grid->Grid())
+  {
+    this->CompleteVisibilityGrid();
+    grid = I.Grid->Grid();
+    if (!I.Light)
+    {
+      I.Light = std::make_unique<vs::LightVolume>(I.Context);
+    }
+    I.Light->Update(*grid, I.Environment.Device(), this->EnvironmentIntensity);
+    this->LightVolumeBuildCount = int(I.Light->Builds());
+  }
+  const std::vector<float> depth = vs::WindowCompositor::ReadDepth(ren, vp);
+  bool shade = false;
+  vs::shared::VsEmissionAbsorptionParams p =
+    EmissionAbsorptionFrame::Params(this, ren, vol, geometry, view, *I.Scene, I.Frame++, shade);
+  if (grid)
+  {
+    const auto c = grid->Cells();
+    p.grid.cells = glm::uvec3(c[0], c[1], c[2]);
+    p.grid.side = grid->Side();
+    p.grid.cellSize = grid->CellSize();
+  }
+  p.lightIntensity = float(this->EnvironmentIntensity); // ambient occlusion's sky
+  if (!I.EA)
+  {
+    I.EA = std::make_unique<vs::EmissionAbsorptionPass>(I.Context);
+  }
+  std::vector<float> rgba = I.EA->Render(I.Scene->Volume(), I.Scene->TF(), p, depth, false,
+    preview ? vs::shared::VS_EA_LIGHTING_PREVIEW : vs::shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION,
+    grid ? &I.Light->Image() : nullptr);
+  this->LastDeviceSeconds = I.EA->LastSeconds();
+  this->LastRenderComplete = true;
+  if (!preview)
+  {
+    vs::WindowCompositor::Draw(ren, vp, rgba); // as the emission-absorption image
+    return;
+  }
+  // The environment seen through the volume, T x L_env through each pixel's centre, and the image
+  // shown as the Monte Carlo mode's is (vs::CoverageComposite: over the skybox with the coverage
+  // 1 - T, or painting the environment, or transparent where empty).
+  const uint32_t w = uint32_t(vp.Width), h = uint32_t(vp.Height);
+  const bool asBackground = this->GetShowsEnvironmentAsBackground();
+  if (asBackground)
+  {
+    vs::EnvironmentBackground::Observe(ren);
+  }
+  const bool behind = asBackground && vs::EnvironmentBackground::InFrame(ren);
+  const bool paints = this->EnvironmentVisible && !behind && vs::RendererFrame::Claim(ren, this);
+  std::vector<uint8_t> environmentPixels;
+  if (asBackground || paints)
+  {
+    const std::vector<float> environment = vs::CoverageComposite::EnvironmentRadiance(
+      I.Environment.Map(), p.camera.invViewProj, w, h, float(this->EnvironmentIntensity));
+    environmentPixels.assign(size_t(w) * h, 0);
+    for (size_t i = 0; i < environmentPixels.size(); ++i)
+    {
+      if (!depth.empty() && depth[i] < 1.0f)
+      {
+        continue; // opaque geometry in front of the environment
+      }
+      environmentPixels[i] = 1;
+      const float T = 1.0f - rgba[4 * i + 3];
+      for (int c = 0; c < 3; ++c)
+      {
+        rgba[4 * i + c] += T * environment[3 * i + c];
+      }
+    }
+  }
+  if (!I.Radiance)
+  {
+    I.Radiance = vtkSmartPointer<vtkImageData>::New();
+  }
+  vs::RadianceImage::Fill(I.Radiance, rgba, w, h, environmentPixels, 1.0f);
+  I.EnvironmentPixels = environmentPixels;
+  const bool composite = asBackground && !paints;
+  if (composite)
+  {
+    I.Composite.UpdateBackground(I.Environment.Map(), p.camera.invViewProj, w, h,
+      float(this->EnvironmentIntensity * this->Exposure), this->ToneMapping, this->EnvironmentUploadCount);
+  }
+  vs::WindowCompositor::Draw(
+    ren, vp, I.Composite.Display(rgba, environmentPixels, 1.0f, composite, float(this->Exposure), this->ToneMapping));
+}
+
+// In a vtkHardwareSelector pass: the prop's colour where the volume's opacity exceeds 3/255, as
+// vtkOpenGLGPUVolumeRayCastMapper draws it (vs::SelectionMask). The opacity is that of the
+// emission-absorption pass (deterministic, 1 - transmittance), whatever the render mode; the
+// accumulators, the image signature and the radiance are left as they are.
+void vtkVisibilitySweepVolumeMapper::RenderSelection(vtkRenderer* ren, vtkVolume* vol)
+{
+  Internals& I = *this->Impl;
+  vtkHardwareSelector* selector = ren->GetSelector();
+  selector->BeginRenderProp();
+  const bool savedComplete = this->LastRenderComplete;
+  std::vector<float> rgba = this->EmissionAbsorptionImage(ren, vol);
+  this->LastRenderComplete = savedComplete;
+  const vs::Viewport vp = vs::WindowCompositor::GetViewport(ren);
+  if (!rgba.empty() && vs::SelectionMask::AsksForIds(selector))
+  {
+    // The voxel where each covered pixel's ray crosses the selection opacity, marched on the host.
+    const vs::VoxelPicker::Volume v = EmissionAbsorptionFrame::PickerVolume(this, vol, *I.Scene);
+    std::vector<bool> covered(rgba.size() / 4);
+    for (size_t i = 0; i < covered.size(); ++i)
+    {
+      covered[i] = rgba[4 * i + 3] > vs::SelectionMask::Threshold;
+    }
+    const glm::dmat4 invViewProj = EmissionAbsorptionFrame::PickerInvViewProj(ren, vp);
+    const std::vector<vtkIdType> ids = vs::VoxelPicker::Ids(v, invViewProj, vp.Width, vp.Height,
+      vs::WindowCompositor::ReadDepth(ren, vp), covered, vs::SelectionMask::Threshold,
+      vs::SelectionMask::AsksForCellIds(selector));
+    vs::WindowCompositor::Draw(ren, vp, vs::SelectionMask::IdImage(selector, ids));
+    const auto& d = v.Geometry.Dims;
+    selector->UpdateMaximumPointId(vtkIdType(d[0]) * d[1] * d[2]);
+    selector->UpdateMaximumCellId(vtkIdType(d[0]) * d[1] * d[2]);
+    ++this->SelectionRenderCount;
+  }
+  else if (!rgba.empty())
+  {
+    vs::WindowCompositor::Draw(ren, vp, vs::SelectionMask::Image(selector, rgba));
+    ++this->SelectionRenderCount;
+  }
+  selector->EndRenderProp();
+}
+
+// The emission-absorption image of the viewport (premultiplied RGBA, rows bottom-up), or nothing
+// for an empty viewport.
+std::vector<float> vtkVisibilitySweepVolumeMapper::EmissionAbsorptionImage(vtkRenderer* ren, vtkVolume* vol)
+{
+  Internals& I = *this->Impl;
+  const vs::VolumeGeometry geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
+  vs::CameraView view = vs::FrameGeometry::MakeView(ren);
+  vs::Viewport vp = view.Port;
+  if (vp.Width <= 0 || vp.Height <= 0)
+  {
+    return {};
+  }
+  vs::FrameGeometry::CheckViewport(*I.Context, vp);
+  std::vector<float> depth = vs::WindowCompositor::ReadDepth(ren, vp);
+  bool shade = false;
+  const vs::shared::VsEmissionAbsorptionParams p =
+    EmissionAbsorptionFrame::Params(this, ren, vol, geometry, view, *I.Scene, I.Frame++, shade);
+  if (!I.EA)
+  {
+    I.EA = std::make_unique<vs::EmissionAbsorptionPass>(I.Context);
+  }
+  std::vector<float> rgba = I.EA->Render(I.Scene->Volume(), I.Scene->TF(), p, depth, shade);
+  this->LastDeviceSeconds = I.EA->LastSeconds();
+  return rgba;
+}
