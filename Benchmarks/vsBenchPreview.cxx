@@ -225,7 +225,12 @@ int Run(const PreviewOptions& o)
               "estimates of the scattered radiance: no error)\n");
   if (!o.Json.empty())
   {
-    std::ofstream(o.Json) << report.dump(2) << "\n";
+    std::ofstream out(o.Json);
+    out << report.dump(2) << "\n";
+    if (!out)
+    {
+      throw std::runtime_error("--json " + o.Json + ": cannot write");
+    }
     std::printf("wrote %s\n", o.Json.c_str());
   }
   return 0;

@@ -22,6 +22,8 @@
 
 #include <gtest/gtest.h>
 
+#include "vsTempDir.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -53,23 +55,7 @@ public:
   std::vector<std::string> Errors, Warnings;
 };
 
-struct TempDir
-{
-  std::filesystem::path Path;
-  TempDir()
-  {
-    Path = std::filesystem::temp_directory_path() /
-      ("vissweep_envmap_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(Path);
-  }
-  ~TempDir()
-  {
-    std::error_code ec;
-    std::filesystem::remove_all(Path, ec);
-  }
-  std::string File(const std::string& name) const { return (Path / name).string(); }
-};
+using vstest::TempDir;
 
 /* Runs a reader on fileName and returns the messages. */
 vtkSmartPointer<Messages> RunReader(vtkEnvironmentMapReader* reader, const std::string& fileName)

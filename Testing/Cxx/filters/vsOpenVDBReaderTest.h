@@ -21,6 +21,8 @@
 
 #include <gtest/gtest.h>
 
+#include "vsTempDir.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -64,23 +66,7 @@ public:
   std::vector<double> Progress;
 };
 
-struct TempDir
-{
-  std::filesystem::path Path;
-  TempDir()
-  {
-    Path = std::filesystem::temp_directory_path() /
-      ("vissweep_vdb_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(Path);
-  }
-  ~TempDir()
-  {
-    std::error_code ec;
-    std::filesystem::remove_all(Path, ec);
-  }
-  std::string File(const std::string& name) const { return (Path / name).string(); }
-};
+using vstest::TempDir;
 
 /* Updates the reader (at time t when t >= 0) with observers; returns the messages. */
 vtkSmartPointer<Messages> RunReader(vtkOpenVDBVolumeReader* reader, double t = -1.0)
