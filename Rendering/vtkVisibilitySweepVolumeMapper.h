@@ -505,9 +505,11 @@ public:
   ///@}
 
   ///@{
-  /** Ray-marching step of the EmissionAbsorption mode in world units; 0 (default) = half the
-   *  smallest voxel edge. The MonteCarlo mode does not use it: delta and ratio tracking sample
-   *  the exact free-flight distances and transmittance, so no step size enters the estimate. */
+  /** Ray-marching step of the EmissionAbsorption, Preview and AmbientOcclusion modes in world
+   *  units; 0 (default) = half the smallest voxel edge in EmissionAbsorption, the smallest voxel
+   *  edge in the lit modes (whose error is the light volume's, not the step's). The MonteCarlo mode
+   *  does not use it: delta and ratio tracking sample the exact free-flight distances and
+   *  transmittance, so no step size enters the estimate. */
   virtual void SetSampleDistance(double distance);
   vtkGetMacro(SampleDistance, double);
   ///@}

@@ -25,21 +25,25 @@
  * Output: premultiplied RGBA per pixel, rows bottom-up (OpenGL order).
  */
 #include "bindings.h"
+#include "brick_walk.h"
 #include "rng.h"
 #include "ea_params.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = VS_EA_VOLUME, r32f) uniform readonly image3D uVolume;
-layout(std430, binding = VS_EA_TF) readonly buffer TransferFunction { vec4 uTF[]; };
-layout(std430, binding = VS_EA_PARAMS) readonly buffer Params { VsEmissionAbsorptionParams P; };
-layout(std430, binding = VS_EA_DEPTH) readonly buffer Depth { float uDepth[]; };
+layout(binding = VS_EA_TF) uniform samplerBuffer uTF; /* the table's entries (volume_access.glsl) */
+layout(std140, binding = VS_EA_PARAMS) uniform Params { VsEmissionAbsorptionParams P; };
+layout(binding = VS_EA_DEPTH) uniform samplerBuffer uDepth; /* r32f texels, one per pixel */
 layout(std430, binding = VS_EA_RESULT) writeonly buffer Result { vec4 uOut[]; };
 layout(binding = VS_EA_FACTOR_IMAGE, r32f) uniform readonly image3D uFactor; /* read only with VS_EA_FACTOR */
 layout(binding = VS_EA_LIGHT, rgba32f) uniform readonly image3D uLight; /* read only with VS_EA_LIGHTING */
+layout(binding = VS_EA_BRICKS, rgba32f) uniform readonly image3D uBricks; /* the majorant grid's tracking image
+                                                   (vsMajorantGrid.h), read when volume.majorantBrickSize > 0 */
 layout(constant_id = 0) const uint VS_EA_FACTOR = 0u;
 layout(constant_id = 1) const uint VS_EA_SHADE = 0u;
 layout(constant_id = 2) const uint VS_EA_LIGHTING = 0u; /* VS_EA_LIGHTING_* */
 #define VS_FACTOR_IMAGE
+#define VS_TF_ENTRY_TEXELS
 
 #include "volume_access.glsl"
 
@@ -133,6 +137,29 @@ vec4 light_at(vec3 x)
   return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
 }
 
+/* Empty-space skipping of the composite: a brick whose majorant is 0 (vsMajorantGrid.h) holds no
+ * extinction, so its samples add nothing. At ray distance t (index-space ray oi + t di), the brick
+ * the march enters: if empty, returns where the ray leaves the cube of empty bricks around it (at
+ * chessboard distance k from the nearest non-empty brick, the cube of radius k - 1: brick_walk.h);
+ * else t. tQuery: where the march asks again (the exit of the brick or of the cube). A brick outside
+ * the grid (rounding at the box) is never skipped. */
+float skip_empty(vec3 oi, vec3 di, vec3 invDi, float walkScale, float t, out float tQuery)
+{
+  float brickSize = P.volume.majorantBrickSize;
+  ivec3 bricks = ivec3(P.volume.majorantBricks);
+  float h = vs_walk_min_step(t, walkScale);
+  ivec3 b = vs_brick_after(oi, di, t, h, 1.0 / brickSize);
+  tQuery = vs_brick_cube_exit(oi, di, invDi, t, h, b, 0.0, brickSize);
+  if (any(lessThan(b, ivec3(0))) || any(greaterThanEqual(b, bricks)))
+    return t;
+  vec3 brick = imageLoad(uBricks, b).xyz; /* majorant, control, empty-space distance */
+  if (brick.x != 0.0)
+    return t;
+  if (brick.z > 1.0)
+    tQuery = max(tQuery, vs_brick_cube_exit(oi, di, invDi, t, h, b, brick.z - 1.0, brickSize));
+  return tQuery;
+}
+
 void main()
 {
   uvec2 pix = gl_GlobalInvocationID.xy;
@@ -148,7 +175,7 @@ void main()
   vec4 pf = P.camera.invViewProj * vec4(ndc, 1.0, 1.0);
   vec3 o = pn.xyz / pn.w;
   vec3 d = normalize(pf.xyz / pf.w - o);
-  float depth = uDepth[idx];
+  float depth = texelFetch(uDepth, int(idx)).r;
   float tDepth = 1e30;
   if (depth < 1.0)
   {
@@ -176,25 +203,43 @@ void main()
   if (t.x < t.y)
   {
     float jitter = VS_EA_LIGHTING == VS_EA_LIGHTING_NONE ? vs_rng_float(rng) : 0.5;
-    for (float a = t.x; a < t.y; a += stepSize)
+    bool skip = P.volume.majorantBrickSize > 0.0;
+    vec3 invDi = 1.0 / di;
+    float walkScale = vs_walk_scale(oi, di);
+    float tQuery = t.x; /* where the march next asks the bricks */
+    float a = t.x;
+    while (a < t.y)
     {
+      if (skip && a >= tQuery)
+      {
+        float next = skip_empty(oi, di, invDi, walkScale, a, tQuery);
+        if (next > a)
+        {
+          a = next;
+          continue;
+        }
+      }
       float b = min(a + stepSize, t.y);
       float ts = a + jitter * (b - a);
       vec3 x = oi + ts * di;
       vec4 c = vs_classify(vs_sample(x, dims, P.volume.interpolation), P.volume.tf);
       if (VS_EA_FACTOR == 1u)
         c.w *= vs_sample_factor(x, dims, P.volume.interpolation);
-      if (VS_EA_LIGHTING == VS_EA_LIGHTING_PREVIEW)
-        c.rgb *= light_at(x).rgb * (1.0 / (4.0 * VS_PI));
-      else if (VS_EA_LIGHTING == VS_EA_LIGHTING_AMBIENT_OCCLUSION)
-        c.rgb *= P.lightIntensity * light_at(x).a;
-      else if (VS_EA_SHADE == 1u)
-        c.rgb = shade(x, c.rgb, dims, -d);
-      float A = 1.0 - exp(-c.w * (b - a));
-      color += (1.0 - alpha) * A * c.rgb;
-      alpha += (1.0 - alpha) * A;
-      if (alpha >= P.terminationOpacity)
-        break;
+      if (c.w > 0.0)
+      {
+        if (VS_EA_LIGHTING == VS_EA_LIGHTING_PREVIEW)
+          c.rgb *= light_at(x).rgb * (1.0 / (4.0 * VS_PI));
+        else if (VS_EA_LIGHTING == VS_EA_LIGHTING_AMBIENT_OCCLUSION)
+          c.rgb *= P.lightIntensity * light_at(x).a;
+        else if (VS_EA_SHADE == 1u)
+          c.rgb = shade(x, c.rgb, dims, -d);
+        float A = 1.0 - exp(-c.w * (b - a));
+        color += (1.0 - alpha) * A * c.rgb;
+        alpha += (1.0 - alpha) * A;
+        if (alpha >= P.terminationOpacity)
+          break;
+      }
+      a = b;
     }
   }
   uOut[idx] = vec4(color, alpha);

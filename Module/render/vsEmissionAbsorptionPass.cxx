@@ -7,6 +7,7 @@
 #include "vsDeviceVolume.h"
 #include "vsError.h"
 #include "vsImage.h"
+#include "vsMajorantGrid.h"
 #include "vsPipeline.h"
 #include "vsTransferFunctionTable.h"
 
@@ -44,11 +45,11 @@ const ComputePipeline& EmissionAbsorptionPass::PipelineFor(bool factor, bool sha
     name += factor ? (shade ? " (gradient opacity, shaded)" : " (gradient opacity)") : (shade ? " (shaded)" : "");
     pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_ea_render),
       BindingTypes(shared::VS_EA_BINDING_COUNT,
-        { { shared::VS_EA_VOLUME, BindingType::StorageImage }, { shared::VS_EA_TF, BindingType::StorageBuffer },
-          { shared::VS_EA_PARAMS, BindingType::StorageBuffer }, { shared::VS_EA_DEPTH, BindingType::StorageBuffer },
+        { { shared::VS_EA_VOLUME, BindingType::StorageImage }, { shared::VS_EA_TF, BindingType::UniformTexelBuffer },
+          { shared::VS_EA_PARAMS, BindingType::UniformBuffer }, { shared::VS_EA_DEPTH, BindingType::UniformTexelBuffer },
           { shared::VS_EA_RESULT, BindingType::StorageBuffer },
           { shared::VS_EA_FACTOR_IMAGE, BindingType::StorageImage },
-          { shared::VS_EA_LIGHT, BindingType::StorageImage } }),
+          { shared::VS_EA_LIGHT, BindingType::StorageImage }, { shared::VS_EA_BRICKS, BindingType::StorageImage } }),
       0, name, { factor ? 1u : 0u, shade ? 1u : 0u, lighting });
   }
   return *pipeline;
@@ -62,7 +63,7 @@ static_assert(sizeof(shared::VsEmissionAbsorptionParams) ==
   "VsEmissionAbsorptionParams: rows of 16 bytes (volume_params.h)");
 
 std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
-  const TransferFunctionTable& tf, const shared::VsEmissionAbsorptionParams& inParams, const std::vector<float>& depth,
+  const TransferFunctionTable& tf, const MajorantGrid* majorants, const shared::VsEmissionAbsorptionParams& inParams, const std::vector<float>& depth,
   bool shade, uint32_t lighting, const Image3D* light)
 {
   if (lighting > shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION)
@@ -70,6 +71,14 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
     throw InputError("unknown lighting of the emission-absorption pass: " + std::to_string(lighting));
   }
   shared::VsEmissionAbsorptionParams params = inParams;
+  params.volume.majorantBricks = glm::uvec3(0u);
+  params.volume.majorantBrickSize = 0.0f;
+  if (majorants)
+  {
+    const auto b = majorants->Bricks();
+    params.volume.majorantBricks = glm::uvec3(b[0], b[1], b[2]);
+    params.volume.majorantBrickSize = float(majorants->BrickSize());
+  }
   if (lighting != shared::VS_EA_LIGHTING_NONE)
   {
     if (light)
@@ -122,12 +131,13 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
   const ComputePipeline& pipeline = this->PipelineFor(volume.Factor() != nullptr, shade, lighting);
   DescriptorSet set(pipeline);
   set.Bind(shared::VS_EA_VOLUME, volume.Image())
-    .Bind(shared::VS_EA_TF, tf.Lut())
+    .BindTexels(shared::VS_EA_TF, tf.Lut(), vk::Format::eR32G32B32A32Sfloat)
     .Bind(shared::VS_EA_PARAMS, *this->Params_)
-    .Bind(shared::VS_EA_DEPTH, *this->Depth_)
+    .BindTexels(shared::VS_EA_DEPTH, *this->Depth_, vk::Format::eR32Sfloat)
     .Bind(shared::VS_EA_RESULT, *this->Out_);
   set.Bind(shared::VS_EA_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   set.Bind(shared::VS_EA_LIGHT, lighting != shared::VS_EA_LIGHTING_NONE && light ? *light : *this->NoLight_);
+  set.Bind(shared::VS_EA_BRICKS, majorants ? majorants->TrackingImage() : *this->NoLight_);
   Batch batch(this->Context_);
   batch.BeginTimer("render");
   batch.Dispatch(pipeline, set, nullptr, 0, (w + 7) / 8, (h + 7) / 8, 1);

@@ -19,6 +19,7 @@ class ComputePipeline;
 class Context;
 class DeviceVolume;
 class Image3D;
+class MajorantGrid;
 class TransferFunctionTable;
 
 class VISSWEEPCORE_EXPORT EmissionAbsorptionPass
@@ -27,7 +28,9 @@ public:
   explicit EmissionAbsorptionPass(std::shared_ptr<Context> context);
   ~EmissionAbsorptionPass();
 
-  /** Renders params.camera.width by .height pixels. `depth` has one window depth in [0,1] per pixel
+  /** Renders params.camera.width by .height pixels. `majorants` (of `volume` under `tf`), or nullptr:
+   *  the composite skips the bricks whose majorant is 0 (params.volume's majorant fields are set
+   *  from it; without, nothing is skipped). `depth` has one window depth in [0,1] per pixel
    *  (1 = nothing opaque); empty means no opaque geometry. `shade`: Phong-shade the composite with
    *  params.shading and params.light. Returns RGBA, rows bottom-up.
    *  `lighting` (shared::VS_EA_LIGHTING_*) other than NONE lights the composite from `light`, an
@@ -36,7 +39,7 @@ public:
    *  is then set to one cell). Without NONE, `shade` is ignored. Throws InputError for a light
    *  image whose size is not params.grid.cells. */
   std::vector<float> Render(const DeviceVolume& volume, const TransferFunctionTable& tf,
-    const shared::VsEmissionAbsorptionParams& params, const std::vector<float>& depth, bool shade = false,
+    const MajorantGrid* majorants, const shared::VsEmissionAbsorptionParams& params, const std::vector<float>& depth, bool shade = false,
     uint32_t lighting = shared::VS_EA_LIGHTING_NONE, const Image3D* light = nullptr);
 
   /** Device seconds of the last Render (0 without timestamp support). */
@@ -49,7 +52,7 @@ private:
   std::shared_ptr<Context> Context_;
   std::shared_ptr<ComputePipeline> Pipelines_[2][2][3]; // [factor][shade][lighting]
   std::unique_ptr<Buffer> Params_, Depth_, Out_;
-  std::unique_ptr<Image3D> NoLight_; // the 1-texel placeholder of VS_EA_LIGHT (zero)
+  std::unique_ptr<Image3D> NoLight_; // the 1-texel placeholder of VS_EA_LIGHT and VS_EA_BRICKS (zero)
   double LastSeconds_ = 0.0;
 };
 }

@@ -13,7 +13,7 @@ VS_NAMESPACE_BEGIN
 
 /* The Monte Carlo render kernel (render/mc_resources.glsl, render/vsMonteCarloPass.cxx). */
 VS_CONST uint VS_MC_VOLUME = 0u;         /* r32f image: the scalar volume */
-VS_CONST uint VS_MC_TF = 1u;             /* r32f texel buffer: the transfer function's floats */
+VS_CONST uint VS_MC_TF = 1u;             /* rgba32f texel buffer: the transfer function's entries */
 VS_CONST uint VS_MC_BRICKS = 2u;         /* rgba32f image: majorant, control, empty distance per brick */
 VS_CONST uint VS_MC_VISIBILITY = 3u;     /* the visibility grid (its storage format) */
 VS_CONST uint VS_MC_PARAMS = 4u;         /* storage buffer: VsMonteCarloParams */
@@ -34,14 +34,16 @@ VS_CONST uint VS_MC_BINDING_COUNT = 17u;
 
 /* The emission-absorption pass (render/ea_render.comp, render/vsEmissionAbsorptionPass.cxx). */
 VS_CONST uint VS_EA_VOLUME = 0u;
-VS_CONST uint VS_EA_TF = 1u;             /* storage buffer: the transfer function's vec4 entries */
+VS_CONST uint VS_EA_TF = 1u;             /* rgba32f texel buffer: the transfer function's entries */
 VS_CONST uint VS_EA_PARAMS = 2u;         /* storage buffer: VsEmissionAbsorptionParams */
 VS_CONST uint VS_EA_DEPTH = 3u;
 VS_CONST uint VS_EA_RESULT = 4u;
 VS_CONST uint VS_EA_FACTOR_IMAGE = 5u;
 VS_CONST uint VS_EA_LIGHT = 6u;          /* rgba32f image: the light volume (vsLightVolume.h), read by the lit
                                             modes (VS_EA_LIGHTING_*; a 1-texel placeholder otherwise) */
-VS_CONST uint VS_EA_BINDING_COUNT = 7u;
+VS_CONST uint VS_EA_BRICKS = 7u;         /* rgba32f image: the majorant grid's tracking image, for empty-space
+                                            skipping (a 1-texel placeholder without majorants) */
+VS_CONST uint VS_EA_BINDING_COUNT = 8u;
 
 /* The sweeps' march along each direction (visibility/sweep_march.glsl: the full-resolution volume
  * or, VS_SWEEP_POOLED, the pooled extinction volume and its occupancy). */

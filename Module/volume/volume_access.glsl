@@ -5,6 +5,8 @@
  *   layout(std430, binding = VS_<PASS>_TF) readonly buffer TransferFunction { vec4 uTF[]; };
  * or, with VS_TF_TEXELS defined, the same table as a texel buffer of its floats (r32f texels):
  *   layout(binding = VS_<PASS>_TF) uniform samplerBuffer uTF;
+ * or, with VS_TF_ENTRY_TEXELS defined, as a texel buffer of its entries (rgba32f texels: one fetch
+ * per entry, for passes that read all four channels);
  * (lavapipe loads an r32f texel buffer at per-lane indices with one vector gather per float, a
  * storage buffer with a scalar loop over the SIMD lanes: the render kernel classifies at every
  * tracking step, and its null-collision tests need only the extinction, one float of four).
@@ -114,7 +116,9 @@ float vs_cell_max_factor(ivec3 lo, ivec3 hi)
 /* Float f of the transfer-function table (entry f / 4, channel f % 4; the range-max levels follow). */
 float vs_tf_float(int f)
 {
-#ifdef VS_TF_TEXELS
+#if defined(VS_TF_ENTRY_TEXELS)
+  return texelFetch(uTF, f >> 2)[f & 3];
+#elif defined(VS_TF_TEXELS)
   return texelFetch(uTF, f).r;
 #else
   return uTF[f >> 2][f & 3];
@@ -124,7 +128,9 @@ float vs_tf_float(int f)
 /* Entry i of the transfer-function table: (albedo rgb, extinction). */
 vec4 vs_tf_entry(int i)
 {
-#ifdef VS_TF_TEXELS
+#if defined(VS_TF_ENTRY_TEXELS)
+  return texelFetch(uTF, i);
+#elif defined(VS_TF_TEXELS)
   return vec4(vs_tf_float(4 * i), vs_tf_float(4 * i + 1), vs_tf_float(4 * i + 2), vs_tf_float(4 * i + 3));
 #else
   return uTF[i];

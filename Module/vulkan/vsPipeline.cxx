@@ -19,6 +19,8 @@ vk::DescriptorType ToVk(BindingType t)
       return vk::DescriptorType::eStorageBuffer;
     case BindingType::UniformTexelBuffer:
       return vk::DescriptorType::eUniformTexelBuffer;
+    case BindingType::UniformBuffer:
+      return vk::DescriptorType::eUniformBuffer;
     default:
       return vk::DescriptorType::eStorageImage;
   }
@@ -148,12 +150,19 @@ DescriptorSet::DescriptorSet(const ComputePipeline& pipeline)
   , Bindings_(pipeline.Bindings())
 {
   vk::Device device = this->Context_->Device();
-  uint32_t buffers = 0, images = 0, texels = 0;
+  uint32_t buffers = 0, images = 0, texels = 0, uniforms = 0;
   for (auto b : this->Bindings_)
   {
-    (b == BindingType::StorageBuffer ? buffers : b == BindingType::UniformTexelBuffer ? texels : images)++;
+    (b == BindingType::StorageBuffer        ? buffers
+        : b == BindingType::UniformTexelBuffer ? texels
+        : b == BindingType::UniformBuffer      ? uniforms
+                                               : images)++;
   }
   std::vector<vk::DescriptorPoolSize> sizes;
+  if (uniforms)
+  {
+    sizes.push_back({ vk::DescriptorType::eUniformBuffer, uniforms });
+  }
   if (texels)
   {
     sizes.push_back({ vk::DescriptorType::eUniformTexelBuffer, texels });
@@ -186,17 +195,24 @@ DescriptorSet::~DescriptorSet()
 
 DescriptorSet& DescriptorSet::Bind(uint32_t binding, const Buffer& buffer)
 {
-  if (binding >= this->Bindings_.size() || this->Bindings_[binding] != BindingType::StorageBuffer)
+  const bool uniform = binding < this->Bindings_.size() && this->Bindings_[binding] == BindingType::UniformBuffer;
+  if (binding >= this->Bindings_.size() || (this->Bindings_[binding] != BindingType::StorageBuffer && !uniform))
   {
     throw InputError("pipeline '" + this->PipelineName_ + "' has no storage buffer at binding " +
-      std::to_string(binding) + " (for '" + buffer.Name() + "')");
+      std::to_string(binding) + " (nor a uniform block; for '" + buffer.Name() + "')");
+  }
+  if (uniform && buffer.Size() > this->Context_->Info().MaxUniformBufferRange)
+  {
+    throw DeviceLimitError("buffer '" + buffer.Name() + "' of " + std::to_string(buffer.Size()) +
+      " bytes exceeds the device's maxUniformBufferRange of " +
+      std::to_string(this->Context_->Info().MaxUniformBufferRange) + " bytes (pipeline '" + this->PipelineName_ + "')");
   }
   vk::DescriptorBufferInfo info{ buffer.Handle(), 0, VK_WHOLE_SIZE };
   vk::WriteDescriptorSet w;
   w.dstSet = this->Set_;
   w.dstBinding = binding;
   w.descriptorCount = 1;
-  w.descriptorType = vk::DescriptorType::eStorageBuffer;
+  w.descriptorType = uniform ? vk::DescriptorType::eUniformBuffer : vk::DescriptorType::eStorageBuffer;
   w.pBufferInfo = &info;
   this->Context_->Device().updateDescriptorSets(w, {});
   return *this;

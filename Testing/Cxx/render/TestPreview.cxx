@@ -100,7 +100,7 @@ struct LitBox
   std::vector<float> Render(uint32_t lighting)
   {
     vs::EmissionAbsorptionPass pass(Scene.Context);
-    return pass.Render(*Scene.Volume, *Scene.TF, this->Params, {}, false, lighting, &this->Light.Image());
+    return pass.Render(*Scene.Volume, *Scene.TF, nullptr, this->Params, {}, false, lighting, &this->Light.Image());
   }
 
   static double PixelCentre(uint32_t i) { return Lo + (Hi - Lo) * (i + 0.5) / W; }
@@ -248,12 +248,12 @@ TEST(Preview, MismatchedOrMissingLightVolume)
   vs::EmissionAbsorptionPass pass(box.Scene.Context);
   vs::shared::VsEmissionAbsorptionParams p = box.Params;
   p.grid.cells += glm::uvec3(1u);
-  EXPECT_THROW(pass.Render(*box.Scene.Volume, *box.Scene.TF, p, {}, false, vs::shared::VS_EA_LIGHTING_PREVIEW,
+  EXPECT_THROW(pass.Render(*box.Scene.Volume, *box.Scene.TF, nullptr, p, {}, false, vs::shared::VS_EA_LIGHTING_PREVIEW,
                  &box.Light.Image()),
     vs::InputError);
-  EXPECT_THROW(pass.Render(*box.Scene.Volume, *box.Scene.TF, box.Params, {}, false, 7u, nullptr), vs::InputError);
+  EXPECT_THROW(pass.Render(*box.Scene.Volume, *box.Scene.TF, nullptr, box.Params, {}, false, 7u, nullptr), vs::InputError);
   const std::vector<float> dark =
-    pass.Render(*box.Scene.Volume, *box.Scene.TF, box.Params, {}, false, vs::shared::VS_EA_LIGHTING_PREVIEW, nullptr);
+    pass.Render(*box.Scene.Volume, *box.Scene.TF, nullptr, box.Params, {}, false, vs::shared::VS_EA_LIGHTING_PREVIEW, nullptr);
   for (size_t i = 0; i < dark.size(); i += 4)
   {
     EXPECT_EQ(dark[i], 0.0f);
