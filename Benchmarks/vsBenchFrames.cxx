@@ -75,15 +75,40 @@ int Run(const Options& o)
   objects.Window->Render(); // uploads, majorants, pipelines, one sample per pixel
   const double first = std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count();
   FrameTimes still = Time(objects, o.Frames, false);
+  // Dragging with the preview (the default): its first frame completes the grid and builds the light
+  // volume, then every frame is a preview.
   objects.Window->SetDesiredUpdateRate(15.0); // what vtkRenderWindowInteractor asks while dragging
+  mapper->InteractivePreviewOn();
+  const FrameTimes previewFirst = Time(objects, 1, true);
+  const FrameTimes preview = Time(objects, o.Frames, true);
+  // Still again: the frames until the hand-over from the preview to the estimate ends.
+  objects.Window->SetDesiredUpdateRate(0.0001);
+  int handOverFrames = 0;
+  const auto h0 = std::chrono::steady_clock::now();
+  do
+  {
+    objects.Window->Render();
+    ++handOverFrames;
+  } while (mapper->GetLastPreviewShare() > 0.0 && handOverFrames < 100000);
+  const double handOverSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - h0).count();
+  const int handOverSpp = mapper->GetAccumulatedSamples();
+  // Dragging with Monte Carlo at 1/InteractiveSubsampling resolution.
+  objects.Window->SetDesiredUpdateRate(15.0);
+  mapper->InteractivePreviewOff();
   Time(objects, 1, true);
   FrameTimes moving = Time(objects, o.Frames, true);
+  mapper->InteractivePreviewOn();
 
   std::printf("%s, %d x %d window, %s\n", o.Scene.c_str(), o.Size, o.Size, scene.Render.Strategy.c_str());
   std::printf("the window's first render, without the volume:     %8.1f ms\n", 1e3 * window);
   std::printf("first frame (uploads, majorants, pipelines, 1 spp): %8.1f ms\n", 1e3 * first);
   std::printf("still: full resolution, 1 spp per frame:          %8.1f ms median, %8.1f ms max (%.1f fps)\n",
     1e3 * still.Median, 1e3 * still.Max, 1.0 / still.Median);
+  std::printf("interactive: preview, first drag frame (grid, light): %8.1f ms\n", 1e3 * previewFirst.Median);
+  std::printf("interactive: preview, full resolution, camera moving: %8.1f ms median, %8.1f ms max (%.1f fps)\n",
+    1e3 * preview.Median, 1e3 * preview.Max, 1.0 / preview.Median);
+  std::printf("still again: hand-over from the preview ended after %d frames, %d spp, %.2f s\n", handOverFrames,
+    handOverSpp, handOverSeconds);
   std::printf("interactive: 1/%d resolution, 1 spp, camera moving: %8.1f ms median, %8.1f ms max (%.1f fps)\n",
     mapper->GetInteractiveSubsampling(), 1e3 * moving.Median, 1e3 * moving.Max, 1.0 / moving.Median);
   if (!o.Json.empty())
@@ -91,7 +116,10 @@ int Run(const Options& o)
     nlohmann::json j = { { "scene", o.Scene }, { "size", o.Size }, { "first_frame_seconds", first }, { "window_first_render_seconds", window },
       { "still_median_seconds", still.Median }, { "still_max_seconds", still.Max },
       { "interactive_median_seconds", moving.Median }, { "interactive_max_seconds", moving.Max },
-      { "interactive_subsampling", mapper->GetInteractiveSubsampling() } };
+      { "interactive_subsampling", mapper->GetInteractiveSubsampling() },
+      { "preview_first_drag_seconds", previewFirst.Median }, { "preview_median_seconds", preview.Median },
+      { "preview_max_seconds", preview.Max }, { "hand_over_frames", handOverFrames }, { "hand_over_spp", handOverSpp },
+      { "hand_over_seconds", handOverSeconds } };
     std::ofstream(o.Json) << j.dump(2) << "\n";
   }
   return 0;

@@ -76,10 +76,13 @@ void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, 
 // The light volume is made again only when the grid's values, the environment or its intensity
 // change, never for a camera move. A volume without extinction (or cropped away) needs neither: its
 // lit image is transparent, and the preview shows the environment alone.
-void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol)
+void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol, bool preview, bool interactive)
 {
   Internals& I = *this->Impl;
-  const bool preview = this->RenderMode == Preview;
+  if (interactive)
+  {
+    I.SwitchView(ren); // the view whose accumulation restarts once it is still
+  }
   const vs::VolumeGeometry geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
   const bool croppedAway = glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax));
   vs::CameraView view = vs::FrameGeometry::MakeView(ren);
@@ -125,6 +128,10 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol)
   {
     p.step = float(geometry.MinSpacing);
   }
+  if (interactive)
+  {
+    p.step *= 2.0f; // 3.06e-2 at two voxels (above); as vtkGPUVolumeRayCastMapper samples more coarsely while interacting
+  }
   if (!I.EA)
   {
     I.EA = std::make_unique<vs::EmissionAbsorptionPass>(I.Context);
@@ -133,7 +140,7 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol)
     preview ? vs::shared::VS_EA_LIGHTING_PREVIEW : vs::shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION,
     grid ? &I.Light->Image() : nullptr);
   this->LastDeviceSeconds = I.EA->LastSeconds();
-  this->LastRenderComplete = true;
+  this->LastRenderComplete = !interactive; // the Monte Carlo mode's image is still to come
   if (!preview)
   {
     vs::WindowCompositor::Draw(ren, vp, rgba); // as the emission-absorption image
@@ -151,9 +158,10 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol)
   const bool behind = asBackground && vs::EnvironmentBackground::InFrame(ren);
   const bool paints = this->EnvironmentVisible && !behind && vs::RendererFrame::Claim(ren, this);
   std::vector<uint8_t> environmentPixels;
+  std::vector<float> environment;
   if (asBackground || paints)
   {
-    const std::vector<float> environment = vs::CoverageComposite::EnvironmentRadiance(
+    environment = vs::CoverageComposite::EnvironmentRadiance(
       I.Environment.Map(), p.camera.invViewProj, w, h, float(this->EnvironmentIntensity));
     environmentPixels.assign(size_t(w) * h, 0);
     for (size_t i = 0; i < environmentPixels.size(); ++i)
@@ -170,16 +178,32 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol)
       }
     }
   }
-  if (!I.Radiance)
+  if (interactive)
   {
-    I.Radiance = vtkSmartPointer<vtkImageData>::New();
+    // GetRadiance() stays the view's estimate; the accumulation restarts once the view is still, and
+    // the window hands over from this image to it (vsPreviewHandOver.h).
+    I.HandOver.Rgba = rgba;
+    I.HandOver.Width = w;
+    I.HandOver.Height = h;
+    I.HandOver.Pending = true;
+    I.HandOver.Active = false;
+    I.ImageSignature.clear();
+    this->AccumulatedSamples = 0;
+    this->LastPreviewShare = 1.0;
   }
-  vs::RadianceImage::Fill(I.Radiance, rgba, w, h, environmentPixels, 1.0f);
-  I.EnvironmentPixels = environmentPixels;
+  else
+  {
+    if (!I.Radiance)
+    {
+      I.Radiance = vtkSmartPointer<vtkImageData>::New();
+    }
+    vs::RadianceImage::Fill(I.Radiance, rgba, w, h, environmentPixels, 1.0f);
+    I.EnvironmentPixels = environmentPixels;
+  }
   const bool composite = asBackground && !paints;
   if (composite)
   {
-    I.Composite.UpdateBackground(I.Environment.Map(), p.camera.invViewProj, w, h,
+    I.Composite.UpdateBackground(environment, float(this->Exposure), p.camera.invViewProj, w, h,
       float(this->EnvironmentIntensity * this->Exposure), this->ToneMapping, this->EnvironmentUploadCount);
   }
   vs::WindowCompositor::Draw(

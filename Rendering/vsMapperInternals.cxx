@@ -31,6 +31,7 @@ void vtkVisibilitySweepVolumeMapper::Internals::SwitchView(vtkRenderer* ren)
   this->MCGrid.reset();
   this->Interactive.reset();
   this->ImageSignature.clear();
+  this->HandOver = PreviewImage();
   this->Selector = vs::StrategySelector();
   for (auto it = this->OtherViews.begin(); it != this->OtherViews.end(); ++it)
   {
@@ -67,6 +68,7 @@ bool vtkVisibilitySweepVolumeMapper::Internals::ReleaseViewsOf(vtkWindow* win)
     this->MCGrid.reset();
     this->Interactive.reset();
     this->ImageSignature.clear();
+    this->HandOver = PreviewImage();
     this->Selector = vs::StrategySelector();
     this->CurrentView = nullptr;
     this->HasCurrentView = false;

@@ -73,6 +73,16 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   std::vector<uint8_t> EnvironmentPixels;
   vs::CoverageComposite Composite; // the display image, over the environment's display colour
   vtkSmartPointer<vtkImageData> VisibilityImage;
+  // The hand-over from the preview drawn while dragging to the accumulation once the view is still
+  // (vsPreviewHandOver.h): the last interactive preview of the current view (rgba as the Monte Carlo
+  // mean), Pending until the accumulation restarts for the still view, then Active while its share
+  // is shown. Any other restart, an interactive Monte Carlo frame or another view ends it.
+  struct PreviewImage
+  {
+    std::vector<float> Rgba;
+    uint32_t Width = 0, Height = 0;
+    bool Pending = false, Active = false;
+  } HandOver;
   // One accumulator per renderer (two views of one volume): MC, MCGrid, Interactive, ImageSignature
   // and Selector above are the current view's; the other views' wait here (SwitchView).
   struct View

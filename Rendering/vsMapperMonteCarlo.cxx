@@ -12,6 +12,7 @@
 #include "vsPipelinePrewarm.h"
 #include "vsCombinedAccumulators.h"
 #include "vsRadianceImage.h"
+#include "vsPreviewHandOver.h"
 #include "vsMapperEnvironment.h"
 #include "vsGridSchedule.h"
 #include "vsEmissionAbsorptionFrame.h"
@@ -133,8 +134,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     win->GetTileScale(tileScale);
   }
   const bool tiled = tileScale[0] > 1 || tileScale[1] > 1;
-  const bool interactive = !tiled && this->InteractiveUpdateRate > 0.0 && win &&
-    win->GetDesiredUpdateRate() >= this->InteractiveUpdateRate;
+  const bool interactive = this->IsInteractiveFrame(ren);
   const int sub = interactive ? this->InteractiveSubsampling : 1;
   vs::Viewport vp = view.Port;
   if (vp.Width <= 0 || vp.Height <= 0)
@@ -259,6 +259,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     pass = I.Interactive.get();
     pass->Reset(w, h);
     I.ImageSignature.clear(); // refine from scratch once the view is still
+    I.HandOver = Internals::PreviewImage(); // no preview to hand over from
   }
   else if (tiled)
   {
@@ -305,6 +306,10 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       I.Selector.Reset();
       I.ImageSignature = signature;
       ++this->AccumulationResetCount;
+      // The restart for the view the preview showed while dragging starts the hand-over; any other
+      // restart (a new transfer function, say) ends it: the preview is of another image.
+      I.HandOver.Active = I.HandOver.Pending;
+      I.HandOver.Pending = false;
     }
     pass = gridFrame && autoStrategy ? I.MCGrid.get() : I.MC.get();
     if (pass == I.MCGrid.get())
@@ -401,6 +406,27 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     vs::RadianceImage::Fill(I.Radiance, mean, w, h, environmentPixels, opaqueAlpha);
     I.EnvironmentPixels = environmentPixels;
   }
+  // After an interactive preview: the window shows the blend of least expected error of the estimate
+  // and the preview until the preview's share falls below PreviewHandOver::EndShare.
+  this->LastPreviewShare = 0.0;
+  if (I.HandOver.Active && !interactive && !tiled)
+  {
+    const uint32_t n = this->AccumulatedSamplesOf(autoStrategy);
+    double share = 0.0;
+    if (I.HandOver.Width == w && I.HandOver.Height == h && n < uint32_t(this->MaximumSamples))
+    {
+      share = vs::PreviewHandOver::PreviewShare(I.HandOver.Rgba, mean, this->CombinedVariance(autoStrategy), n);
+    }
+    if (share < vs::PreviewHandOver::EndShare)
+    {
+      I.HandOver = Internals::PreviewImage(); // from now on the estimate as it is
+    }
+    else
+    {
+      vs::PreviewHandOver::Blend(mean, I.HandOver.Rgba, share);
+      this->LastPreviewShare = share;
+    }
+  }
   // Composited over the background: the environment's display colour behind each pixel (made again
   // only when the view, the environment or the display transform changed).
   const float exposure = float(this->Exposure);
@@ -422,4 +448,16 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     vs::WindowCompositor::DrawScaled(ren, vp, display, int(w), int(h));
   }
   (void)vol;
+}
+
+bool vtkVisibilitySweepVolumeMapper::IsInteractiveFrame(vtkRenderer* ren) const
+{
+  vtkRenderWindow* win = ren ? ren->GetRenderWindow() : nullptr;
+  if (!win || this->InteractiveUpdateRate <= 0.0)
+  {
+    return false;
+  }
+  int tileScale[2] = { 1, 1 };
+  win->GetTileScale(tileScale);
+  return tileScale[0] <= 1 && tileScale[1] <= 1 && win->GetDesiredUpdateRate() >= this->InteractiveUpdateRate;
 }

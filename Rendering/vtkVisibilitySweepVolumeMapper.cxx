@@ -249,7 +249,11 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     }
     else if (this->RenderMode == Preview || this->RenderMode == AmbientOcclusion)
     {
-      this->RenderLit(ren, vol);
+      this->RenderLit(ren, vol, this->RenderMode == Preview, false);
+    }
+    else if (this->InteractivePreview && this->IsInteractiveFrame(ren))
+    {
+      this->RenderLit(ren, vol, true, true); // the preview while the user drags
     }
     else
     {
@@ -509,6 +513,8 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ToneMapping: " << (this->ToneMapping ? "On" : "Off") << "\n";
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "InteractiveSubsampling: " << this->InteractiveSubsampling << "\n";
+  os << indent << "InteractivePreview: " << (this->InteractivePreview ? "On" : "Off") << "\n";
+  os << indent << "LastPreviewShare: " << this->LastPreviewShare << "\n";
   os << indent << "SampleDistance: " << this->SampleDistance
      << " (EmissionAbsorption, Preview and AmbientOcclusion: MonteCarlo tracking is exact and needs no step)\n";
   os << indent << "DensityScale: " << this->DensityScale << "\n";

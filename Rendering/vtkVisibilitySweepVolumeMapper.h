@@ -358,13 +358,28 @@ public:
   ///@}
 
   ///@{
-  /** Interaction: while the render window's desired update rate is at least this (VTK raises it
-   *  while the user drags), render 1 sample per pixel at 1/InteractiveSubsampling resolution
-   *  without accumulating; refine at full resolution once the view is still. */
+  /** Interaction in the MonteCarlo mode: while the render window's desired update rate is at least
+   *  InteractiveUpdateRate (VTK raises it while the user drags), nothing accumulates. With
+   *  InteractivePreview on (the default) each frame is the Preview at full resolution, marched at
+   *  twice its still step (as vtkGPUVolumeRayCastMapper lengthens its sample distance while
+   *  interacting); the first such frame sweeps the whole visibility grid if it is not yet complete.
+   *  Off: 1 sample per pixel at 1/InteractiveSubsampling resolution. Once the view is still the
+   *  Monte Carlo accumulation starts again (one restart, GetAccumulationResetCount()) and, after a
+   *  preview, the window shows the blend (1 - s) x estimate + s x preview of least expected error:
+   *  s = V / (V + B), V the estimate's variance, B the preview's squared bias measured as the two
+   *  images' mean squared difference less V. s falls as samples come in; below 0.05 the hand-over
+   *  ends and the estimate is shown as it is (GetLastPreviewShare() is then 0). GetRadiance() is
+   *  always the estimate alone. */
   vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(InteractiveUpdateRate, double);
   vtkSetClampMacro(InteractiveSubsampling, int, 1, 16);
   vtkGetMacro(InteractiveSubsampling, int);
+  vtkSetMacro(InteractivePreview, bool);
+  vtkGetMacro(InteractivePreview, bool);
+  vtkBooleanMacro(InteractivePreview, bool);
+  /** The preview's share s in the image shown last (1 for an interactive preview frame, 0 when
+   *  the Monte Carlo estimate is shown alone). */
+  vtkGetMacro(LastPreviewShare, double);
   ///@}
 
   /** Samples per pixel accumulated so far (Monte Carlo) in the view rendered last. Each renderer
@@ -630,6 +645,8 @@ protected:
   bool ToneMapping = true;
   double InteractiveUpdateRate = 1.0;
   int InteractiveSubsampling = 4;
+  bool InteractivePreview = true;
+  double LastPreviewShare = 0.0;
   int AccumulatedSamples = 0;
   bool LastRenderComplete = false; // the last render was emission-absorption or a projection
   int VisibilityUpdateCount = 0;
@@ -668,8 +685,13 @@ private:
   std::vector<float> EmissionAbsorptionImage(vtkRenderer* ren, vtkVolume* vol);
   void RenderSelection(vtkRenderer* ren, vtkVolume* vol);
   void RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol);
-  /** Preview and AmbientOcclusion: the emission-absorption pass lit from the light volume. */
-  void RenderLit(vtkRenderer* ren, vtkVolume* vol);
+  /** Preview (`preview`) and AmbientOcclusion: the emission-absorption pass lit from the light
+   *  volume. `interactive`: a preview frame while the user drags in the MonteCarlo mode (twice the
+   *  step; GetRadiance() is left as it is, the image kept for the hand-over). */
+  void RenderLit(vtkRenderer* ren, vtkVolume* vol, bool preview, bool interactive);
+  /** Whether this frame of `ren` is an interactive one (the window's desired update rate at least
+   *  InteractiveUpdateRate, not a tile of a tiled render). */
+  bool IsInteractiveFrame(vtkRenderer* ren) const;
   /** Port 1's environment (or the white sky) on the device at DirectionResolution. */
   void UpdateEnvironmentInput();
   /** Starts making the first frame's render pipeline on another thread (the scene's conversion
