@@ -6,6 +6,10 @@
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -19,6 +23,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <stdexcept>
@@ -36,7 +42,7 @@ struct PreviewOptions
   int ReferenceSpp = 1024;
   int Repeats = 3;
   double SampleDistance = 0.0;
-  std::string Json;
+  std::string Json, ContactSheet, Plot;
 };
 
 double SecondsSince(std::chrono::steady_clock::time_point start)
@@ -81,6 +87,52 @@ double RelativeMSE(const std::vector<double>& x, const std::vector<double>& ref)
   return den > 0.0 ? num / den : std::nan("");
 }
 
+// The window as shown (rgb, rows bottom-up), without rendering it again.
+std::vector<unsigned char> WindowImage(vtkRenderWindow* win)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(win);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->Update();
+  vtkDataArray* a = grab->GetOutput()->GetPointData()->GetScalars();
+  std::vector<unsigned char> out(size_t(a->GetNumberOfTuples()) * 3);
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      out[3 * size_t(i) + c] = static_cast<unsigned char>(a->GetComponent(i, c));
+    }
+  }
+  return out;
+}
+
+// The images (each size x size rgb) side by side, left to right, as a PNG.
+void WriteContactSheet(const std::string& path, const std::vector<std::vector<unsigned char>>& images, int size)
+{
+  vtkNew<vtkImageData> sheet;
+  sheet->SetDimensions(size * int(images.size()), size, 1);
+  sheet->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* out = static_cast<unsigned char*>(sheet->GetScalarPointer());
+  const size_t row = size_t(size) * images.size() * 3;
+  for (size_t k = 0; k < images.size(); ++k)
+  {
+    for (int y = 0; y < size && images[k].size() == size_t(size) * size * 3; ++y)
+    {
+      std::copy_n(images[k].data() + size_t(y) * size * 3, size_t(size) * 3, out + y * row + k * size_t(size) * 3);
+    }
+  }
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(sheet);
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    throw std::runtime_error("--contact-sheet " + path + ": cannot write");
+  }
+}
+
 void CheckRender(vtkVisibilitySweepVolumeMapper* mapper)
 {
   const char* error = mapper->GetLastError();
@@ -112,6 +164,7 @@ int Run(const PreviewOptions& o)
   vtkCamera* camera = objects.Renderer->GetActiveCamera();
   std::vector<Row> rows;
   std::vector<std::vector<double>> images;
+  std::vector<std::vector<unsigned char>> shown; // the window after each mode, for the contact sheet
 
   // A deterministic mode: its first frame, then the median of `Repeats` frames after small camera moves.
   auto deterministic = [&](const char* name, int mode, bool shade) {
@@ -144,6 +197,7 @@ int Run(const PreviewOptions& o)
     r.DeviceSeconds = device.empty() ? mapper->GetLastDeviceSeconds() : device[device.size() / 2];
     rows.push_back(r);
     images.push_back(mode == vtkVisibilitySweepVolumeMapper::Preview ? Radiance(mapper) : std::vector<double>());
+    shown.push_back(WindowImage(objects.Window));
     std::printf("  %-28s first frame %.3f s, frame %.3f s (device %.3f s)\n", name, r.FirstSeconds, r.FrameSeconds,
       r.DeviceSeconds);
     std::fflush(stdout);
@@ -186,10 +240,12 @@ int Run(const PreviewOptions& o)
     r.FrameSeconds = mc.second;
     rows.push_back(r);
     images.push_back(mc.first);
+    shown.push_back(WindowImage(objects.Window));
     std::printf("  %-28s %.3f s\n", r.Mode.c_str(), r.FrameSeconds);
     std::fflush(stdout);
   }
   const auto reference = monteCarlo(o.ReferenceSpp, 7919);
+  shown.push_back(WindowImage(objects.Window));
   std::printf("  reference: Monte Carlo %d spp in %.1f s\n", o.ReferenceSpp, reference.second);
   objects.Property->SetShade(shaded ? 1 : 0);
 
@@ -231,15 +287,32 @@ int Run(const PreviewOptions& o)
   }
   std::printf("(Monte Carlo: the accumulation's wall time; emission-absorption, Phong and ambient occlusion are not "
               "estimates of the scattered radiance: no error)\n");
-  if (!o.Json.empty())
+  const std::string json = !o.Json.empty() ? o.Json : !o.Plot.empty() ? o.Plot + ".json" : std::string();
+  if (!json.empty())
   {
-    std::ofstream out(o.Json);
+    std::ofstream out(json);
     out << report.dump(2) << "\n";
     if (!out)
     {
-      throw std::runtime_error("--json " + o.Json + ": cannot write");
+      throw std::runtime_error("--json " + json + ": cannot write");
     }
-    std::printf("wrote %s\n", o.Json.c_str());
+    std::printf("wrote %s\n", json.c_str());
+  }
+  if (!o.ContactSheet.empty())
+  {
+    WriteContactSheet(o.ContactSheet, shown, o.Size);
+    std::printf("wrote %s (left to right: the modes in the table's order, then the reference)\n", o.ContactSheet.c_str());
+  }
+  if (!o.Plot.empty())
+  {
+    // matplotlib (python3-matplotlib) draws it from the JSON.
+    const std::string script = (std::filesystem::path(BenchmarksDir()) / "plot_preview.py").string();
+    const std::string cmd = "/usr/bin/python3 '" + script + "' '" + json + "' '" + o.Plot + "'";
+    if (std::system(cmd.c_str()) != 0)
+    {
+      throw std::runtime_error("plotting failed: " + cmd);
+    }
+    std::printf("wrote %s\n", o.Plot.c_str());
   }
   return 0;
 }
@@ -260,6 +333,8 @@ void AddBenchPreview(CLI::App& bench)
       "the deterministic modes' ray-marching step in world units (default 0: the mapper's default)")
     ->check(CLI::Range(0.0, 1e30));
   cmd->add_option("--json", o->Json, "write the table as JSON");
+  cmd->add_option("--contact-sheet", o->ContactSheet, "write the window after each mode side by side to this PNG");
+  cmd->add_option("--plot", o->Plot, "draw error against frame time (log-log) to this PNG (matplotlib)");
   SetCommandRun(cmd, [o]() { return Run(*o); });
 }
 }

@@ -43,7 +43,13 @@ def main():
     ap.add_argument("--environment", default=os.path.join(os.path.dirname(__file__), "..", "..", "Data",
                                                           "envmaps", "sunrise.exr"))
     ap.add_argument("--strategy", default="TwoStep",
-                    choices=["Uniform", "Environment", "Visibility", "Combined", "TwoStep"])
+                    choices=["Uniform", "Environment", "Visibility", "Combined", "TwoStep", "Auto"])
+    ap.add_argument("--rotation", type=float, default=200.0, help="environment rotation about the up axis, degrees")
+    ap.add_argument("--seconds", type=float, default=0.0,
+                    help="stop refining after this many seconds even below --spp (0: no limit)")
+    ap.add_argument("--preview-first", action="store_true",
+                    help="start from the noise-free preview and hand over to the estimate as it converges "
+                         "(the image shown blends the two by their measured errors; see README)")
     ap.add_argument("--emission-absorption", action="store_true")
     ap.add_argument("--interactive", action="store_true")
     args = ap.parse_args()
@@ -64,7 +70,7 @@ def main():
     else:
         environment = vissweep.vtkEnvironmentMapReader()
         environment.SetFileName(args.environment)
-        environment.SetRotationDegrees(200)
+        environment.SetRotationDegrees(args.rotation)
         mapper.SetEnvironmentConnection(environment.GetOutputPort())
         getattr(mapper, "SetSamplingStrategyTo" + args.strategy)()
         mapper.SetSamplesPerFrame(8)
@@ -104,6 +110,15 @@ def main():
         return
 
     t = time.perf_counter()
+    if args.preview_first and not args.emission_absorption:
+        # One frame as while the user drags: the preview (the visibility grid, its light volume and a
+        # deterministic march); the still frames after it hand over from it to the estimate.
+        win.SetDesiredUpdateRate(15.0)
+        win.Render()
+        if mapper.GetLastError():
+            raise SystemExit(f"render failed: {mapper.GetLastError()}")
+        print(f"preview in {time.perf_counter() - t:.2f} s")
+        win.SetDesiredUpdateRate(0.0001)
     first = True
     while True:
         win.Render()
@@ -114,8 +129,17 @@ def main():
             first = False
         if args.emission_absorption or mapper.IsConverged():
             break
+        if args.seconds > 0 and time.perf_counter() - t >= args.seconds:
+            break
         print(f"\r{mapper.GetAccumulatedSamples()}/{args.spp} samples per pixel", end="", flush=True)
-    print(f"\nrendered {args.size}x{args.size} in {time.perf_counter() - t:.2f} s")
+    seconds = time.perf_counter() - t
+    if args.emission_absorption:
+        print(f"\nrendered {args.size}x{args.size} in {seconds:.2f} s")
+    else:
+        share = mapper.GetLastPreviewShare()
+        shown = f", shown blended with the preview (its share {share:.2f})" if share > 0 else ""
+        print(f"\nrendered {args.size}x{args.size}: {mapper.GetAccumulatedSamples()} spp "
+              f"({mapper.GetEffectiveStrategyAsString()}) in {seconds:.2f} s{shown}")
     grab = vtk.vtkWindowToImageFilter()
     grab.SetInput(win)
     writer = vtk.vtkPNGWriter()
