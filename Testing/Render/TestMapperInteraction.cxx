@@ -10,7 +10,6 @@
 #include "vtkCamera.h"
 #include "vtkEnvironmentMapReader.h"
 #include "vtkImageData.h"
-#include "vtkImageShrink3D.h"
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -40,17 +39,10 @@ void Drag(vtkRenderWindow* win, vtkCamera* cam, int frames)
 
 int TestMapperInteraction(int argc, char* argv[])
 {
-  auto full = vstest::ReadBrain(vstest::Argument(argc, argv, "-D"));
-  vtkNew<vtkImageShrink3D> shrink;
-  shrink->SetInputData(full);
-  shrink->SetShrinkFactors(4, 4, 4);
-  shrink->AveragingOn();
-  shrink->Update();
-  vtkNew<vtkEnvironmentMapReader> env;
-  env->SetFileName((std::string(VISSWEEP_DATA) + "/envmaps/sunrise.exr").c_str());
-  env->SetOctahedralSize(128);
+  auto brain = vstest::ShrunkBrain(vstest::Argument(argc, argv, "-D"), 4);
+  auto env = vstest::SunriseEnvironment();
   vtkNew<vtkVisibilitySweepVolumeMapper> mapper;
-  mapper->SetInputConnection(shrink->GetOutputPort());
+  mapper->SetInputData(brain);
   mapper->SetEnvironmentConnection(env->GetOutputPort());
   mapper->SetRenderModeToMonteCarlo();
   mapper->SetSamplesPerFrame(4);

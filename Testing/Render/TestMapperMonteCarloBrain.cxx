@@ -7,7 +7,6 @@
 #include "vtkCamera.h"
 #include "vtkEnvironmentMapReader.h"
 #include "vtkImageData.h"
-#include "vtkImageShrink3D.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkDataArray.h"
@@ -22,17 +21,10 @@
 
 int RenderMonteCarloBrain(int argc, char* argv[], bool clip)
 {
-  auto full = vstest::ReadBrain(vstest::Argument(argc, argv, "-D"));
-  vtkNew<vtkImageShrink3D> shrink;
-  shrink->SetInputData(full);
-  shrink->SetShrinkFactors(2, 2, 2);
-  shrink->AveragingOn();
-  shrink->Update(); // so that ResetCamera sees the volume's bounds
-  vtkNew<vtkEnvironmentMapReader> env;
-  env->SetFileName((std::string(VISSWEEP_DATA) + "/envmaps/sunrise.exr").c_str());
-  env->SetOctahedralSize(128);
+  auto brain = vstest::ShrunkBrain(vstest::Argument(argc, argv, "-D"), 2);
+  auto env = vstest::SunriseEnvironment();
   vtkNew<vtkVisibilitySweepVolumeMapper> mapper;
-  mapper->SetInputConnection(shrink->GetOutputPort());
+  mapper->SetInputData(brain);
   mapper->SetEnvironmentConnection(env->GetOutputPort());
   mapper->SetSamplingStrategyToTwoStep();
   mapper->SetSeed(3);

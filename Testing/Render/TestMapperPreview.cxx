@@ -8,10 +8,9 @@
 #include "vtkVisibilitySweepVolumeMapper.h"
 
 #include "vtkCamera.h"
-#include "vtkDataArray.h"
 #include "vtkEnvironmentMapReader.h"
+#include "vtkDataArray.h"
 #include "vtkImageData.h"
-#include "vtkImageShrink3D.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
@@ -84,17 +83,10 @@ static int TestEmptyVolume(vtkVisibilitySweepVolumeMapper* mapper, vtkVolume* vo
 
 int TestMapperPreview(int argc, char* argv[])
 {
-  auto full = vstest::ReadBrain(vstest::Argument(argc, argv, "-D"));
-  vtkNew<vtkImageShrink3D> shrink;
-  shrink->SetInputData(full);
-  shrink->SetShrinkFactors(4, 4, 4);
-  shrink->AveragingOn();
-  shrink->Update();
-  vtkNew<vtkEnvironmentMapReader> env;
-  env->SetFileName((std::string(VISSWEEP_DATA) + "/envmaps/sunrise.exr").c_str());
-  env->SetOctahedralSize(128);
+  auto brain = vstest::ShrunkBrain(vstest::Argument(argc, argv, "-D"), 4);
+  auto env = vstest::SunriseEnvironment();
   vtkNew<vtkVisibilitySweepVolumeMapper> mapper;
-  mapper->SetInputConnection(shrink->GetOutputPort());
+  mapper->SetInputData(brain);
   mapper->SetEnvironmentConnection(env->GetOutputPort());
   mapper->SetRenderModeToPreview();
   vtkNew<vstest::ErrorRecorder> errors;

@@ -1,8 +1,10 @@
 #include "vsRenderTestUtilities.h"
 
 #include "vtkColorTransferFunction.h"
+#include "vtkEnvironmentMapReader.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkImageShrink3D.h"
 #include "vtkNIFTIImageReader.h"
 #include "vtkNew.h"
 #include "vtkObject.h"
@@ -139,6 +141,25 @@ vtkSmartPointer<vtkImageData> ReadBrain(const std::string& path)
   reader->Update();
   vtkSmartPointer<vtkImageData> image = reader->GetOutput();
   return image;
+}
+
+vtkSmartPointer<vtkImageData> ShrunkBrain(const std::string& path, int factor)
+{
+  vtkNew<vtkImageShrink3D> shrink;
+  shrink->SetInputData(ReadBrain(path));
+  shrink->SetShrinkFactors(factor, factor, factor);
+  shrink->AveragingOn();
+  shrink->Update();
+  vtkSmartPointer<vtkImageData> image = shrink->GetOutput();
+  return image;
+}
+
+vtkSmartPointer<vtkEnvironmentMapReader> SunriseEnvironment()
+{
+  auto env = vtkSmartPointer<vtkEnvironmentMapReader>::New();
+  env->SetFileName((std::string(VISSWEEP_DATA) + "/envmaps/sunrise.exr").c_str());
+  env->SetOctahedralSize(128);
+  return env;
 }
 
 vtkSmartPointer<vtkVolumeProperty> BrainProperty()

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+class vtkEnvironmentMapReader;
 class vtkImageData;
 class vtkObject;
 class vtkRenderWindow;
@@ -22,6 +23,12 @@ std::string Argument(int argc, char* argv[], const char* flag);
 
 /** Colin27 (ch2.nii.gz) as read by vtkNIFTIImageReader. */
 vtkSmartPointer<vtkImageData> ReadBrain(const std::string& path);
+
+/** Colin27 shrunk `factor` times per axis (averaging), updated so that ResetCamera sees its bounds. */
+vtkSmartPointer<vtkImageData> ShrunkBrain(const std::string& path, int factor);
+
+/** The CC0 sunrise HDRI (Data/envmaps) converted at 128^2: the MRI tests' environment. */
+vtkSmartPointer<vtkEnvironmentMapReader> SunriseEnvironment();
 
 /** A fixed skin-and-brain transfer function for ch2 (0..255). */
 vtkSmartPointer<vtkVolumeProperty> BrainProperty();
