@@ -208,6 +208,16 @@ void main()
     float walkScale = vs_walk_scale(oi, di);
     float tQuery = t.x; /* where the march next asks the bricks */
     float a = t.x;
+    /* Across the empty space in front of the volume first, in a loop of its own: lavapipe runs every
+       lane through both paths of a divergent loop body, so lanes still in the air would otherwise
+       pay for their neighbours' samples, and these for the air's brick walk. */
+    while (skip && a < t.y)
+    {
+      float next = skip_empty(oi, di, invDi, walkScale, a, tQuery);
+      if (!(next > a))
+        break;
+      a = next;
+    }
     while (a < t.y)
     {
       if (skip && a >= tQuery)
