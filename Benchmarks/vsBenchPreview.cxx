@@ -177,20 +177,19 @@ int Run(const PreviewOptions& o)
     r.FirstSeconds = SecondsSince(start);
     CheckRender(mapper);
     std::vector<double> frames, device;
+    // A new camera every frame, as while dragging (a camera that comes back to an earlier position
+    // could find device state of that frame, e.g. a driver's shader variants, and time it as free).
     for (int i = 0; i < o.Repeats; ++i)
     {
-      camera->Azimuth(i % 2 ? -0.5 : 0.5);
+      camera->Azimuth(0.5);
       start = std::chrono::steady_clock::now();
       objects.Window->Render();
       frames.push_back(SecondsSince(start));
       device.push_back(mapper->GetLastDeviceSeconds());
       CheckRender(mapper);
     }
-    if (o.Repeats % 2)
-    {
-      camera->Azimuth(-0.5);
-      objects.Window->Render();
-    }
+    camera->Azimuth(-0.5 * o.Repeats); // back where the mode started, for the image and the next mode
+    objects.Window->Render();
     std::sort(frames.begin(), frames.end());
     std::sort(device.begin(), device.end());
     r.FrameSeconds = frames.empty() ? r.FirstSeconds : frames[frames.size() / 2];

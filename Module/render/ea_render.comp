@@ -32,7 +32,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = VS_EA_VOLUME, r32f) uniform readonly image3D uVolume;
 layout(binding = VS_EA_TF) uniform samplerBuffer uTF; /* the table's entries (volume_access.glsl) */
-layout(std140, binding = VS_EA_PARAMS) uniform Params { VsEmissionAbsorptionParams P; };
+layout(std430, binding = VS_EA_PARAMS) readonly buffer Params { VsEmissionAbsorptionParams P; };
 layout(binding = VS_EA_DEPTH) uniform samplerBuffer uDepth; /* r32f texels, one per pixel */
 layout(std430, binding = VS_EA_RESULT) writeonly buffer Result { vec4 uOut[]; };
 layout(binding = VS_EA_FACTOR_IMAGE, r32f) uniform readonly image3D uFactor; /* read only with VS_EA_FACTOR */

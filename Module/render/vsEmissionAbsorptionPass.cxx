@@ -46,7 +46,7 @@ const ComputePipeline& EmissionAbsorptionPass::PipelineFor(bool factor, bool sha
     pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_ea_render),
       BindingTypes(shared::VS_EA_BINDING_COUNT,
         { { shared::VS_EA_VOLUME, BindingType::StorageImage }, { shared::VS_EA_TF, BindingType::UniformTexelBuffer },
-          { shared::VS_EA_PARAMS, BindingType::UniformBuffer }, { shared::VS_EA_DEPTH, BindingType::UniformTexelBuffer },
+          { shared::VS_EA_PARAMS, BindingType::StorageBuffer }, { shared::VS_EA_DEPTH, BindingType::UniformTexelBuffer },
           { shared::VS_EA_RESULT, BindingType::StorageBuffer },
           { shared::VS_EA_FACTOR_IMAGE, BindingType::StorageImage },
           { shared::VS_EA_LIGHT, BindingType::StorageImage }, { shared::VS_EA_BRICKS, BindingType::StorageImage } }),

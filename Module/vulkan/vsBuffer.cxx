@@ -114,7 +114,6 @@ Buffer::Buffer(std::shared_ptr<Context> context, uint64_t bytes, const std::stri
   vk::BufferCreateInfo ci;
   ci.size = bytes;
   ci.usage = vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eUniformTexelBuffer |
-    vk::BufferUsageFlagBits::eUniformBuffer |
     vk::BufferUsageFlagBits::eTransferSrc | vk::BufferUsageFlagBits::eTransferDst;
   ci.sharingMode = vk::SharingMode::eExclusive;
   this->Buffer_ = device.createBuffer(ci);

@@ -109,7 +109,6 @@ DeviceInfo Describe(vk::PhysicalDevice pd, uint32_t index)
   info.MaxImageDimension3D = p.limits.maxImageDimension3D;
   info.MaxImageDimension2D = p.limits.maxImageDimension2D;
   info.MaxStorageBufferRange = p.limits.maxStorageBufferRange;
-  info.MaxUniformBufferRange = p.limits.maxUniformBufferRange;
   info.MaxTexelBufferElements = p.limits.maxTexelBufferElements;
   for (int i = 0; i < 3; ++i)
   {

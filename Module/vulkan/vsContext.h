@@ -36,7 +36,6 @@ struct VISSWEEPCORE_EXPORT DeviceInfo
   uint32_t MaxImageDimension3D = 0;
   uint32_t MaxImageDimension2D = 0;
   uint64_t MaxStorageBufferRange = 0;
-  uint64_t MaxUniformBufferRange = 0;
   uint64_t MaxTexelBufferElements = 0;
   uint32_t MaxComputeWorkGroupCount[3] = { 0, 0, 0 };
   uint32_t MaxPushConstantsSize = 0;

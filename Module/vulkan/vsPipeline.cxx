@@ -19,8 +19,6 @@ vk::DescriptorType ToVk(BindingType t)
       return vk::DescriptorType::eStorageBuffer;
     case BindingType::UniformTexelBuffer:
       return vk::DescriptorType::eUniformTexelBuffer;
-    case BindingType::UniformBuffer:
-      return vk::DescriptorType::eUniformBuffer;
     default:
       return vk::DescriptorType::eStorageImage;
   }
@@ -150,19 +148,12 @@ DescriptorSet::DescriptorSet(const ComputePipeline& pipeline)
   , Bindings_(pipeline.Bindings())
 {
   vk::Device device = this->Context_->Device();
-  uint32_t buffers = 0, images = 0, texels = 0, uniforms = 0;
+  uint32_t buffers = 0, images = 0, texels = 0;
   for (auto b : this->Bindings_)
   {
-    (b == BindingType::StorageBuffer        ? buffers
-        : b == BindingType::UniformTexelBuffer ? texels
-        : b == BindingType::UniformBuffer      ? uniforms
-                                               : images)++;
+    (b == BindingType::StorageBuffer ? buffers : b == BindingType::UniformTexelBuffer ? texels : images)++;
   }
   std::vector<vk::DescriptorPoolSize> sizes;
-  if (uniforms)
-  {
-    sizes.push_back({ vk::DescriptorType::eUniformBuffer, uniforms });
-  }
   if (texels)
   {
     sizes.push_back({ vk::DescriptorType::eUniformTexelBuffer, texels });
@@ -195,24 +186,17 @@ DescriptorSet::~DescriptorSet()
 
 DescriptorSet& DescriptorSet::Bind(uint32_t binding, const Buffer& buffer)
 {
-  const bool uniform = binding < this->Bindings_.size() && this->Bindings_[binding] == BindingType::UniformBuffer;
-  if (binding >= this->Bindings_.size() || (this->Bindings_[binding] != BindingType::StorageBuffer && !uniform))
+  if (binding >= this->Bindings_.size() || this->Bindings_[binding] != BindingType::StorageBuffer)
   {
     throw InputError("pipeline '" + this->PipelineName_ + "' has no storage buffer at binding " +
-      std::to_string(binding) + " (nor a uniform block; for '" + buffer.Name() + "')");
-  }
-  if (uniform && buffer.Size() > this->Context_->Info().MaxUniformBufferRange)
-  {
-    throw DeviceLimitError("buffer '" + buffer.Name() + "' of " + std::to_string(buffer.Size()) +
-      " bytes exceeds the device's maxUniformBufferRange of " +
-      std::to_string(this->Context_->Info().MaxUniformBufferRange) + " bytes (pipeline '" + this->PipelineName_ + "')");
+      std::to_string(binding) + " (for '" + buffer.Name() + "')");
   }
   vk::DescriptorBufferInfo info{ buffer.Handle(), 0, VK_WHOLE_SIZE };
   vk::WriteDescriptorSet w;
   w.dstSet = this->Set_;
   w.dstBinding = binding;
   w.descriptorCount = 1;
-  w.descriptorType = uniform ? vk::DescriptorType::eUniformBuffer : vk::DescriptorType::eStorageBuffer;
+  w.descriptorType = vk::DescriptorType::eStorageBuffer;
   w.pBufferInfo = &info;
   this->Context_->Device().updateDescriptorSets(w, {});
   return *this;

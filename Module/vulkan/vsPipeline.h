@@ -24,11 +24,7 @@ enum class BindingType
   StorageBuffer,
   StorageImage,
   /** A Buffer read through its TexelView (GLSL: samplerBuffer / usamplerBuffer, texelFetch). */
-  UniformTexelBuffer,
-  /** A Buffer as a uniform block (GLSL: layout(std140) uniform): what every invocation reads alike,
-   *  e.g. a pass's parameters. lavapipe loads a storage buffer member once per SIMD lane even at a
-   *  uniform address; a uniform block's once per SIMD group (docs/benchmarks.md). */
-  UniformBuffer
+  UniformTexelBuffer
 };
 
 /** A shader's descriptor set layout from its bindings named in bindings.h: each type at its binding
@@ -79,7 +75,6 @@ public:
   DescriptorSet(const DescriptorSet&) = delete;
   DescriptorSet& operator=(const DescriptorSet&) = delete;
 
-  /** A buffer at a StorageBuffer or UniformBuffer binding. */
   DescriptorSet& Bind(uint32_t binding, const Buffer& buffer);
   /** A buffer as uniform texel buffer of `format` texels. */
   DescriptorSet& BindTexels(uint32_t binding, const Buffer& buffer, vk::Format format);
