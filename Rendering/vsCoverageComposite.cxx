@@ -94,23 +94,16 @@ std::vector<float> CoverageComposite::EnvironmentDisplay(
 void CoverageComposite::UpdateBackground(const EnvironmentMap& map, const glm::mat4& invViewProj, uint32_t w,
   uint32_t h, float scale, bool toneMapping, int environmentUploads)
 {
-  std::vector<double> key(glm::value_ptr(invViewProj), glm::value_ptr(invViewProj) + 16);
-  key.insert(key.end(), { double(w), double(h), double(environmentUploads), double(scale),
-                          toneMapping ? 1.0 : 0.0 });
-  if (key != this->BackgroundKey || this->BackgroundDisplay.size() != size_t(w) * h * 3)
+  if (this->BackgroundStale(invViewProj, w, h, scale, toneMapping, environmentUploads))
   {
     this->BackgroundDisplay = EnvironmentDisplay(map, invViewProj, w, h, scale, toneMapping);
-    this->BackgroundKey = key;
   }
 }
 
 void CoverageComposite::UpdateBackground(const std::vector<float>& radiance, float exposure,
   const glm::mat4& invViewProj, uint32_t w, uint32_t h, float scale, bool toneMapping, int environmentUploads)
 {
-  std::vector<double> key(glm::value_ptr(invViewProj), glm::value_ptr(invViewProj) + 16);
-  key.insert(key.end(), { double(w), double(h), double(environmentUploads), double(scale),
-                          toneMapping ? 1.0 : 0.0 });
-  if (key != this->BackgroundKey || this->BackgroundDisplay.size() != size_t(w) * h * 3)
+  if (this->BackgroundStale(invViewProj, w, h, scale, toneMapping, environmentUploads))
   {
     this->BackgroundDisplay.resize(radiance.size());
     vtkSMPTools::For(0, vtkIdType(radiance.size()), [&](vtkIdType i0, vtkIdType i1) {
@@ -119,8 +112,20 @@ void CoverageComposite::UpdateBackground(const std::vector<float>& radiance, flo
         this->BackgroundDisplay[i] = vs::DisplayValue(exposure * radiance[i], toneMapping);
       }
     });
-    this->BackgroundKey = key;
   }
+}
+
+bool CoverageComposite::BackgroundStale(
+  const glm::mat4& invViewProj, uint32_t w, uint32_t h, float scale, bool toneMapping, int environmentUploads)
+{
+  std::vector<double> key(glm::value_ptr(invViewProj), glm::value_ptr(invViewProj) + 16);
+  key.insert(key.end(), { double(w), double(h), double(environmentUploads), double(scale), toneMapping ? 1.0 : 0.0 });
+  if (key == this->BackgroundKey && this->BackgroundDisplay.size() == size_t(w) * h * 3)
+  {
+    return false;
+  }
+  this->BackgroundKey = key;
+  return true;
 }
 
 std::vector<float> CoverageComposite::Display(const std::vector<float>& mean,

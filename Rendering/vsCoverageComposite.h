@@ -46,6 +46,10 @@ public:
     float opaqueAlpha, bool composite, float exposure, bool toneMapping) const;
 
 private:
+  /** Whether the background must be made again for this view (and records the view as made). */
+  bool BackgroundStale(
+    const glm::mat4& invViewProj, uint32_t w, uint32_t h, float scale, bool toneMapping, int environmentUploads);
+
   // The environment's display colour per pixel (rgb) behind the last composited view, and what for.
   std::vector<float> BackgroundDisplay;
   std::vector<double> BackgroundKey;

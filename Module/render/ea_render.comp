@@ -22,6 +22,8 @@
  * clamped at the box); VS_EA_LIGHTING_AMBIENT_OCCLUSION puts 4 pi lightIntensity V(x) for I, V the
  * mean visibility (the light volume's alpha). Alpha is 1 - T; the environment seen through the
  * volume is the mapper's to add (T (1 - alpha) x the environment). Not shaded (VS_EA_SHADE ignored).
+ * The composite skips the majorant grid's empty bricks (skip_empty: no extinction there, so nothing
+ * to add); the projections sample every step (their minimum or average may lie in empty space).
  * Output: premultiplied RGBA per pixel, rows bottom-up (OpenGL order).
  */
 #include "bindings.h"

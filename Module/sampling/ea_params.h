@@ -30,7 +30,8 @@ VS_CONST uint VS_EA_LIGHTING_AMBIENT_OCCLUSION = 2u; /* the albedo x lightIntens
 struct VsEmissionAbsorptionParams
 {
   VsCameraParams camera;    /* camera.frame: the frame's index (its jitter) */
-  VsVolumeParams volume;    /* volume.majorant*: unused (the march takes fixed steps) */
+  VsVolumeParams volume;    /* volume.majorant*: the bricks the composite skips where empty (0: none;
+                               set by EmissionAbsorptionPass::Render from its majorant grid) */
   float step;               /* march step (world units) */
   float terminationOpacity; /* the composite stops at this opacity */
   uint blend;               /* VS_BLEND_* */
