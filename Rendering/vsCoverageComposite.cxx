@@ -1,6 +1,6 @@
 #include "vsCoverageComposite.h"
 
-#include "vsDisplayTransform.h"
+#include "sampling/display_transform.h"
 #include "sampling/interpolation.h"
 #include "sampling/octahedral.h"
 
@@ -85,7 +85,7 @@ std::vector<float> CoverageComposite::EnvironmentDisplay(
   vtkSMPTools::For(0, vtkIdType(out.size()), [&](vtkIdType i0, vtkIdType i1) {
     for (vtkIdType i = i0; i < i1; ++i)
     {
-      out[i] = vs::DisplayValue(out[i], toneMapping);
+      out[i] = vs::shared::vs_display_value(out[i], toneMapping);
     }
   });
   return out;
@@ -97,21 +97,6 @@ void CoverageComposite::UpdateBackground(const EnvironmentMap& map, const glm::m
   if (this->BackgroundStale(invViewProj, w, h, scale, toneMapping, environmentUploads))
   {
     this->BackgroundDisplay = EnvironmentDisplay(map, invViewProj, w, h, scale, toneMapping);
-  }
-}
-
-void CoverageComposite::UpdateBackground(const std::vector<float>& radiance, float exposure,
-  const glm::mat4& invViewProj, uint32_t w, uint32_t h, float scale, bool toneMapping, int environmentUploads)
-{
-  if (this->BackgroundStale(invViewProj, w, h, scale, toneMapping, environmentUploads))
-  {
-    this->BackgroundDisplay.resize(radiance.size());
-    vtkSMPTools::For(0, vtkIdType(radiance.size()), [&](vtkIdType i0, vtkIdType i1) {
-      for (vtkIdType i = i0; i < i1; ++i)
-      {
-        this->BackgroundDisplay[i] = vs::DisplayValue(exposure * radiance[i], toneMapping);
-      }
-    });
   }
 }
 
@@ -134,38 +119,15 @@ std::vector<float> CoverageComposite::Display(const std::vector<float>& mean,
 {
   std::vector<float> display(mean.size());
   vtkSMPTools::For(0, vtkIdType(mean.size() / 4), [&](vtkIdType p0, vtkIdType p1) {
-  for (size_t i = 4 * size_t(p0); i < 4 * size_t(p1); i += 4)
-  {
-    const size_t pixel = i / 4;
-    const bool seesEnvironment = !environmentPixels.empty() && environmentPixels[pixel];
-    if (seesEnvironment && composite)
+    for (vtkIdType pixel = p0; pixel < p1; ++pixel)
     {
-      // The tone-mapped full radiance F(L) (the environment seen through the volume included) over
-      // what is behind: drawn with the coverage a as C = F(L) - (1 - a) B, B the environment's
-      // display colour, so that over the skybox (which shows B) the pixel is F(L) as in the opaque
-      // image, and what VTK drew in front of the skybox shows through with the transmittance 1 - a.
-      // C is clamped at 0; it is rarely below: F(L) >= F(T L_env), and the display transform (sRGB
-      // over the filmic curve) is nearly concave with F(0) = 0, so F(T L_env) >= T F(L_env) but for
-      // noise. Where no sample met the volume (a = 0) the pixel is what is behind it.
-      const float a = std::clamp(mean[i + 3], 0.0f, 1.0f);
-      for (int c = 0; c < 3; ++c)
-      {
-        const float full = vs::DisplayValue(exposure * mean[i + c], toneMapping);
-        display[i + c] = a > 0.0f ? std::max(0.0f, full - (1.0f - a) * this->BackgroundDisplay[3 * pixel + c]) : 0.0f;
-      }
-      display[i + 3] = a;
-      continue;
+      const bool seesEnvironment = !environmentPixels.empty() && environmentPixels[pixel];
+      const bool over = seesEnvironment && composite;
+      const glm::vec3 background = over ? glm::make_vec3(this->BackgroundDisplay.data() + 3 * pixel) : glm::vec3(0.0f);
+      const glm::vec4 c = vs::shared::vs_display_pixel(glm::make_vec4(mean.data() + 4 * pixel), seesEnvironment,
+        composite, background, opaqueAlpha, exposure, toneMapping);
+      std::copy(glm::value_ptr(c), glm::value_ptr(c) + 4, display.data() + 4 * pixel);
     }
-    // The opaque image's alpha where this volume paints the environment; else the coverage.
-    float a = std::clamp(seesEnvironment ? opaqueAlpha : mean[i + 3], 0.0f, 1.0f);
-    for (int c = 0; c < 3; ++c)
-    {
-      // Premultiplied: tone map the radiance of the covered part, then weigh by coverage.
-      float l = a > 0.0f ? exposure * mean[i + c] / a : 0.0f;
-      display[i + c] = a * vs::DisplayValue(l, toneMapping);
-    }
-    display[i + 3] = a;
-  }
   });
   return display;
 }

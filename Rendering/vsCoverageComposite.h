@@ -34,10 +34,6 @@ public:
    *  scale (intensity x exposure) or the tone mapping changed. */
   void UpdateBackground(const EnvironmentMap& map, const glm::mat4& invViewProj, uint32_t w, uint32_t h, float scale,
     bool toneMapping, int environmentUploads);
-  /** The same from `radiance`, the EnvironmentRadiance of that view at scale / exposure (the preview
-   *  has it already): the display colour of exposure x radiance. */
-  void UpdateBackground(const std::vector<float>& radiance, float exposure, const glm::mat4& invViewProj, uint32_t w,
-    uint32_t h, float scale, bool toneMapping, int environmentUploads);
 
   /** The premultiplied display image of `mean` (rgba per pixel). Pixels flagged in
    *  `environmentPixels` see the environment: composited over the background (composite: after

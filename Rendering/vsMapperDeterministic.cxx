@@ -123,14 +123,45 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol,
   // The lit modes march one voxel per step unless SampleDistance says otherwise: their error is the
   // light volume's (interpolated between the grid's cells), not the step's. On ch2 at 512^2 the
   // preview's relative MSE against converged Monte Carlo was 3.14e-2, 3.12e-2 and 3.06e-2 at steps of
-  // 0.5, 1 and 2 voxels (docs/benchmarks.md), and one voxel takes half the time of half a voxel.
+  // 0.5, 1 and 2 voxels (docs/benchmarks.md, samples at the steps' midpoints then), and one voxel
+  // takes half the time of half a voxel.
   if (this->SampleDistance <= 0.0)
   {
     p.step = float(geometry.MinSpacing);
   }
-  if (interactive)
+  if (interactive || this->IsInteractiveFrame(ren))
   {
-    p.step *= 2.0f; // 3.06e-2 at two voxels (above); as vtkGPUVolumeRayCastMapper samples more coarsely while interacting
+    // While the user drags (the Monte Carlo mode's preview, or the Preview and AmbientOcclusion modes
+    // themselves) three times the step, as vtkGPUVolumeRayCastMapper samples more coarsely while
+    // interacting: 3.32e-2 at three voxels against 256 spp, below Monte Carlo's 3.61e-2 at 16 spp
+    // (docs/benchmarks.md), and a drag frame of ~80 ms instead of ~100 at two voxels. The pixels'
+    // fixed offsets (dither.h) keep the longer steps from drawing wood-grain rings.
+    p.step *= 3.0f;
+  }
+  // The preview's window image is made on the device with the radiance (the environment seen through
+  // the volume included, ea_params.h VS_EA_DISPLAY_*): a frame while the user drags has no per-pixel
+  // work left on the host, whose threads would otherwise compete with lavapipe's for the cores. It is
+  // shown as the Monte Carlo mode's image is (vs_display_pixel: over the skybox with the coverage
+  // 1 - T, or painting the environment, or transparent where empty).
+  const uint32_t w = uint32_t(vp.Width), h = uint32_t(vp.Height);
+  bool seesEnvironment = false;
+  if (preview)
+  {
+    const bool asBackground = this->GetShowsEnvironmentAsBackground();
+    if (asBackground)
+    {
+      vs::EnvironmentBackground::Observe(ren);
+    }
+    const bool behind = asBackground && vs::EnvironmentBackground::InFrame(ren);
+    const bool paints = this->EnvironmentVisible && !behind && vs::RendererFrame::Claim(ren, this);
+    seesEnvironment = asBackground || paints;
+    p.display = vs::shared::VS_EA_DISPLAY_IMAGE;
+    p.display |= seesEnvironment ? vs::shared::VS_EA_DISPLAY_ENVIRONMENT : 0u;
+    p.display |= asBackground && !paints ? vs::shared::VS_EA_DISPLAY_COMPOSITE : 0u;
+    p.display |= this->ToneMapping ? vs::shared::VS_EA_DISPLAY_TONE_MAPPING : 0u;
+    p.exposure = float(this->Exposure);
+    p.environmentSize = uint32_t(I.Environment.Device().Size());
+    p.environmentScale = float(this->EnvironmentIntensity);
   }
   if (!I.EA)
   {
@@ -138,7 +169,7 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol,
   }
   std::vector<float> rgba = I.EA->Render(I.Scene->Volume(), I.Scene->TF(), &I.Scene->Majorants(), p, depth, false,
     preview ? vs::shared::VS_EA_LIGHTING_PREVIEW : vs::shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION,
-    grid ? &I.Light->Image() : nullptr);
+    grid ? &I.Light->Image() : nullptr, preview ? &I.Environment.Device().Radiance() : nullptr);
   this->LastDeviceSeconds = I.EA->LastSeconds();
   this->LastRenderComplete = !interactive; // the Monte Carlo mode's image is still to come
   if (!preview)
@@ -146,43 +177,11 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol,
     vs::WindowCompositor::Draw(ren, vp, rgba); // as the emission-absorption image
     return;
   }
-  // The environment seen through the volume, T x L_env through each pixel's centre, and the image
-  // shown as the Monte Carlo mode's is (vs::CoverageComposite: over the skybox with the coverage
-  // 1 - T, or painting the environment, or transparent where empty).
-  const uint32_t w = uint32_t(vp.Width), h = uint32_t(vp.Height);
-  const bool asBackground = this->GetShowsEnvironmentAsBackground();
-  if (asBackground)
-  {
-    vs::EnvironmentBackground::Observe(ren);
-  }
-  const bool behind = asBackground && vs::EnvironmentBackground::InFrame(ren);
-  const bool paints = this->EnvironmentVisible && !behind && vs::RendererFrame::Claim(ren, this);
-  std::vector<uint8_t> environmentPixels;
-  std::vector<float> environment;
-  if (asBackground || paints)
-  {
-    environment = vs::CoverageComposite::EnvironmentRadiance(
-      I.Environment.Map(), p.camera.invViewProj, w, h, float(this->EnvironmentIntensity));
-    environmentPixels.assign(size_t(w) * h, 0);
-    for (size_t i = 0; i < environmentPixels.size(); ++i)
-    {
-      if (!depth.empty() && depth[i] < 1.0f)
-      {
-        continue; // opaque geometry in front of the environment
-      }
-      environmentPixels[i] = 1;
-      const float T = 1.0f - rgba[4 * i + 3];
-      for (int c = 0; c < 3; ++c)
-      {
-        rgba[4 * i + c] += T * environment[3 * i + c];
-      }
-    }
-  }
   if (interactive)
   {
     // GetRadiance() stays the view's estimate; the accumulation restarts once the view is still, and
     // the window hands over from this image to it (vsPreviewHandOver.h).
-    I.HandOver.Rgba = rgba;
+    I.HandOver.Rgba = std::move(rgba);
     I.HandOver.Width = w;
     I.HandOver.Height = h;
     I.HandOver.Pending = true;
@@ -193,21 +192,24 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol,
   }
   else
   {
+    // The pixels that see the environment (nothing opaque in front), as GetRadiance() reports them.
+    std::vector<uint8_t> environmentPixels;
+    if (seesEnvironment)
+    {
+      environmentPixels.assign(size_t(w) * h, 1);
+      for (size_t i = 0; i < depth.size(); ++i)
+      {
+        environmentPixels[i] = depth[i] < 1.0f ? 0 : 1;
+      }
+    }
     if (!I.Radiance)
     {
       I.Radiance = vtkSmartPointer<vtkImageData>::New();
     }
     vs::RadianceImage::Fill(I.Radiance, rgba, w, h, environmentPixels, 1.0f);
-    I.EnvironmentPixels = environmentPixels;
+    I.EnvironmentPixels = std::move(environmentPixels);
   }
-  const bool composite = asBackground && !paints;
-  if (composite)
-  {
-    I.Composite.UpdateBackground(environment, float(this->Exposure), p.camera.invViewProj, w, h,
-      float(this->EnvironmentIntensity * this->Exposure), this->ToneMapping, this->EnvironmentUploadCount);
-  }
-  vs::WindowCompositor::Draw(
-    ren, vp, I.Composite.Display(rgba, environmentPixels, 1.0f, composite, float(this->Exposure), this->ToneMapping));
+  vs::WindowCompositor::Draw(ren, vp, I.EA->LastDisplay());
 }
 
 // In a vtkHardwareSelector pass: the prop's colour where the volume's opacity exceeds 3/255, as

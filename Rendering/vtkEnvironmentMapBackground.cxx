@@ -1,7 +1,7 @@
 #include "vtkEnvironmentMapBackground.h"
 
 #include "sampling/octahedral.h"
-#include "vsDisplayTransform.h"
+#include "sampling/display_transform.h"
 #include "vsEnvironmentMap.h"
 #include "vtkEnvironmentMapAlgorithm.h"
 #include "vtkVisibilitySweepVolumeMapper.h"
@@ -114,7 +114,7 @@ int vtkEnvironmentMapBackground::RequestData(
       unsigned char* p = pixels + 3 * (size_t(j) * w + i);
       for (int k = 0; k < 3; ++k)
       {
-        p[k] = static_cast<unsigned char>(std::lround(255.0f * vs::DisplayValue(scale * radiance[k], this->ToneMapping)));
+        p[k] = static_cast<unsigned char>(std::lround(255.0f * vs::shared::vs_display_value(scale * radiance[k], this->ToneMapping)));
       }
     }
   }

@@ -28,7 +28,9 @@
  *   of one emission-absorption render once the grid is swept. The grid (at DirectionResolution)
  *   and the light volume are made when the volume, the environment or its intensity change, never
  *   for a camera move (GetLightVolumeBuildCount()). Shown through the display transform as
- *   MonteCarlo (Exposure, ToneMapping, the environment as background).
+ *   MonteCarlo (Exposure, ToneMapping, the environment as background), the window image made on
+ *   the device with the radiance. Steps of one voxel unless SampleDistance is set; twice that in an
+ *   interactive frame (InteractiveUpdateRate), in this mode and in AmbientOcclusion.
  * - AmbientOcclusion: the same march, each sample emitting albedo x EnvironmentIntensity x its
  *   mean visibility (the light volume's alpha, the fraction of unoccluded directions): the preview
  *   under a constant white sky, whatever the environment. Shown as EmissionAbsorption is.
@@ -686,8 +688,9 @@ private:
   void RenderSelection(vtkRenderer* ren, vtkVolume* vol);
   void RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol);
   /** Preview (`preview`) and AmbientOcclusion: the emission-absorption pass lit from the light
-   *  volume. `interactive`: a preview frame while the user drags in the MonteCarlo mode (twice the
-   *  step; GetRadiance() is left as it is, the image kept for the hand-over). */
+   *  volume, at twice the step in an interactive frame. `interactive`: a preview frame while the
+   *  user drags in the MonteCarlo mode (GetRadiance() is left as it is, the image kept for the
+   *  hand-over). */
   void RenderLit(vtkRenderer* ren, vtkVolume* vol, bool preview, bool interactive);
   /** Whether this frame of `ren` is an interactive one (the window's desired update rate at least
    *  InteractiveUpdateRate, not a tile of a tiled render). */

@@ -33,24 +33,32 @@ EmissionAbsorptionPass::EmissionAbsorptionPass(std::shared_ptr<Context> context)
 {
 }
 
-const ComputePipeline& EmissionAbsorptionPass::PipelineFor(bool factor, bool shade, uint32_t lighting)
+const ComputePipeline& EmissionAbsorptionPass::PipelineFor(
+  bool factor, bool shade, uint32_t lighting, bool projection, bool display)
 {
   shade = shade && lighting == shared::VS_EA_LIGHTING_NONE; // the lit modes are not Phong-shaded
-  auto& pipeline = this->Pipelines_[factor ? 1 : 0][shade ? 1 : 0][lighting];
+  const std::array<uint32_t, 5> constants = { factor ? 1u : 0u, shade ? 1u : 0u, lighting, projection ? 1u : 0u,
+    display ? 1u : 0u };
+  auto& pipeline = this->Pipelines_[constants];
   if (!pipeline)
   {
+    // SharedPipeline shares by name: one name per set of constants.
     std::string name = lighting == shared::VS_EA_LIGHTING_PREVIEW ? "preview"
       : lighting == shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION     ? "ambient occlusion"
                                                                   : "emission-absorption";
     name += factor ? (shade ? " (gradient opacity, shaded)" : " (gradient opacity)") : (shade ? " (shaded)" : "");
+    name += projection ? ", projections" : "";
+    name += display ? ", with its window image" : "";
     pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_ea_render),
       BindingTypes(shared::VS_EA_BINDING_COUNT,
         { { shared::VS_EA_VOLUME, BindingType::StorageImage }, { shared::VS_EA_TF, BindingType::UniformTexelBuffer },
           { shared::VS_EA_PARAMS, BindingType::StorageBuffer }, { shared::VS_EA_DEPTH, BindingType::UniformTexelBuffer },
           { shared::VS_EA_RESULT, BindingType::StorageBuffer },
           { shared::VS_EA_FACTOR_IMAGE, BindingType::StorageImage },
-          { shared::VS_EA_LIGHT, BindingType::StorageImage }, { shared::VS_EA_BRICKS, BindingType::StorageImage } }),
-      0, name, { factor ? 1u : 0u, shade ? 1u : 0u, lighting });
+          { shared::VS_EA_LIGHT, BindingType::StorageImage }, { shared::VS_EA_BRICKS, BindingType::StorageImage },
+          { shared::VS_EA_ENVIRONMENT, BindingType::UniformTexelBuffer },
+          { shared::VS_EA_DISPLAY, BindingType::StorageBuffer } }),
+      0, name, std::vector<uint32_t>(constants.begin(), constants.end()));
   }
   return *pipeline;
 }
@@ -59,13 +67,14 @@ EmissionAbsorptionPass::~EmissionAbsorptionPass() = default;
 
 // Rows of 16 bytes (volume_params.h): a member that breaks the rule changes the size.
 static_assert(sizeof(shared::VsEmissionAbsorptionParams) ==
-    sizeof(shared::VsCameraParams) + sizeof(shared::VsVolumeParams) + 4 * 16 + sizeof(shared::VsGridParams),
+    sizeof(shared::VsCameraParams) + sizeof(shared::VsVolumeParams) + 4 * 16 + sizeof(shared::VsGridParams) + 16,
   "VsEmissionAbsorptionParams: rows of 16 bytes (volume_params.h)");
 
 std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
   const TransferFunctionTable& tf, const MajorantGrid* majorants, const shared::VsEmissionAbsorptionParams& inParams, const std::vector<float>& depth,
-  bool shade, uint32_t lighting, const Image3D* light)
+  bool shade, uint32_t lighting, const Image3D* light, const Buffer* environment)
 {
+  this->LastDisplay_.clear();
   if (lighting > shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION)
   {
     throw InputError("unknown lighting of the emission-absorption pass: " + std::to_string(lighting));
@@ -97,6 +106,16 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
       params.grid.cellSize = glm::max(params.volume.boxMax - params.volume.boxMin, glm::vec3(1e-30f));
     }
   }
+  if ((params.display & shared::VS_EA_DISPLAY_ENVIRONMENT) != 0u)
+  {
+    const uint64_t n = params.environmentSize;
+    if (!environment || n == 0 || environment->Size() < n * n * 4 * sizeof(float))
+    {
+      throw InputError("the emission-absorption pass was asked for the environment behind the volume without an "
+                       "environment map of " + std::to_string(n) + " x " + std::to_string(n) + " texels");
+    }
+  }
+  const bool display = (params.display & shared::VS_EA_DISPLAY_IMAGE) != 0u;
   const uint32_t w = params.camera.width, h = params.camera.height;
   if (w == 0 || h == 0)
   {
@@ -112,6 +131,10 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
   Reserve(this->Params_, this->Context_, sizeof(params), "frame parameters");
   Reserve(this->Depth_, this->Context_, pixels * sizeof(float), "depth");
   Reserve(this->Out_, this->Context_, pixels * 4 * sizeof(float), "emission-absorption image");
+  if (display)
+  {
+    Reserve(this->Display_, this->Context_, pixels * 4 * sizeof(float), "emission-absorption window image");
+  }
   this->Params_->Upload(&params, sizeof(params));
   if (depth.empty())
   {
@@ -128,7 +151,8 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
     const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     this->NoLight_->Upload(zero, sizeof(zero));
   }
-  const ComputePipeline& pipeline = this->PipelineFor(volume.Factor() != nullptr, shade, lighting);
+  const ComputePipeline& pipeline = this->PipelineFor(
+    volume.Factor() != nullptr, shade, lighting, params.blend != shared::VS_BLEND_COMPOSITE, display);
   DescriptorSet set(pipeline);
   set.Bind(shared::VS_EA_VOLUME, volume.Image())
     .BindTexels(shared::VS_EA_TF, tf.Lut(), vk::Format::eR32G32B32A32Sfloat)
@@ -138,6 +162,16 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
   set.Bind(shared::VS_EA_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
   set.Bind(shared::VS_EA_LIGHT, lighting != shared::VS_EA_LIGHTING_NONE && light ? *light : *this->NoLight_);
   set.Bind(shared::VS_EA_BRICKS, majorants ? majorants->TrackingImage() : *this->NoLight_);
+  // Placeholders where unread: the transfer function's texels, the radiance image.
+  if (environment)
+  {
+    set.BindTexels(shared::VS_EA_ENVIRONMENT, *environment, vk::Format::eR32G32B32A32Sfloat);
+  }
+  else
+  {
+    set.BindTexels(shared::VS_EA_ENVIRONMENT, tf.Lut(), vk::Format::eR32G32B32A32Sfloat);
+  }
+  set.Bind(shared::VS_EA_DISPLAY, display ? *this->Display_ : *this->Out_);
   Batch batch(this->Context_);
   batch.BeginTimer("render");
   batch.Dispatch(pipeline, set, nullptr, 0, (w + 7) / 8, (h + 7) / 8, 1);
@@ -146,6 +180,11 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
   this->LastSeconds_ = batch.Seconds("render");
   std::vector<float> result(pixels * 4);
   this->Out_->Download(result.data(), result.size() * sizeof(float));
+  if (display)
+  {
+    this->LastDisplay_.resize(pixels * 4);
+    this->Display_->Download(this->LastDisplay_.data(), this->LastDisplay_.size() * sizeof(float));
+  }
   return result;
 }
 }

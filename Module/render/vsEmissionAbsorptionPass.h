@@ -9,6 +9,8 @@
 #include "vissweepCoreModule.h"
 #include "sampling/ea_params.h"
 
+#include <array>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -37,23 +39,36 @@ public:
    *  rgba32f image of params.grid.cells texels (vsLightVolume.h); `light` nullptr: a zero light of
    *  one texel (for a volume without extinction, whose lit image is transparent anyway; params.grid
    *  is then set to one cell). Without NONE, `shade` is ignored. Throws InputError for a light
-   *  image whose size is not params.grid.cells. */
+   *  image whose size is not params.grid.cells.
+   *  params.display (shared::VS_EA_DISPLAY_* flags): with VS_EA_DISPLAY_ENVIRONMENT the pixels of
+   *  depth 1 see `environment` (the environment's radiance per texel of its equal-area map of
+   *  params.environmentSize^2 texels, DeviceEnvironment::Radiance), added to the returned radiance
+   *  through the transmittance; with VS_EA_DISPLAY_IMAGE the pass also makes the window image
+   *  (display_transform.h), then in LastDisplay(). Throws InputError for VS_EA_DISPLAY_ENVIRONMENT
+   *  without an environment of that size. */
   std::vector<float> Render(const DeviceVolume& volume, const TransferFunctionTable& tf,
     const MajorantGrid* majorants, const shared::VsEmissionAbsorptionParams& params, const std::vector<float>& depth, bool shade = false,
-    uint32_t lighting = shared::VS_EA_LIGHTING_NONE, const Image3D* light = nullptr);
+    uint32_t lighting = shared::VS_EA_LIGHTING_NONE, const Image3D* light = nullptr, const Buffer* environment = nullptr);
+
+  /** The premultiplied window image (RGBA, rows bottom-up) of the last Render with
+   *  VS_EA_DISPLAY_IMAGE; empty after one without. */
+  const std::vector<float>& LastDisplay() const { return this->LastDisplay_; }
 
   /** Device seconds of the last Render (0 without timestamp support). */
   double LastSeconds() const { return this->LastSeconds_; }
 
 private:
-  /** The pipeline with or without the extinction factor, shading and lighting (made on first use). */
-  const ComputePipeline& PipelineFor(bool factor, bool shade, uint32_t lighting);
+  /** The pipeline with or without the extinction factor, shading, lighting, a projection (a blend
+   *  other than the composite) and the window image (made on first use; ea_render.comp's
+   *  specialization constants). */
+  const ComputePipeline& PipelineFor(bool factor, bool shade, uint32_t lighting, bool projection, bool display);
 
   std::shared_ptr<Context> Context_;
-  std::shared_ptr<ComputePipeline> Pipelines_[2][2][3]; // [factor][shade][lighting]
-  std::unique_ptr<Buffer> Params_, Depth_, Out_;
+  std::map<std::array<uint32_t, 5>, std::shared_ptr<ComputePipeline>> Pipelines_;
+  std::unique_ptr<Buffer> Params_, Depth_, Out_, Display_;
   std::unique_ptr<Image3D> NoLight_; // the 1-texel placeholder of VS_EA_LIGHT and VS_EA_BRICKS (zero)
   double LastSeconds_ = 0.0;
+  std::vector<float> LastDisplay_;
 };
 }
 

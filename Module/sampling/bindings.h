@@ -43,7 +43,11 @@ VS_CONST uint VS_EA_LIGHT = 6u;          /* rgba32f image: the light volume (vsL
                                             modes (VS_EA_LIGHTING_*; a 1-texel placeholder otherwise) */
 VS_CONST uint VS_EA_BRICKS = 7u;         /* rgba32f image: the majorant grid's tracking image, for empty-space
                                             skipping (a 1-texel placeholder without majorants) */
-VS_CONST uint VS_EA_BINDING_COUNT = 8u;
+VS_CONST uint VS_EA_ENVIRONMENT = 8u;    /* rgba32f texel buffer: the environment's radiance per texel of its
+                                            equal-area map (VS_EA_DISPLAY_ENVIRONMENT; a placeholder otherwise) */
+VS_CONST uint VS_EA_DISPLAY = 9u;        /* storage buffer: the window image (VS_EA_DISPLAY_IMAGE; a placeholder
+                                            otherwise) */
+VS_CONST uint VS_EA_BINDING_COUNT = 10u;
 
 /* The sweeps' march along each direction (visibility/sweep_march.glsl: the full-resolution volume
  * or, VS_SWEEP_POOLED, the pooled extinction volume and its occupancy). */

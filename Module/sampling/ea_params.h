@@ -27,6 +27,16 @@ VS_CONST uint VS_EA_LIGHTING_AMBIENT_OCCLUSION = 2u; /* the albedo x lightIntens
                                               (the light volume's alpha): the preview under a constant sky of
                                               radiance lightIntensity */
 
+/* What the pass makes besides the radiance image (VsEmissionAbsorptionParams.display, flags). The
+ * lit preview's window image is made on the device, so that a frame of the preview while the user
+ * drags has no per-pixel work left on the host (display_transform.h). */
+VS_CONST uint VS_EA_DISPLAY_IMAGE = 1u;       /* also the premultiplied window image (vs_display_pixel) */
+VS_CONST uint VS_EA_DISPLAY_ENVIRONMENT = 2u; /* pixels without opaque geometry see the environment: its
+                                                 radiance through the pixel's centre, times T, is added */
+VS_CONST uint VS_EA_DISPLAY_COMPOSITE = 4u;   /* the window image is composited over the environment
+                                                 behind (else it paints it, opaque) */
+VS_CONST uint VS_EA_DISPLAY_TONE_MAPPING = 8u; /* the filmic curve (else a clamp) */
+
 struct VsEmissionAbsorptionParams
 {
   VsCameraParams camera;    /* camera.frame: the frame's index (its jitter) */
@@ -35,12 +45,12 @@ struct VsEmissionAbsorptionParams
   float step;               /* march step (world units) */
   float terminationOpacity; /* the composite stops at this opacity */
   uint blend;               /* VS_BLEND_* */
-  uint unused;
+  uint display;             /* VS_EA_DISPLAY_* flags (0: the radiance image only) */
   /* The projections (VS_BLEND_MAXIMUM..ADDITIVE). */
   float averageMin;          /* the average's scalar range (vtkVolumeMapper AverageIPScalarRange) */
   float averageMax;
   float opacityUnitDistance; /* the opacity of extinction sigma_t: alpha = 1 - exp(-sigma_t u) */
-  float unused2;
+  float exposure;            /* the display image's exposure (VS_EA_DISPLAY_IMAGE) */
   /* Phong shading of the composite (with VS_EA_SHADE). */
   float ambient;
   float diffuse;
@@ -51,6 +61,12 @@ struct VsEmissionAbsorptionParams
   /* The light volume's cells (VS_EA_LIGHTING_PREVIEW, _AMBIENT_OCCLUSION): the visibility grid's shape over
      volume.boxMin..boxMax, one light-volume texel per cell; grid.side unused. */
   VsGridParams grid;
+  /* The environment (VS_EA_DISPLAY_ENVIRONMENT): its equal-area map of environmentSize^2 texels,
+     scaled by environmentScale (the intensity). */
+  uint environmentSize;
+  float environmentScale;
+  uint unused3;
+  uint unused4;
 };
 
 VS_NAMESPACE_END

@@ -12,7 +12,13 @@
 #include "vsLightVolume.h"
 #include "vsSweepPlan.h"
 #include "vsVolumeParams.h"
+#include "sampling/display_transform.h"
+#include "sampling/dither.h"
 #include "sampling/interpolation.h"
+#include "sampling/octahedral.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include <gtest/gtest.h>
 
@@ -109,15 +115,19 @@ struct LitBox
 
 // The preview of a homogeneous box (sigma 0.05 per voxel, 32 voxels deep, white albedo) under a
 // constant sky L, along rays parallel to z through the box: the pass's L_pix against
-//   (a) the same discrete sum on the host (midpoints of steps of 0.25, the downloaded light volume
-//       trilinear): the shader's arithmetic, to float precision (relative 1e-3);
+//   (a) the same discrete sum on the host (steps of 0.25, each sampled at the pixel's fixed offset
+//       j of dither.h, the downloaded light volume trilinear): the shader's arithmetic, to float
+//       precision (relative 1e-3);
 //   (b) the single scattering's 1D quadrature, L_k int_0^32 e^{-sigma s} sigma (1 / 4 pi) I(x_s) ds
 //       with the light volume's analytic I (TestLightVolume), 3200 midpoint steps. The preview is
 //       biased by the trilinear interpolation of I between cell centres: L_pix is a positive weighted
 //       integral of I, so its relative error is at most the largest relative error of the
 //       interpolated I along the ray, measured here per ray, plus the grid's (brute force: 1e-4 of
-//       4 pi L) and the step's (midpoint rule at sigma dt = 0.0125: below 1e-4). That bound is the
-//       tolerance (it is some 1-3% at the rays near the box's faces, where I bends most).
+//       4 pi L) and the step's: each step's weight e^{-sigma s} sigma ds is exact, its I read at
+//       offset j instead of integrated, which errs by (j - 1/2) dt I' dt to first order, so in all by
+//       at most |j - 1/2| dt max |I' / I| relative (I' measured along the ray), plus 1e-4 for the
+//       second order. That bound is the tolerance (it is some 1-3% at the rays near the box's faces,
+//       where I bends most).
 // Dropping the 1 / (4 pi) fails both by a factor 12.6; a wrong cell-centre offset fails (a).
 TEST(Preview, HomogeneousBoxMatchesSingleScatteringQuadrature)
 {
@@ -141,11 +151,12 @@ TEST(Preview, HomogeneousBoxMatchesSingleScatteringQuadrature)
       EXPECT_NEAR(got[3], expectedAlpha, 1e-4) << px << "," << py;
       // (a) the discrete sum, and the largest relative error of the interpolated I along the ray.
       const double step = box.Params.step;
-      double sumA[3] = { 0, 0, 0 }, T = 1.0, interpolationError = 0.0;
+      const double j = vs::shared::vs_interleaved_gradient_noise(glm::uvec2(px, py));
+      double sumA[3] = { 0, 0, 0 }, T = 1.0, interpolationError = 0.0, bending = 0.0;
       for (double a = 0.0; a < Edge; a += step)
       {
         const double b = std::min(a + step, Edge);
-        const glm::dvec3 p(x, y, 0.5 * (a + b));
+        const glm::dvec3 p(x, y, a + j * (b - a));
         const double A = 1.0 - std::exp(-Sigma * (b - a));
         const double exact = AnalyticLight(p, D);
         for (int k = 0; k < 3; ++k)
@@ -153,6 +164,10 @@ TEST(Preview, HomogeneousBoxMatchesSingleScatteringQuadrature)
           const double I = InterpolatedLight(light, box.Grid, p, k);
           sumA[k] += T * A * I / (4.0 * Pi);
           interpolationError = std::max(interpolationError, std::abs(I - L[k] * exact) / (L[k] * exact));
+          const glm::dvec3 h(0.0, 0.0, 0.01);
+          const double slope =
+            (InterpolatedLight(light, box.Grid, p + h, k) - InterpolatedLight(light, box.Grid, p - h, k)) / 0.02;
+          bending = std::max(bending, std::abs(slope) / I);
         }
         T *= 1.0 - A;
       }
@@ -164,7 +179,7 @@ TEST(Preview, HomogeneousBoxMatchesSingleScatteringQuadrature)
         const double s = (i + 0.5) * Edge / n;
         J += std::exp(-Sigma * s) * Sigma / (4.0 * Pi) * AnalyticLight(glm::dvec3(x, y, s), D) * Edge / n;
       }
-      const double bound = interpolationError + 1e-4 + 1e-4;
+      const double bound = interpolationError + 1e-4 + std::abs(j - 0.5) * step * bending + 1e-4;
       worstBound = std::max(worstBound, bound);
       for (int k = 0; k < 3; ++k)
       {
@@ -258,4 +273,119 @@ TEST(Preview, MismatchedOrMissingLightVolume)
   {
     EXPECT_EQ(dark[i], 0.0f);
   }
+}
+
+// The preview's window image is made on the device (ea_params.h VS_EA_DISPLAY_*): the environment seen
+// through the volume and the display transform, which the host did per pixel before. Through a
+// perspective camera (every pixel looks in its own direction) at a box, in front of an opaque plane
+// over part of the image, under an environment that varies with direction, against the host's
+// arithmetic of the same:
+//  - the radiance: the plain preview's, plus T x the environment's radiance along the pixel's ray
+//    (bilinear between the equal-area map's texels, times the intensity) where nothing opaque is in
+//    front; elsewhere unchanged;
+//  - the window pixel: vs_display_pixel (display_transform.h, which the host's Monte Carlo window
+//    image takes too) of that radiance, for each of painting / compositing and filmic / clamp.
+// Dropping the transmittance, the intensity, the depth test or the exposure fails it.
+TEST(Preview, WindowImageIsTheHostsCompositeOfItsRadiance)
+{
+  LitBox box{ glm::vec3(1.0f) };
+  vs::EnvironmentMap map = vs::EnvironmentMap::Constant(16, glm::vec3(1.0f));
+  for (int y = 0; y < map.Size; ++y)
+    for (int x = 0; x < map.Size; ++x)
+    {
+      const glm::vec3 d = vs::shared::vs_octa_to_dir(glm::vec2((x + 0.5f) / map.Size, (y + 0.5f) / map.Size));
+      float* t = &map.Radiance[3 * (size_t(y) * map.Size + x)];
+      t[0] = 1.5f + d.x;
+      t[1] = 1.2f + d.y;
+      t[2] = 4.0f * (1.0f + d.z);
+    }
+  map.Finalize();
+  const vs::DeviceEnvironment env(box.Scene.Context, map, 8);
+  ASSERT_EQ(env.Size(), map.Size);
+
+  const uint32_t W = 24, H = 20;
+  vs::shared::VsEmissionAbsorptionParams p = box.Params;
+  const glm::mat4 proj = glm::perspective(glm::radians(70.0f), float(W) / H, 1.0f, 200.0f);
+  const glm::mat4 view = glm::lookAt(glm::vec3(40.0f, 30.0f, -30.0f), glm::vec3(16.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+  p.camera.invViewProj = glm::inverse(proj * view);
+  p.camera.width = W;
+  p.camera.height = H;
+  std::vector<float> depth(size_t(W) * H, 1.0f);
+  for (uint32_t y = 0; y < H; ++y)
+    for (uint32_t x = 0; x < W / 3; ++x)
+      depth[y * W + x] = 0.999f; // an opaque plane far behind the box, over the left third
+  const float intensity = 1.3f;
+
+  vs::EmissionAbsorptionPass pass(box.Scene.Context);
+  const std::vector<float> plain =
+    pass.Render(*box.Scene.Volume, *box.Scene.TF, nullptr, p, depth, false, vs::shared::VS_EA_LIGHTING_PREVIEW, &box.Light.Image());
+  EXPECT_TRUE(pass.LastDisplay().empty());
+  int covered = 0, environmentPixels = 0;
+  for (uint32_t flags : { 0u, vs::shared::VS_EA_DISPLAY_COMPOSITE, vs::shared::VS_EA_DISPLAY_TONE_MAPPING,
+         vs::shared::VS_EA_DISPLAY_COMPOSITE | vs::shared::VS_EA_DISPLAY_TONE_MAPPING })
+  {
+    vs::shared::VsEmissionAbsorptionParams q = p;
+    q.display = vs::shared::VS_EA_DISPLAY_IMAGE | vs::shared::VS_EA_DISPLAY_ENVIRONMENT | flags;
+    q.exposure = 0.7f;
+    q.environmentSize = uint32_t(map.Size);
+    q.environmentScale = intensity;
+    const std::vector<float> rgba = pass.Render(*box.Scene.Volume, *box.Scene.TF, nullptr, q, depth, false,
+      vs::shared::VS_EA_LIGHTING_PREVIEW, &box.Light.Image(), &env.Radiance());
+    const std::vector<float>& display = pass.LastDisplay();
+    ASSERT_EQ(rgba.size(), 4u * W * H);
+    ASSERT_EQ(display.size(), rgba.size());
+    const bool composite = (flags & vs::shared::VS_EA_DISPLAY_COMPOSITE) != 0u;
+    const bool toneMapping = (flags & vs::shared::VS_EA_DISPLAY_TONE_MAPPING) != 0u;
+    covered = environmentPixels = 0;
+    for (uint32_t y = 0; y < H; ++y)
+      for (uint32_t x = 0; x < W; ++x)
+      {
+        const size_t i = size_t(y) * W + x;
+        const glm::vec4 got = glm::make_vec4(&rgba[4 * i]), base = glm::make_vec4(&plain[4 * i]);
+        const bool seesEnvironment = depth[i] >= 1.0f;
+        glm::vec3 e(0.0f);
+        if (seesEnvironment)
+        {
+          // The pixel's ray direction, as the pass unprojects it; the environment along it.
+          const glm::vec2 ndc((x + 0.5f) / W * 2.0f - 1.0f, (y + 0.5f) / H * 2.0f - 1.0f);
+          const glm::vec4 pn = p.camera.invViewProj * glm::vec4(ndc, -1.0f, 1.0f);
+          const glm::vec4 pf = p.camera.invViewProj * glm::vec4(ndc, 1.0f, 1.0f);
+          const glm::vec3 d = glm::normalize(glm::vec3(pf) / pf.w - glm::vec3(pn) / pn.w);
+          const glm::vec2 uv = vs::shared::vs_dir_to_octa(d);
+          for (uint32_t c = 0; c < 4u; ++c)
+          {
+            float weight = 0.0f;
+            const glm::uvec2 t = vs::shared::vs_octa_bilinear_texel(uv, uint32_t(map.Size), c, weight);
+            e += weight * map.Texel(int(t.x), int(t.y));
+          }
+          e *= intensity;
+          ++environmentPixels;
+        }
+        covered += base.w > 0.05f ? 1 : 0;
+        const glm::vec4 expected(glm::vec3(base) + (1.0f - base.w) * e, base.w);
+        for (int k = 0; k < 4; ++k)
+        {
+          EXPECT_NEAR(got[k], expected[k], 1e-4f * (1.0f + std::abs(expected[k]))) << "pixel " << x << "," << y;
+        }
+        const glm::vec3 background = vs::shared::vs_display_rgb(q.exposure * e, toneMapping);
+        const glm::vec4 window =
+          vs::shared::vs_display_pixel(got, seesEnvironment, composite, background, 1.0f, q.exposure, toneMapping);
+        for (int k = 0; k < 4; ++k)
+        {
+          EXPECT_NEAR(display[4 * i + k], window[k], 1e-4f) << "pixel " << x << "," << y << " flags " << flags;
+        }
+      }
+  }
+  // The scene has all kinds of pixels: the box over the environment and over the plane, the bare
+  // environment and the bare plane.
+  EXPECT_GT(covered, 20);
+  EXPECT_GT(environmentPixels, 100);
+  EXPECT_LT(covered, int(W * H) - 50);
+  // Without its environment the flag is an error, not a read of the placeholder.
+  vs::shared::VsEmissionAbsorptionParams q = p;
+  q.display = vs::shared::VS_EA_DISPLAY_ENVIRONMENT;
+  q.environmentSize = uint32_t(map.Size);
+  EXPECT_THROW(pass.Render(*box.Scene.Volume, *box.Scene.TF, nullptr, q, depth, false, vs::shared::VS_EA_LIGHTING_PREVIEW,
+                 &box.Light.Image()),
+    vs::InputError);
 }
