@@ -29,8 +29,9 @@
  *   and the light volume are made when the volume, the environment or its intensity change, never
  *   for a camera move (GetLightVolumeBuildCount()). Shown through the display transform as
  *   MonteCarlo (Exposure, ToneMapping, the environment as background), the window image made on
- *   the device with the radiance. Steps of one voxel unless SampleDistance is set; twice that in an
- *   interactive frame (InteractiveUpdateRate), in this mode and in AmbientOcclusion.
+ *   the device with the radiance. Steps of one voxel unless SampleDistance is set, three times
+ *   that in an interactive frame (InteractiveUpdateRate), in this mode and in AmbientOcclusion;
+ *   each pixel's samples offset by a fixed pattern (no wood-grain rings, nothing random).
  * - AmbientOcclusion: the same march, each sample emitting albedo x EnvironmentIntensity x its
  *   mean visibility (the light volume's alpha, the fraction of unoccluded directions): the preview
  *   under a constant white sky, whatever the environment. Shown as EmissionAbsorption is.
@@ -363,7 +364,7 @@ public:
   /** Interaction in the MonteCarlo mode: while the render window's desired update rate is at least
    *  InteractiveUpdateRate (VTK raises it while the user drags), nothing accumulates. With
    *  InteractivePreview on (the default) each frame is the Preview at full resolution, marched at
-   *  twice its still step (as vtkGPUVolumeRayCastMapper lengthens its sample distance while
+   *  three times its still step (as vtkGPUVolumeRayCastMapper lengthens its sample distance while
    *  interacting); the first such frame sweeps the whole visibility grid if it is not yet complete.
    *  Off: 1 sample per pixel at 1/InteractiveSubsampling resolution. Once the view is still the
    *  Monte Carlo accumulation starts again (one restart, GetAccumulationResetCount()) and, after a
@@ -688,7 +689,7 @@ private:
   void RenderSelection(vtkRenderer* ren, vtkVolume* vol);
   void RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol);
   /** Preview (`preview`) and AmbientOcclusion: the emission-absorption pass lit from the light
-   *  volume, at twice the step in an interactive frame. `interactive`: a preview frame while the
+   *  volume, at three times the step in an interactive frame. `interactive`: a preview frame while the
    *  user drags in the MonteCarlo mode (GetRadiance() is left as it is, the image kept for the
    *  hand-over). */
   void RenderLit(vtkRenderer* ren, vtkVolume* vol, bool preview, bool interactive);
