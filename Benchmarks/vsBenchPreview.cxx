@@ -167,7 +167,14 @@ int Run(const PreviewOptions& o)
   std::vector<std::vector<unsigned char>> shown; // the window after each mode, for the contact sheet
 
   // A deterministic mode: its first frame, then the median of `Repeats` frames after small camera moves.
-  auto deterministic = [&](const char* name, int mode, bool shade) {
+  // `dragging`: every frame, the image's too, at the window's interactive rate (the mapper's coarser
+  // interactive step), as while the user drags.
+  auto deterministic = [&](const char* name, int mode, bool shade, bool dragging = false) {
+    const double stillRate = objects.Window->GetDesiredUpdateRate();
+    if (dragging)
+    {
+      objects.Window->SetDesiredUpdateRate(std::max(15.0, mapper->GetInteractiveUpdateRate()));
+    }
     mapper->SetRenderMode(mode);
     objects.Property->SetShade(shade ? 1 : 0);
     Row r;
@@ -197,6 +204,7 @@ int Run(const PreviewOptions& o)
     rows.push_back(r);
     images.push_back(mode == vtkVisibilitySweepVolumeMapper::Preview ? Radiance(mapper) : std::vector<double>());
     shown.push_back(WindowImage(objects.Window));
+    objects.Window->SetDesiredUpdateRate(stillRate);
     std::printf("  %-28s first frame %.3f s, frame %.3f s (device %.3f s)\n", name, r.FirstSeconds, r.FrameSeconds,
       r.DeviceSeconds);
     std::fflush(stdout);
@@ -230,6 +238,7 @@ int Run(const PreviewOptions& o)
   deterministic("emission-absorption, Phong", vtkVisibilitySweepVolumeMapper::EmissionAbsorption, true);
   deterministic("ambient occlusion", vtkVisibilitySweepVolumeMapper::AmbientOcclusion, false);
   deterministic("preview", vtkVisibilitySweepVolumeMapper::Preview, false);
+  deterministic("preview while dragging", vtkVisibilitySweepVolumeMapper::Preview, false, true);
   monteCarlo(1, 1); // the Monte Carlo pipelines, compiled before anything is timed
   for (int spp : { 1, 4, 16, 64 })
   {
@@ -321,7 +330,7 @@ void AddBenchPreview(CLI::App& bench)
 {
   auto o = std::make_shared<PreviewOptions>();
   auto* cmd = bench.add_subcommand("preview",
-    "frame time and error against converged Monte Carlo: emission-absorption, Phong, ambient occlusion, preview, "
+    "frame time and error against converged Monte Carlo: emission-absorption, Phong, ambient occlusion, preview (still and while dragging), "
     "Monte Carlo at 1/4/16/64 spp");
   cmd->add_option("scene", o->SceneFile, "the scene file")->required();
   cmd->add_option("--size", o->Size, "image width and height (default 512)")->check(CLI::Range(1, 16384));
