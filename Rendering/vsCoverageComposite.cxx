@@ -38,7 +38,7 @@ double CoverageComposite::OpaqueVariance(uint32_t n)
 
 // The environment's radiance (times scale) through the centre of each pixel of a w x h image under
 // invViewProj: bilinear between octahedral texels, as the kernel shows the environment
-// (env_radiance_display) and vtkEnvironmentMapBackground draws it.
+// (environment_display.glsl) and vtkEnvironmentMapBackground draws it.
 std::vector<float> CoverageComposite::EnvironmentRadiance(
   const vs::EnvironmentMap& map, const glm::mat4& invViewProj, uint32_t w, uint32_t h, float scale)
 {

@@ -32,7 +32,7 @@
 #include "brick_walk.h"
 #include "display_transform.h"
 #include "dither.h"
-#include "octahedral.h"
+#include "environment_display.glsl"
 #include "rng.h"
 #include "ea_params.h"
 
@@ -176,23 +176,6 @@ float skip_empty(vec3 oi, vec3 di, vec3 invDi, float walkScale, float t, out flo
   return tQuery;
 }
 
-/* The environment's radiance seen in direction w (world), bilinear between the texels of its
- * equal-area map, as the Monte Carlo kernel shows it (env_radiance_display, mc_resources.glsl) and
- * vs::CoverageComposite::EnvironmentRadiance computes it on the host. */
-vec3 environment_radiance(vec3 w)
-{
-  uint n = P.environmentSize;
-  vec2 uv = vs_dir_to_octa(w);
-  vec3 sum = vec3(0.0);
-  for (uint c = 0u; c < 4u; ++c)
-  {
-    float weight;
-    uvec2 t = vs_octa_bilinear_texel(uv, n, c, weight);
-    sum += weight * texelFetch(uEnvironment, int(t.y * n + t.x)).rgb;
-  }
-  return sum * P.environmentScale;
-}
-
 /* Writes pixel idx: the radiance (premultiplied rgb, alpha = 1 - T) and, with VS_EA_DISPLAY_IMAGE,
  * its window pixel. With VS_EA_DISPLAY_ENVIRONMENT, where nothing opaque lies in front (depth 1),
  * the environment seen through the volume, T x its radiance along d, is added to the radiance and
@@ -204,7 +187,7 @@ void write_pixel(uint idx, vec4 radiance, vec3 d, float depth)
   vec3 background = vec3(0.0);
   if (seesEnvironment)
   {
-    vec3 environment = environment_radiance(d);
+    vec3 environment = vs_environment_bilinear(uEnvironment, P.environmentSize, d) * P.environmentScale;
     radiance.rgb += (1.0 - radiance.a) * environment;
     background = vs_display_rgb(P.exposure * environment, (flags & VS_EA_DISPLAY_TONE_MAPPING) != 0u);
   }

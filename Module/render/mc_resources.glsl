@@ -82,6 +82,7 @@ float vs_env_mip(uint index)
 #ifndef VS_NO_GRID
 #include "direction_map.glsl"
 #endif
+#include "environment_display.glsl"
 
 /* Parameters the per-sample code reads, loaded once per invocation in main(): lavapipe loads a
  * storage-buffer value inside code that not every lane runs with a scalar loop over the lanes
@@ -150,17 +151,8 @@ vec3 env_radiance(vec3 w)
   return texelFetch(uEnv, int(t.y * gEnvSize + t.x)).rgb * gEnvScale;
 }
 
-/* The environment seen directly (the background): bilinear between texels, so that it does not
- * look blocky when a texel spans several pixels. */
+/* The environment seen directly (the background; environment_display.glsl). */
 vec3 env_radiance_display(vec3 w)
 {
-  vec2 uv = vs_dir_to_octa(w);
-  vec3 sum = vec3(0.0);
-  for (uint c = 0u; c < 4u; ++c)
-  {
-    float weight;
-    uvec2 t = vs_octa_bilinear_texel(uv, gEnvSize, c, weight);
-    sum += weight * texelFetch(uEnv, int(t.y * gEnvSize + t.x)).rgb;
-  }
-  return sum * gEnvScale;
+  return vs_environment_bilinear(uEnv, gEnvSize, w) * gEnvScale;
 }
