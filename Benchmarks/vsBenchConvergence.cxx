@@ -109,7 +109,8 @@ Error Compare(const Rgb& image, const Rgb& reference)
 // Bumped whenever the renderer's image of a scene changes by definition (not by noise), so that
 // references cached by an older build are not compared with new images:
 //   2: the visible background is bilinear between environment texels (was the nearest texel).
-constexpr int ImageDefinition = 2;
+//   3: full light transport by default (MaximumScatteringEvents 1024; was single scattering).
+constexpr int ImageDefinition = 3;
 
 // The cache key of a reference: what determines it.
 std::string ReferenceKey(const Options& o)

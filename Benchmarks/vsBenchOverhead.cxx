@@ -22,6 +22,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 
 namespace vstool
 {
@@ -41,6 +42,9 @@ struct Options
   std::string Sampler; // empty: the mapper's default
   std::string Transmittance; // empty: the mapper's default
   std::vector<double> Defensive{ 0.0 }; // TwoStep's defensive weights to measure
+  int MaxEvents = 0;      // 0: the scene's render.max_scattering_events
+  std::string LightEvents; // "LO:HI": next-event estimation alone, at those events only
+  int RouletteDepth = 0;   // 0: the mapper's default
 };
 
 struct Measurement
@@ -54,6 +58,9 @@ struct Measurement
   double Lookups[3] = { 0, 0, 0 }; // per path: volume samples, majorant loads, visibility texels
   double LaneOccupancy = 1.0;      // tracking steps the lanes took / steps their SIMD groups ran x width
   double SweepSeconds = 0.0;
+  double EventsPerPath = 0.0;      // scattering events per path (full transport)
+  double BlockedShadowRays = 0.0;  // the fraction of shadow rays with transmittance below 0.01
+  double ShadowRaysPerPath = 0.0;
 };
 
 double Median(std::vector<double> v)
@@ -155,6 +162,10 @@ Measurement Measure(
     m.Lookups[k] = mapper->GetLastLookupCounts()[k] / pixels;
   }
   m.LaneOccupancy = mapper->GetLastLaneOccupancy();
+  const double* shadow = mapper->GetLastShadowRayCounts();
+  m.BlockedShadowRays = shadow[0] > 0.0 ? shadow[1] / shadow[0] : 0.0;
+  m.ShadowRaysPerPath = shadow[0] / pixels;
+  m.EventsPerPath = mapper->GetMeanScatteringEvents();
   return m;
 }
 
@@ -175,6 +186,27 @@ int Run(const Options& given)
   vtkVisibilitySweepVolumeMapper* mapper = objects.Mapper;
   mapper->SetInteractiveUpdateRate(0.0); // always full-resolution frames
   mapper->SetProgressiveVisibility(false); // per-sample figures of a complete grid: swept in the warm-up frame
+  if (o.MaxEvents > 0)
+  {
+    mapper->SetMaximumScatteringEvents(o.MaxEvents);
+  }
+  if (o.RouletteDepth > 0)
+  {
+    mapper->SetRussianRouletteDepth(o.RouletteDepth);
+  }
+  if (!o.LightEvents.empty())
+  {
+    // Next-event estimation alone, at events LO..HI only: the light sample's variance at that depth.
+    int lo = 0, hi = 0;
+    char colon = 0;
+    std::istringstream in(o.LightEvents);
+    if (!(in >> lo >> colon >> hi) || colon != ':' || lo < 1 || hi < lo || !in.eof())
+    {
+      throw std::runtime_error("--light-events " + o.LightEvents + ": expected LO:HI with 1 <= LO <= HI");
+    }
+    mapper->SetMultipleImportanceSampling(vtkVisibilitySweepVolumeMapper::LightSamplingOnly);
+    mapper->SetLightEventRange(lo, hi);
+  }
 
   std::printf("scene %s, %d x %d, %d spp per timed frame, median of %d frames (device time of the render pass)\n",
     o.Scene.c_str(), o.Width, o.Height, o.Spp, o.Repeats);
@@ -209,8 +241,11 @@ int Run(const Options& given)
   report["height"] = o.Height;
   report["spp_per_frame"] = o.Spp;
   report["repeats"] = o.Repeats;
-  std::printf("\n%-12s %-10s %5s %12s %9s %10s %10s %9s %6s %11s %10s\n", "strategy", "cells", "alpha", "paths/s",
-    "cost/Uni", "vol/path", "vis/path", "Mvol/s", "lanes", "var/sample", "eff/Uni");
+  report["max_scattering_events"] = mapper->GetMaximumScatteringEvents();
+  report["light_events"] = o.LightEvents;
+  report["roulette_depth"] = mapper->GetRussianRouletteDepth();
+  std::printf("\n%-12s %-10s %5s %12s %9s %10s %10s %9s %6s %11s %10s %8s %8s\n", "strategy", "cells", "alpha", "paths/s",
+    "cost/Uni", "vol/path", "vis/path", "Mvol/s", "lanes", "var/sample", "eff/Uni", "ev/path", "T<0.01");
   for (const auto& m : results)
   {
     // Equal-time error of an unbiased estimator ~ variance x time per sample: efficiency = 1 / (var t).
@@ -220,9 +255,9 @@ int Run(const Options& given)
     const double relEff = effU > 0.0 ? eff * effU : 0.0;
     const double cost = uniform && m.PathsPerSecond > 0.0 ? uniform->PathsPerSecond / m.PathsPerSecond : 0.0;
     const double volRate = m.PathsPerSecond * m.Lookups[0];
-    std::printf("%-12s %-10s %5.2f %12.0f %9.2f %10.1f %10.1f %9.1f %6.2f %11.3g %10.2f\n", m.Strategy.c_str(),
+    std::printf("%-12s %-10s %5.2f %12.0f %9.2f %10.1f %10.1f %9.1f %6.2f %11.3g %10.2f %8.2f %8.3f\n", m.Strategy.c_str(),
       m.CellMode.c_str(), m.Defensive, m.PathsPerSecond, cost, m.Lookups[0], m.Lookups[2], volRate / 1e6,
-      m.LaneOccupancy, m.Variance, relEff);
+      m.LaneOccupancy, m.Variance, relEff, m.EventsPerPath, m.BlockedShadowRays);
     report["strategies"].push_back({ { "strategy", m.Strategy }, { "cell_mode", m.CellMode },
       { "defensive_weight", m.Defensive },
       { "seconds_per_frame", m.SecondsPerFrame }, { "paths_per_second", m.PathsPerSecond },
@@ -231,12 +266,14 @@ int Run(const Options& given)
       { "lane_occupancy", m.LaneOccupancy },
       { "volume_samples_per_second", volRate }, { "variance_per_sample", m.Variance },
       { "mean_radiance", m.MeanRadiance }, { "efficiency_relative_to_uniform", relEff },
-      { "sweep_seconds", m.SweepSeconds } });
+      { "sweep_seconds", m.SweepSeconds }, { "scattering_events_per_path", m.EventsPerPath },
+      { "shadow_rays_per_path", m.ShadowRaysPerPath }, { "blocked_shadow_ray_fraction", m.BlockedShadowRays } });
   }
   std::printf("(cost/Uni: device time per sample relative to Uniform; vol, vis: trilinear volume samples and\n"
               " visibility texels read per path; lanes: SIMD occupancy of the tracking loops, the steps the lanes\n"
               " took over the steps their groups ran x the group's width; eff/Uni: 1/(variance x time per sample) relative to Uniform,\n"
-              " i.e. how much faster the error falls at equal time)\n");
+              " i.e. how much faster the error falls at equal time; ev/path: scattering events per path; T<0.01: the\n"
+              " fraction of shadow rays whose transmittance was below 0.01, from the counted frame)\n");
 
   // The device's ceiling: the plainest trilinear ray march over the same volume.
   vs::VolumeScene plain(vs::Context::Default());
@@ -297,6 +334,14 @@ void AddBenchOverhead(CLI::App& bench)
        "the shadow rays' transmittance estimator: ratio-tracking (residual with --control shadow or both) or "
        "ray-marching (Kettunen et al. 2021's unbiased ray marching)")
     ->check(CLI::IsMember({ "ratio-tracking", "ray-marching" }));
+  cmd->add_option("--max-scattering-events", o->MaxEvents,
+       "the most scattering events a path may have (default: the scene's render.max_scattering_events)")
+    ->check(CLI::Range(1, 100000));
+  cmd->add_option("--roulette-depth", o->RouletteDepth, "the event from which Russian roulette may end a path")
+    ->check(CLI::Range(1, 65535));
+  cmd->add_option("--light-events", o->LightEvents,
+    "LO:HI: next-event estimation alone, scored at scattering events LO to HI only (e.g. 1:1, 2:2, 3:4, 5:1024): "
+    "the variance of the light sample at that depth, per strategy");
   cmd->add_option("--camera", o->Camera, "camera estimator: collision (delta tracking) or reservoir")
     ->check(CLI::IsMember({ "collision", "reservoir" }));
   cmd->add_option("--defensive", o->Defensive, "TwoStep's defensive weights to measure (default 0 = plain TwoStep)")

@@ -34,7 +34,7 @@ std::vector<double> AccumulationSignature::Of(const vs::shared::VsMonteCarloPara
   // Not in the signature: directionSources, which MonteCarloPass sets from the grid as it fills in
   // (samples of every stage of the grid are averaged; VisibilityGridUpdater).
   static_assert(sizeof(vs::shared::VsMonteCarloParams) == sizeof(vs::shared::VsCameraParams) +
-        sizeof(vs::shared::VsVolumeParams) + sizeof(vs::shared::VsGridParams) + 4 * 16 +
+        sizeof(vs::shared::VsVolumeParams) + sizeof(vs::shared::VsGridParams) + 5 * 16 +
         vs::shared::VS_MAX_RENDER_DIRECTIONS * 4,
     "a member was added to VsMonteCarloParams: add it to the signature");
   static_assert(sizeof(vs::shared::VsVolumeParams) == 64 + 7 * 16 + vs::shared::VS_MAX_CLIP_PLANES * 16,
@@ -67,7 +67,8 @@ std::vector<double> AccumulationSignature::Of(const vs::shared::VsMonteCarloPara
   add({ double(p.grid.side), double(p.strategy), double(p.samplesPerFrame), double(p.cellMode),
     double(p.environmentLevels), p.visibilityEpsilon, p.environmentIntensity, p.squareScale, p.defensiveWeight,
     p.cellWalkDepth, double(p.shadowRays), double(p.cameraEstimator), double(p.transmittance), double(p.background),
-    double(p.controlExtinction), double(p.pixelSampler) });
+    double(p.controlExtinction), double(p.pixelSampler), double(p.maxEvents), p.anisotropy, double(p.rouletteDepth),
+    double(p.mis), double(p.lightEvents) });
   return s;
 }
 }

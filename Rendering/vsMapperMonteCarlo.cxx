@@ -55,6 +55,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
+#include "vtkVersionMacros.h"
 #include "vtkVolumeProperty.h"
 #include "vtkWeakPointer.h"
 
@@ -63,6 +64,36 @@
 #include <cmath>
 
 using vs::EmissionAbsorptionFrame;
+
+namespace
+{
+// The transport settings of the parameters: the event limit and the phase's anisotropy (with VTK >=
+// 9.2 the volume property's ScatteringAnisotropy where the mapper's is 0). Out-of-range values are
+// an InputError naming the setting, the value and its range.
+void SetTransport(vs::shared::VsMonteCarloParams& p, int maxEvents, double anisotropy, vtkVolumeProperty* property)
+{
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+  if (anisotropy == 0.0 && property)
+  {
+    anisotropy = property->GetScatteringAnisotropy();
+  }
+#else
+  (void)property;
+#endif
+  if (maxEvents < 1 || uint32_t(maxEvents) > vs::shared::VS_MAX_SCATTERING_EVENTS)
+  {
+    throw vs::InputError("MaximumScatteringEvents must be in [1, " +
+      std::to_string(vs::shared::VS_MAX_SCATTERING_EVENTS) + "], got " + std::to_string(maxEvents));
+  }
+  if (!(anisotropy > -1.0 && anisotropy < 1.0))
+  {
+    throw vs::InputError("ScatteringAnisotropy (the Henyey-Greenstein g) must be in (-1, 1), got " +
+      std::to_string(anisotropy));
+  }
+  p.maxEvents = uint32_t(maxEvents);
+  p.anisotropy = float(anisotropy);
+}
+}
 
 void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars)
 {
@@ -88,6 +119,14 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume
   p.defensiveWeight = float(this->DefensiveWeight);
   p.transmittance = uint32_t(this->TransmittanceEstimator);
   p.volume.extinctionFactor = vs::HasEffectiveGradientOpacity(property) ? 1u : 0u; // the kernel's factor volume
+  try
+  {
+    SetTransport(p, this->MaximumScatteringEvents, this->ScatteringAnisotropy, property);
+  }
+  catch (const vs::InputError&)
+  {
+    return; // the render reports it
+  }
   // A pass of its own: the pipeline lands in the context's cache, where the view's pass finds it
   // (waiting for it if the render gets there first); the view's passes come and go (SwitchView).
   const bool table = this->DirectionTable;
@@ -227,6 +266,15 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   p.cameraEstimator = uint32_t(this->CameraEstimator);
   p.controlExtinction = uint32_t(this->ControlExtinction);
   p.pixelSampler = uint32_t(this->Sampler);
+  SetTransport(p, this->MaximumScatteringEvents, this->ScatteringAnisotropy, vol->GetProperty());
+  p.mis = uint32_t(this->MultipleImportanceSampling);
+  p.rouletteDepth = uint32_t(this->RussianRouletteDepth);
+  if (this->LightEventRange[0] > 0 || this->LightEventRange[1] > 0)
+  {
+    const int lo = std::max(1, std::min(this->LightEventRange[0], 0xffff));
+    const int hi = std::max(lo, std::min(this->LightEventRange[1] > 0 ? this->LightEventRange[1] : 0xffff, 0xffff));
+    p.lightEvents = uint32_t(lo) | (uint32_t(hi) << 16);
+  }
   if (grid)
   {
     auto c = grid->Cells();
@@ -358,6 +406,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       this->LastDirectionTableSeconds = pass->LastDirectionTableSeconds();
     }
     this->DirectionTableBuildCount = int(I.Table->Builds());
+    this->MeanScatteringEvents = pass->MeanEventsPerPath();
     if (this->CountLookups)
     {
       auto n = pass->LastLookups();
@@ -365,6 +414,8 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       this->LastLookupCounts[1] = double(n[1]);
       this->LastLookupCounts[2] = double(n[2]);
       this->LastLaneOccupancy = pass->LastLaneOccupancy();
+      this->LastShadowRayCounts[0] = double(pass->LastShadowRays()[0]);
+      this->LastShadowRayCounts[1] = double(pass->LastShadowRays()[1]);
     }
   }
   if (!tiled)

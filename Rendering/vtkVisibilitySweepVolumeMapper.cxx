@@ -482,6 +482,8 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShadowRays: " << this->ShadowRays << " per scatter point\n";
   os << indent << "DirectionTable: " << (this->DirectionTable ? "on" : "off") << "\n";
   os << indent << "DefensiveWeight: " << this->DefensiveWeight << "\n";
+  os << indent << "MaximumScatteringEvents: " << this->MaximumScatteringEvents << "\n";
+  os << indent << "ScatteringAnisotropy: " << this->ScatteringAnisotropy << "\n";
   os << indent << "CameraEstimator: " << this->GetCameraEstimatorAsString() << "\n";
   os << indent << "ControlExtinction: " << this->GetControlExtinctionAsString() << "\n";
   os << indent << "TransmittanceEstimator: " << this->GetTransmittanceEstimatorAsString() << "\n";
@@ -534,6 +536,10 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastLookupCounts: " << this->LastLookupCounts[0] << " " << this->LastLookupCounts[1] << " "
      << this->LastLookupCounts[2] << "\n";
   os << indent << "LastLaneOccupancy: " << this->LastLaneOccupancy << "\n";
+  os << indent << "MeanScatteringEvents: " << this->MeanScatteringEvents << "\n";
+  os << indent << "MultipleImportanceSampling: " << this->MultipleImportanceSampling << "\n";
+  os << indent << "RussianRouletteDepth: " << this->RussianRouletteDepth << "\n";
+  os << indent << "LightEventRange: " << this->LightEventRange[0] << " " << this->LightEventRange[1] << "\n";
   os << indent << "UpdateScheme: " << this->GetUpdateSchemeAsString() << "\n";
   os << indent << "SkipUnlitDirections: " << (this->SkipUnlitDirections ? "On" : "Off") << "\n";
   os << indent << "UnlitDirections: " << this->UnlitDirections << "\n";

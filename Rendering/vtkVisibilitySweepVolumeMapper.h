@@ -181,6 +181,60 @@ public:
   vtkGetMacro(DefensiveWeight, double);
   ///@}
 
+  ///@{
+  /** Full light transport: the most scattering events a path may have (1 = single scattering).
+   *  At each event the environment is sampled with the strategy (a ratio-tracked shadow ray) and the
+   *  path continues in a direction drawn from the phase function, the two combined by multiple
+   *  importance sampling (power heuristic); Russian roulette ends paths long before the limit. At 1,
+   *  with ScatteringAnisotropy 0, the single-scattering estimator renders (its images as before full
+   *  transport). Values outside [1, 100000] are an error at render time naming the setting (nothing
+   *  is rendered). Default 1024: truncation then loses far below 0.5% of the light on every benchmark
+   *  scene (docs/benchmarks.md). */
+  vtkSetMacro(MaximumScatteringEvents, int);
+  vtkGetMacro(MaximumScatteringEvents, int);
+  ///@}
+
+  ///@{
+  /** The Henyey-Greenstein phase function's anisotropy g, in (-1, 1): g > 0 scatters forward (the
+   *  volume glows when seen towards the light), g < 0 backward, 0 isotropically (VTK 9.2's
+   *  vtkVolumeProperty::ScatteringAnisotropy has the same meaning). Built against VTK >= 9.2 (as in
+   *  ParaView), a mapper value of 0 takes the volume property's ScatteringAnisotropy. A value outside
+   *  (-1, 1) or not finite is an error at render time naming the setting. Default 0. */
+  vtkSetMacro(ScatteringAnisotropy, double);
+  vtkGetMacro(ScatteringAnisotropy, double);
+  ///@}
+
+  ///@{
+  /** The scattering event from which Russian roulette may end a path (full transport): it then
+   *  survives with probability min(max(throughput), 0.95), its throughput divided by it (unbiased;
+   *  the cap ends paths of albedo 1 too). Default 4 (docs/benchmarks.md measures 1 to 16). */
+  vtkSetClampMacro(RussianRouletteDepth, int, 1, 65535);
+  vtkGetMacro(RussianRouletteDepth, int);
+  ///@}
+
+  enum MultipleImportanceSamplingModes
+  {
+    PowerHeuristic = 0,    // light sampling and phase sampling at every event, power heuristic (default)
+    LightSamplingOnly = 1, // next-event estimation alone: a continuation that escapes adds nothing
+    PhaseSamplingOnly = 2, // the phase-sampled continuation alone: no shadow rays
+    BalanceHeuristic = 3   // both, balance heuristic
+  };
+  ///@{
+  /** How the environment seen from a scattering event is estimated under full transport (all
+   *  unbiased; the others are for comparisons, docs/benchmarks.md). Default PowerHeuristic. */
+  vtkSetClampMacro(MultipleImportanceSampling, int, PowerHeuristic, BalanceHeuristic);
+  vtkGetMacro(MultipleImportanceSampling, int);
+  ///@}
+
+  ///@{
+  /** Benchmarks: next-event estimation only at scattering events LightEventRange[0] ..=
+   *  LightEventRange[1] (counted from 1; (0, 0), the default: at every event). With
+   *  LightSamplingOnly the image is the light that reaches the camera through those events alone
+   *  (vissweep bench overhead --light-events). */
+  vtkSetVector2Macro(LightEventRange, int);
+  vtkGetVector2Macro(LightEventRange, int);
+  ///@}
+
   enum CameraEstimators
   {
     CollisionCamera = 0, // delta tracking to one real collision (the paper's)
@@ -559,6 +613,10 @@ public:
 
   /** Device seconds of the last render pass (0 if the device has no timestamps). */
   vtkGetMacro(LastDeviceSeconds, double);
+  /** Scattering events per path in the view's accumulation so far (full transport: the paths' mean
+   *  length; camera rays that miss the volume count 0). Single scattering (MaximumScatteringEvents 1,
+   *  ScatteringAnisotropy 0) reports 1 without counting. */
+  vtkGetMacro(MeanScatteringEvents, double);
   /** Device seconds of the last majorant update (brick ranges; runs when the data changes). */
   vtkGetMacro(LastMajorantSeconds, double);
 
@@ -574,6 +632,8 @@ public:
   vtkBooleanMacro(CountLookups, bool);
   vtkGetVector3Macro(LastLookupCounts, double);
   vtkGetMacro(LastLaneOccupancy, double);
+  /** Of the last counted frame: the shadow rays traced and those with transmittance below 0.01. */
+  vtkGetVector2Macro(LastShadowRayCounts, double);
   ///@}
   /** Times the volume was uploaded to the device (changes only when the input changes). */
   vtkGetMacro(VolumeUploadCount, int);
@@ -625,6 +685,8 @@ protected:
   int ShadowRays = 1;
   bool DirectionTable = true;
   double DefensiveWeight = 0.0;
+  int MaximumScatteringEvents = 1024;
+  double ScatteringAnisotropy = 0.0;
   int DirectionTableBuildCount = 0;
   int LightVolumeBuildCount = 0;
   double LastDirectionTableSeconds = 0.0;
@@ -673,6 +735,11 @@ protected:
   bool CountLookups = false;
   double LastLookupCounts[3] = { 0.0, 0.0, 0.0 };
   double LastLaneOccupancy = 1.0;
+  double MeanScatteringEvents = 0.0;
+  double LastShadowRayCounts[2] = { 0.0, 0.0 };
+  int MultipleImportanceSampling = PowerHeuristic;
+  int RussianRouletteDepth = 4;
+  int LightEventRange[2] = { 0, 0 };
   int VolumeUploadCount = 0;
   int SelectionRenderCount = 0;
   int TileRenderCount = 0;

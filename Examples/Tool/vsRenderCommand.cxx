@@ -112,6 +112,9 @@ int Run(const RenderOptions& o)
   stats["pending_directions"] = mapper->GetPendingDirections();
   stats["seed"] = scene.Render.Seed;
   stats["shadow_rays"] = mapper->GetShadowRays();
+  stats["max_scattering_events"] = mapper->GetMaximumScatteringEvents();
+  stats["anisotropy"] = mapper->GetScatteringAnisotropy();
+  stats["mean_scattering_events_per_path"] = mapper->GetMeanScatteringEvents();
   stats["spp"] = reached;
   if (timed)
   {
@@ -173,6 +176,14 @@ int Run(const RenderOptions& o)
                 "%.3g paths/s\n",
       scene.Render.Width, scene.Render.Height, scene.Render.Strategy.c_str(), reached, renderSeconds, setupSeconds,
       mapper->GetLastMajorantSeconds(), sweepSeconds, deviceSeconds, stats["paths_per_second"].get<double>());
+    if (scene.Render.Mode == "monte-carlo")
+    {
+      std::printf("light transport: %s, %.2f scattering events per path, anisotropy %g\n",
+        mapper->GetMaximumScatteringEvents() > 1
+          ? ("up to " + std::to_string(mapper->GetMaximumScatteringEvents()) + " events").c_str()
+          : "single scattering",
+        mapper->GetMeanScatteringEvents(), mapper->GetScatteringAnisotropy());
+    }
     for (const auto& out : o.Outputs)
     {
       std::printf("wrote %s\n", out.c_str());
@@ -214,6 +225,18 @@ Scene LoadScene(const RenderOptions& o)
   if (!o.Mode.empty())
   {
     scene.Render.Mode = SceneRenderModes()[RenderModeIndex(o.Mode, "--mode")];
+  }
+  if (o.MaxScatteringEvents > 0)
+  {
+    scene.Render.MaxScatteringEvents = o.MaxScatteringEvents;
+  }
+  if (o.Anisotropy)
+  {
+    if (!(*o.Anisotropy > -1.0 && *o.Anisotropy < 1.0))
+    {
+      throw std::runtime_error("--anisotropy must be in (-1, 1), got " + std::to_string(*o.Anisotropy));
+    }
+    scene.Render.Anisotropy = *o.Anisotropy;
   }
   return scene;
 }
@@ -367,6 +390,13 @@ void AddRender(CLI::App& app)
   cmd->add_option("--mode", o->Mode,
     "monte-carlo (the default), preview (noise-free single scattering from the light volume), ambient-occlusion "
     "or emission-absorption (overrides the scene's render.mode)");
+  cmd->add_option("--max-scattering-events", o->MaxScatteringEvents,
+      "the most scattering events a path may have, 1 (single scattering) to 100000 (overrides the scene's "
+      "render.max_scattering_events, default 1024)")
+    ->check(CLI::Range(1, 100000));
+  cmd->add_option("--anisotropy", o->Anisotropy,
+    "the Henyey-Greenstein phase function's g in (-1, 1): > 0 forward, < 0 backward scattering (overrides the "
+    "scene's render.anisotropy, default 0)");
   // CLI::NonNegativeNumber printed its bound as a 309-digit double ("not in range 0.000000 to 17976...").
   cmd->add_option("--seed", o->Seed, "random seed, 0 to 2147483647 (overrides the scene)")
     ->check(CLI::Range(0, std::numeric_limits<int>::max()));

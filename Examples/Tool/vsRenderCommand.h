@@ -9,6 +9,7 @@
 #include "vsSceneFile.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,8 @@ struct RenderOptions
   double TimeBudget = 0.0;
   std::string Strategy;
   std::string Mode; // the render mode (overrides render.mode)
+  int MaxScatteringEvents = 0;  // 0: the scene's render.max_scattering_events
+  std::optional<double> Anisotropy; // the scene's render.anisotropy when absent
   int Seed = -1;
   int SamplesPerFrame = 0; // 0: frames of about AutoFrameSeconds
   std::string Json;

@@ -196,6 +196,8 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   mapper->SetTransmittanceEstimator(TransmittanceEstimatorIndex(scene.Render.TransmittanceEstimator));
   mapper->SetSampler(SamplerIndex(scene.Render.Sampler));
   mapper->SetShadowRays(scene.Render.ShadowRays);
+  mapper->SetMaximumScatteringEvents(scene.Render.MaxScatteringEvents);
+  mapper->SetScatteringAnisotropy(scene.Render.Anisotropy);
   mapper->SetDirectionsPerFrame(scene.Render.DirectionsPerFrame);
   mapper->SetStaticInterval(scene.Render.StaticInterval);
   const auto& v = scene.Visibility;

@@ -227,6 +227,8 @@ Scene::RenderSection ParseRender(const json& value)
   v.Read("directions_per_frame", s.DirectionsPerFrame);
   v.Read("static_interval", s.StaticInterval);
   v.Read("shadow_rays", s.ShadowRays);
+  v.Read("max_scattering_events", s.MaxScatteringEvents);
+  v.Read("anisotropy", s.Anisotropy);
   v.Read("control_extinction", s.ControlExtinction);
   v.Read("transmittance_estimator", s.TransmittanceEstimator);
   v.Read("sampler", s.Sampler);

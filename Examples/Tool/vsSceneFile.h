@@ -100,6 +100,10 @@ struct Scene
     std::string Sampler = "sobol";
     // Shadow rays per scatter point (vtkVisibilitySweepVolumeMapper::ShadowRays, 1-64: splitting).
     int ShadowRays = 1;
+    // Full transport (vtkVisibilitySweepVolumeMapper::MaximumScatteringEvents, 1-100000; 1: single
+    // scattering) and the phase function's anisotropy (ScatteringAnisotropy, in (-1, 1)).
+    int MaxScatteringEvents = 1024;
+    double Anisotropy = 0.0;
     // vtkVisibilitySweepVolumeMapper::RenderMode: "monte-carlo", "preview", "ambient-occlusion" or
     // "emission-absorption".
     std::string Mode = "monte-carlo";

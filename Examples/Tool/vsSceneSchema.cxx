@@ -88,6 +88,8 @@ const std::vector<SceneKey>& SceneSchema()
     { "render", "sampler", T::Word, R::Any, 0, 0, "\"sobol\"", false, "sampler", "", { "independent", "sobol" }, "where a sample's jitter and light direction come from" },
     { "render", "mode", T::Word, R::Any, 0, 0, "\"monte-carlo\"", false, "render mode", "", { "emission-absorption", "monte-carlo", "preview", "ambient-occlusion" }, "the mapper's RenderMode" },
     { "render", "shadow_rays", T::Integer, R::Closed, 1, 64, "1", false, "shadow rays per scatter point", "", {}, "shadow rays per scatter point (splitting)" },
+    { "render", "max_scattering_events", T::Integer, R::Closed, 1, 100000, "1024", false, "scattering events", "", {}, "the most scattering events a path may have (1: single scattering)" },
+    { "render", "anisotropy", T::Number, R::Open, -1, 1, "0", false, "anisotropy", "", {}, "the Henyey-Greenstein phase function's g (> 0 forward, < 0 backward)" },
 
     // The mapper's settings: absent = the mapper's default (vtkVisibilitySweepVolumeMapper.h).
     { "visibility", "direction_resolution", T::Integer, R::Closed, 1, 1024, nullptr, false, "resolution", "", {}, "directions per octahedral side: 4, 8 or 16" },

@@ -58,10 +58,11 @@ bool Scene::CameraSection::operator==(const CameraSection& o) const
 bool Scene::RenderSection::operator==(const RenderSection& o) const
 {
   return std::tie(Width, Height, Spp, Strategy, Seed, Exposure, ToneMapping, UpdateScheme, DirectionsPerFrame,
-           StaticInterval, ControlExtinction, TransmittanceEstimator, Sampler, ShadowRays, Mode) ==
+           StaticInterval, ControlExtinction, TransmittanceEstimator, Sampler, ShadowRays, Mode, MaxScatteringEvents,
+           Anisotropy) ==
     std::tie(o.Width, o.Height, o.Spp, o.Strategy, o.Seed, o.Exposure, o.ToneMapping, o.UpdateScheme,
       o.DirectionsPerFrame, o.StaticInterval, o.ControlExtinction, o.TransmittanceEstimator, o.Sampler,
-      o.ShadowRays, o.Mode);
+      o.ShadowRays, o.Mode, o.MaxScatteringEvents, o.Anisotropy);
 }
 
 bool Scene::VisibilitySection::operator==(const VisibilitySection& o) const
@@ -177,7 +178,8 @@ json ToJson(const Scene& s)
     { "directions_per_frame", s.Render.DirectionsPerFrame }, { "static_interval", s.Render.StaticInterval },
     { "control_extinction", s.Render.ControlExtinction },
     { "transmittance_estimator", s.Render.TransmittanceEstimator }, { "sampler", s.Render.Sampler },
-    { "shadow_rays", s.Render.ShadowRays }, { "mode", s.Render.Mode } };
+    { "shadow_rays", s.Render.ShadowRays }, { "mode", s.Render.Mode },
+    { "max_scattering_events", s.Render.MaxScatteringEvents }, { "anisotropy", s.Render.Anisotropy } };
 
   const auto& v = s.Visibility;
   json vis = json::object();

@@ -96,3 +96,29 @@ vec3 sample_direction(uint strategy, vec2 u, out float pdf)
   return vs_sample_direction_pyramid(strategy, D, K, u, pdf);
 #endif
 }
+
+/* The pdf with which sample_direction (after prepare_directions at the same point) would return
+ * direction w: what multiple importance sampling weighs a phase-sampled continuation against. */
+float direction_pdf(uint strategy, vec3 w)
+{
+  uint K = gEnvLevels;
+  uint D = gGridSide;
+  if (strategy == VS_STRATEGY_ENVIRONMENT)
+    return vs_pdf_environment(K, w);
+  if (strategy == VS_STRATEGY_UNIFORM || D == 0u)
+    return vs_pdf_uniform(w);
+#ifdef VS_NO_GRID
+  return vs_pdf_uniform(w);
+#else
+  if (VS_SPEC_DEFENSIVE != 0u && strategy == VS_STRATEGY_TWO_STEP)
+  {
+    float alpha = gMixture;
+    if (VS_SPEC_TABLE != 0u)
+      return vs_pdf_defensive_table(gTableBase, D, K, alpha, w);
+    return vs_pdf_defensive_pyramid(D, K, alpha, w);
+  }
+  if (VS_SPEC_TABLE != 0u)
+    return vs_pdf_direction_table(strategy, gTableBase, D, K, w);
+  return vs_pdf_direction_pyramid(strategy, D, K, w);
+#endif
+}

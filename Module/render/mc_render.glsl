@@ -40,6 +40,8 @@
 #include "ray_marching.h"
 #endif
 #include "mc_params.h"
+#include "mis.h"
+#include "sphere.h"
 #include "rng.h"
 #include "sobol.h"
 #include "strategies.h"
@@ -114,39 +116,116 @@ void accumulate(inout Accumulator acc, vec4 v)
   acc.sq += w * w;
 }
 
-/* One path of pixel `pix`: sample `sampleIndex` of the image (its random numbers depend on the
- * pixel, the sample index and the seed only). Returns (rgb, alpha); adds the back-edges of its
- * camera and shadow rays to cameraCost and shadowCost, and says whether it scattered. */
+/* The camera ray of sample `sampleIndex` of pixel `pix`: world direction dw, index-space origin o and
+ * direction d, its interval [t0, t1) in the box (up to the opaque depth), and whether it sees the
+ * environment if it escapes. Under the Sobol sampler (VS_SAMPLER_SOBOL) the pixel jitter comes from the
+ * pixel's own scrambled Sobol sequence sobolSeeds.x, indexed by the sample; else from rng. */
+struct CameraRay
+{
+  vec3 o, d, dw;
+  float t0, t1;
+  bool seesEnvironment;
+};
+
+CameraRay camera_ray(uvec2 pix, uint sampleIndex, float depth, inout VsRng rng, uvec3 sobolSeeds)
+{
+  uint W = gWidth, H = gHeight;
+  vec2 jitter = VS_SPEC_SOBOL ? vs_sobol_2d(sampleIndex, sobolSeeds.x) : vs_rng_vec2(rng);
+  vec2 ndc = (vec2(pix) + jitter) / vec2(W, H) * 2.0 - 1.0;
+  vec4 pn = gInvViewProj * vec4(ndc, -1.0, 1.0);
+  vec4 pf = gInvViewProj * vec4(ndc, 1.0, 1.0);
+  vec3 ow = pn.xyz / pn.w;
+  CameraRay r;
+  r.dw = normalize(pf.xyz / pf.w - ow);
+  float tDepth = 1e30;
+  if (depth < 1.0)
+  {
+    vec4 pd = gInvViewProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
+    tDepth = dot(pd.xyz / pd.w - ow, r.dw);
+  }
+  r.o = (gWorldToIndex * vec4(ow, 1.0)).xyz;
+  r.d = (gWorldToIndex * vec4(r.dw, 0.0)).xyz;
+  vec2 ti = ray_interval(r.o, r.d);
+  r.t0 = max(ti.x, 0.0);
+  r.t1 = min(ti.y, tDepth);
+  r.seesEnvironment = tDepth >= 1e30 && gBackgroundVisible;
+  return r;
+}
+
+/* Next-event estimation at scatter point x (index space; prepare_directions done there) of a ray
+ * travelling along world direction dw: gShadowRays directions from the strategy, each with its
+ * transmittance to the box. Returns the sum over them of T L_env / pdf (single scattering: the caller
+ * multiplies by the isotropic phase), or, under full transport (VS_SPEC_PATH), of
+ * T L_env f_HG w_L / pdf, w_L the MIS weight against the phase-sampled continuation where `weighted`
+ * (mis.h), else 1. Their mean over the rays is an unbiased estimate of the light in-scattered at x.
+ * Under the Sobol sampler the first event's directions and the first two steps of each shadow ray's
+ * tracking come from the pixel's Sobol sequences sobolSeeds.y and .z, indexed by the sample (a pixel's
+ * samples stratified); deeper events draw from rng. */
+vec3 light_samples(vec3 x, vec3 dw, uint sampleIndex, bool firstEvent, bool weighted, inout VsRng rng,
+  uvec3 sobolSeeds, uint scatterCostPerRay, inout uint shadowCost)
+{
+  vec3 sum = vec3(0.0);
+  bool sobol = VS_SPEC_SOBOL && firstEvent;
+  uint shadowLeft = gShadowBudget; /* the same in every lane here: it drops by the group's steps */
+  for (uint k = 0u; k < gShadowRays; ++k)
+  {
+    float pdf;
+    /* The light's 2D number: the pixel's Sobol point (its samples' directions stratified), or the
+     * sample's own random pair. */
+    vec2 u = sobol ? vs_sobol_2d(sampleIndex * gShadowRays + k, sobolSeeds.y) : vs_rng_vec2(rng);
+    vec3 w = sample_direction(gStrategy, u, pdf);
+    vec3 Le = pdf > 0.0 ? env_radiance(w) : vec3(0.0);
+    uint steps = 0u;
+    if (any(greaterThan(Le, vec3(0.0))))
+    {
+      vec3 di = (gWorldToIndex * vec4(w, 0.0)).xyz;
+      vec2 ts = ray_interval(x, di);
+      /* The first two steps of its ratio tracking from the pixel's third Sobol sequence, indexed as
+       * the direction's: a pixel's shadow rays meet the medium at stratified depths (on the skin
+       * most of the transmittance's variance): 8-15% lower MSE at equal spp (docs/benchmarks.md). */
+      vec2 strata = sobol ? vs_sobol_2d(sampleIndex * gShadowRays + k, sobolSeeds.z) : vec2(-1.0);
+      float T = shadow_transmittance(x, di, 0.0, ts.y, strata, rng, min(VS_TRACKING_CAP, max(shadowLeft, 1u)), steps);
+#ifdef VS_COUNT_LOOKUPS
+      gShadowRaysCast++;
+      gShadowRaysBlocked += T < 0.01 ? 1u : 0u;
+#endif
+      if (VS_SPEC_PATH == 0u)
+        sum += T * Le / pdf;
+      else
+      {
+        float phase = vs_hg_pdf(dot(dw, w), gAnisotropy);
+        float weight = 1.0;
+        if (weighted)
+          weight = gMis == VS_MIS_POWER ? vs_power_heuristic(float(gShadowRays), pdf, 1.0, phase)
+                                        : vs_balance_heuristic(float(gShadowRays), pdf, 1.0, phase);
+        sum += T * Le * (phase * weight / pdf);
+      }
+    }
+    /* The lanes here run each shadow ray's loop as long as the longest of them. */
+    uint groupSteps = subgroupMax(steps);
+    shadowLeft -= min(shadowLeft, groupSteps);
+    shadowCost += groupSteps + scatterCostPerRay;
+  }
+  return sum;
+}
+
+/* Single scattering with the isotropic phase (VS_SPEC_PATH 0): one sample of pixel `pix`, sample
+ * `sampleIndex` of the image (its random numbers depend on the pixel, the sample index and the seed
+ * only). Returns (rgb, alpha); adds the back-edges of its camera and shadow rays to cameraCost and
+ * shadowCost, and says whether it scattered. */
 vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPerRay, inout uint cameraCost,
   inout uint shadowCost, out bool scattered)
 {
   scattered = false;
-  uint W = gWidth, H = gHeight;
   VsRng rng = vs_rng_init(pix, sampleIndex, gSeed);
   /* Under the Sobol sampler (VS_SAMPLER_SOBOL) the pixel jitter, the light directions and the first
    * two steps of each shadow ray's tracking come from the pixel's own scrambled Sobol sequences
    * (sobol.h; three seeds, so the three are independent), indexed by the sample: unbiased, and
    * stratified across the pixel's samples; everything else from the sample's hash stream. */
   uvec3 sobolSeeds = VS_SPEC_SOBOL ? vs_pcg4d(uvec4(pix, gSeed, 0x50b01u)).xyz : uvec3(0u);
-  vec2 jitter = VS_SPEC_SOBOL ? vs_sobol_2d(sampleIndex, sobolSeeds.x) : vs_rng_vec2(rng);
-  vec2 ndc = (vec2(pix) + jitter) / vec2(W, H) * 2.0 - 1.0;
-  vec4 pn = gInvViewProj * vec4(ndc, -1.0, 1.0);
-  vec4 pf = gInvViewProj * vec4(ndc, 1.0, 1.0);
-  vec3 ow = pn.xyz / pn.w;
-  vec3 dw = normalize(pf.xyz / pf.w - ow);
-  float tDepth = 1e30;
-  if (depth < 1.0)
-  {
-    vec4 pd = gInvViewProj * vec4(ndc, depth * 2.0 - 1.0, 1.0);
-    tDepth = dot(pd.xyz / pd.w - ow, dw);
-  }
-  vec3 o = (gWorldToIndex * vec4(ow, 1.0)).xyz;
-  vec3 d = (gWorldToIndex * vec4(dw, 0.0)).xyz;
-  vec2 ti = ray_interval(o, d);
-  float t0 = max(ti.x, 0.0), t1 = min(ti.y, tDepth);
+  CameraRay r = camera_ray(pix, sampleIndex, depth, rng, sobolSeeds);
 
   vec4 result = vec4(0.0);
-  bool seesEnvironment = tDepth >= 1e30 && gBackgroundVisible;
   /* The scatter point, and the factor its in-scattered light is scored with (albedo for delta
    * tracking's collision; the reservoir's weight otherwise). */
   bool scatter = false;
@@ -155,55 +234,29 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPer
   if (VS_SPEC_CAMERA == VS_CAMERA_RESERVOIR)
   {
     float T = 1.0;
-    if (t0 < t1)
-      camera_reservoir(o, d, t0, t1, rng, VS_TRACKING_CAP, cameraCost, tHit, albedo, T);
-    scatter = tHit >= 0.0 && t0 < t1 && any(greaterThan(albedo, vec3(0.0)));
-    result = seesEnvironment ? vec4(T * env_radiance_display(dw), gEscapeAlpha > 0.5 ? 1.0 : 1.0 - T)
-                             : vec4(0.0, 0.0, 0.0, 1.0 - T);
+    if (r.t0 < r.t1)
+      camera_reservoir(r.o, r.d, r.t0, r.t1, rng, VS_TRACKING_CAP, cameraCost, tHit, albedo, T);
+    scatter = tHit >= 0.0 && r.t0 < r.t1 && any(greaterThan(albedo, vec3(0.0)));
+    result = r.seesEnvironment ? vec4(T * env_radiance_display(r.dw), gEscapeAlpha > 0.5 ? 1.0 : 1.0 - T)
+                               : vec4(0.0, 0.0, 0.0, 1.0 - T);
   }
-  else if (t0 < t1 && delta_track(o, d, t0, t1, rng, VS_TRACKING_CAP, cameraCost, tHit, albedo))
+  else if (r.t0 < r.t1 && delta_track(r.o, r.d, r.t0, r.t1, rng, VS_TRACKING_CAP, cameraCost, tHit, albedo))
   {
     result.a = 1.0;
     scatter = any(greaterThan(albedo, vec3(0.0)));
   }
-  else if (seesEnvironment)
+  else if (r.seesEnvironment)
   {
-    result = vec4(env_radiance_display(dw), gEscapeAlpha);
+    result = vec4(env_radiance_display(r.dw), gEscapeAlpha);
   }
   if (scatter)
   {
     scattered = true;
-    vec3 x = o + tHit * d;
+    vec3 x = r.o + tHit * r.d;
     prepare_directions(x, gStrategy, rng);
     /* gShadowRays directions per scatter point (splitting): their mean is an unbiased estimate
      * of the in-scattered light at x, for the cost of one camera ray. */
-    vec3 sum = vec3(0.0);
-    uint shadowLeft = gShadowBudget; /* the same in every lane here: it drops by the group's steps */
-    for (uint k = 0u; k < gShadowRays; ++k)
-    {
-      float pdf;
-      /* The light's 2D number: the pixel's Sobol point (its samples' directions stratified), or the
-       * sample's own random pair. */
-      vec2 u = VS_SPEC_SOBOL ? vs_sobol_2d(sampleIndex * gShadowRays + k, sobolSeeds.y) : vs_rng_vec2(rng);
-      vec3 w = sample_direction(gStrategy, u, pdf);
-      vec3 Le = pdf > 0.0 ? env_radiance(w) : vec3(0.0);
-      uint steps = 0u;
-      if (any(greaterThan(Le, vec3(0.0))))
-      {
-        vec3 di = (gWorldToIndex * vec4(w, 0.0)).xyz;
-        vec2 ts = ray_interval(x, di);
-        /* The first two steps of its ratio tracking from the pixel's third Sobol sequence, indexed as
-         * the direction's: a pixel's shadow rays meet the medium at stratified depths (on the skin
-         * most of the transmittance's variance): 8-15% lower MSE at equal spp (docs/benchmarks.md). */
-        vec2 strata = VS_SPEC_SOBOL ? vs_sobol_2d(sampleIndex * gShadowRays + k, sobolSeeds.z) : vec2(-1.0);
-        float T = shadow_transmittance(x, di, 0.0, ts.y, strata, rng, min(VS_TRACKING_CAP, max(shadowLeft, 1u)), steps);
-        sum += T * Le / pdf;
-      }
-      /* The lanes here run each shadow ray's loop as long as the longest of them. */
-      uint groupSteps = subgroupMax(steps);
-      shadowLeft -= min(shadowLeft, groupSteps);
-      shadowCost += groupSteps + scatterCostPerRay;
-    }
+    vec3 sum = light_samples(x, r.dw, sampleIndex, true, false, rng, sobolSeeds, scatterCostPerRay, shadowCost);
     result.rgb += albedo * VS_INV_4PI * sum / float(gShadowRays);
   }
   /* Non-finite contributions (should not happen) are dropped rather than poisoning the pixel. */
@@ -211,6 +264,10 @@ vec4 render_sample(uvec2 pix, uint sampleIndex, float depth, uint scatterCostPer
     result = vec4(0.0);
   return result;
 }
+
+#include "path_state.glsl"
+
+#include "mc_path.glsl"
 
 void main()
 {
@@ -254,6 +311,12 @@ void main()
   gClipCount = P.volume.clipPlaneCount;
   gStrategy = VS_SPEC_STRATEGY;
   gShadowRays = clamp(P.shadowRays, 1u, 64u);
+  gMaxEvents = clamp(P.maxEvents, 1u, VS_MAX_SCATTERING_EVENTS);
+  gAnisotropy = P.anisotropy;
+  gRouletteDepth = P.rouletteDepth > 0u ? P.rouletteDepth : VS_DEFAULT_ROULETTE_DEPTH;
+  gMis = P.mis;
+  gLightLo = P.lightEvents == 0u ? 1u : (P.lightEvents & 0xffffu);
+  gLightHi = P.lightEvents == 0u ? 0xffffffffu : (P.lightEvents >> 16u);
   gRefineDepth = P.cellWalkDepth > 0.0 ? P.cellWalkDepth : 32.0;
   gInterpolation = VS_SPEC_INTERPOLATION;
   vs_set_cropping(P.volume.cropLo, P.volume.cropHi, VS_SPEC_CROPPING != 0u ? P.volume.cropFlags : 0u);
@@ -274,6 +337,12 @@ void main()
    * same in every lane: each loop runs as long as its longest lane) leave room for one more
    * sample at its most expensive. */
   uint scatterCost = scatter_cost(gStrategy, P.grid.side, P.environmentLevels, VS_SPEC_CELL_MODE);
+  /* Full transport: the continuation's phase sample and its light pdf (the strategy's descents again). */
+  if (VS_SPEC_PATH != 0u)
+    scatterCost += 16u + 2u * P.environmentLevels + 2u * P.grid.side + 8u;
+  Path path = path_idle();
+  if (VS_SPEC_PATH != 0u && inside)
+    path = path_load(idx);
   /* Per shadow ray: its direction (the map is made once: counted in the first) and its clip planes. */
   uint perRay = 16u + 2u * P.environmentLevels + 6u + 4u;
   /* The shadow rays of a sample share the steps the budget leaves after the rest of its worst
@@ -284,14 +353,27 @@ void main()
   gShadowBudget = min(gShadowRays * VS_TRACKING_CAP, VS_LOOP_BUDGET - min(sampleFixed + gShadowRays, VS_LOOP_BUDGET));
   uint sampleMax = sampleFixed + gShadowBudget;
   uint cost = 0u;
+  uint events = 0u; /* scattering events of this invocation's paths (full transport) */
   while (subgroupAny(done < pc.target) && cost + sampleMax <= VS_LOOP_BUDGET)
   {
     uint cameraCost = 0u, shadowCost = 0u;
     bool scattered = false;
     if (done < pc.target)
     {
-      accumulate(acc, render_sample(pix, done, depth, perRay, cameraCost, shadowCost, scattered));
-      done += 1u;
+      if (VS_SPEC_PATH == 0u)
+      {
+        accumulate(acc, render_sample(pix, done, depth, perRay, cameraCost, shadowCost, scattered));
+        done += 1u;
+      }
+      else
+      {
+        if (path_segment(pix, done, depth, perRay, path, cameraCost, shadowCost, scattered))
+        {
+          accumulate(acc, path.L);
+          done += 1u;
+        }
+        events += scattered ? 1u : 0u;
+      }
     }
 #ifdef VS_COUNT_LOOKUPS
     /* SIMD occupancy of the tracking loops: the steps the lanes needed against the steps their
@@ -311,8 +393,18 @@ void main()
     uComp[idx] = acc.comp;
     uSq[idx] = acc.sq;
     uCount[idx] = done;
+    if (VS_SPEC_PATH != 0u)
+      path_store(idx, path);
     if (done < pc.target)
       atomicAdd(uCount[W * H], 1u);
+  }
+  /* The scattering events of the dispatch (full transport), after the short count: what the host
+   * reports as events per path. One atomic per SIMD group. */
+  if (VS_SPEC_PATH != 0u)
+  {
+    uint groupEvents = subgroupAdd(events);
+    if (subgroupElect())
+      atomicAdd(uCount[W * H + 1u], groupEvents);
   }
 #ifdef VS_COUNT_LOOKUPS
   atomicAdd(uLookups[0], gLookups.x);
@@ -320,5 +412,7 @@ void main()
   atomicAdd(uLookups[2], gLookups.z);
   atomicAdd(uLookups[3], gLaneSteps);
   atomicAdd(uLookups[4], gGroupLaneSteps);
+  atomicAdd(uLookups[5], gShadowRaysCast);
+  atomicAdd(uLookups[6], gShadowRaysBlocked);
 #endif
 }

@@ -29,6 +29,9 @@ layout(constant_id = 13) const uint VS_SPEC_TRANSMITTANCE = 0u; /* VS_TRANSMITTA
                                                               rays' estimator, = P.transmittance */
 layout(constant_id = 12) const uint VS_SPEC_FACTOR = 0u;   /* 1: the extinction is scaled by the volume's factor
                                                               (the gradient opacity, binding 16; = P.volume.extinctionFactor) */
+layout(constant_id = 14) const uint VS_SPEC_PATH = 0u;    /* 0: single scattering with the isotropic phase
+                                                             (render_sample); 1: full transport, a path per
+                                                             sample (mc_path.glsl), any event limit and phase */
 layout(constant_id = 6) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
                                                              table (binding 12), stochastic cell only */
 layout(binding = VS_MC_VOLUME, r32f) uniform readonly image3D uVolume;
@@ -46,7 +49,8 @@ layout(std430, binding = VS_MC_DEPTH) readonly buffer Depth { float uDepth[]; };
 layout(std430, binding = VS_MC_SUM) buffer Sum { vec4 uSum[]; };
 layout(std430, binding = VS_MC_COMPENSATION) buffer Compensation { vec4 uComp[]; };
 layout(std430, binding = VS_MC_SQUARES) buffer Squares { vec4 uSq[]; };
-/* Samples each pixel holds (W x H), then one counter of the pixels a dispatch left short of target. */
+/* Samples each pixel holds (W x H), then one counter of the pixels a dispatch left short of target,
+ * then one of the scattering events a Render's paths reached (full transport). */
 layout(std430, binding = VS_MC_PROGRESS) buffer Progress { uint uCount[]; };
 /* The direction table (sampling/direction_table.h): per cell, the shares of its map's quadtree nodes. */
 layout(binding = VS_MC_TABLE) uniform usamplerBuffer uTable; /* r32ui */
@@ -65,6 +69,7 @@ layout(push_constant) uniform Push { uint target; } pc;
 #ifdef VS_COUNT_LOOKUPS
 layout(std430, binding = VS_MC_LOOKUPS) buffer Lookups { uint uLookups[]; };
 uvec3 gLookups = uvec3(0u);
+uint gShadowRaysCast = 0u, gShadowRaysBlocked = 0u; /* shadow rays traced, and those with T < 0.01 */
 uint gLaneSteps = 0u, gGroupLaneSteps = 0u;
 #define VS_COUNT(i) (gLookups[i]++)
 #else
@@ -130,6 +135,12 @@ void set_ray(vec3 o, vec3 d)
   gRay.walkScale = vs_walk_scale(o, d);
 }
 uint gShadowRays;
+/* Full transport (VS_SPEC_PATH): the event limit, the phase's g, Russian roulette's first event, VS_MIS_*. */
+uint gMaxEvents;
+float gAnisotropy;
+uint gRouletteDepth;
+uint gMis;
+uint gLightLo, gLightHi; /* P.lightEvents: next-event estimation at events gLightLo ..= gLightHi */
 uint gShadowBudget; /* tracking steps the shadow rays of one sample share (main) */
 uint gTableBase; /* where the scatter cell's direction table starts (VS_SPEC_TABLE) */
 /* The stochastic cell pick's numbers: the pixel's own, the same for all its samples (main).

@@ -83,7 +83,7 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   }
   const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping,
     table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u, quads ? 1u : 0u, control,
-    params.pixelSampler == shared::VS_SAMPLER_SOBOL ? 1u : 0u, factor, transmittance };
+    params.pixelSampler == shared::VS_SAMPLER_SOBOL ? 1u : 0u, factor, transmittance, FullTransport(params) ? 1u : 0u };
   auto& slot = this->Pipelines_[specialization];
   auto& pipeline = slot[format];
   if (!pipeline)
@@ -98,7 +98,9 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
         { shared::VS_MC_SQUARES, B::StorageBuffer }, { shared::VS_MC_PROGRESS, B::StorageBuffer },
         { shared::VS_MC_TABLE, B::UniformTexelBuffer }, { shared::VS_MC_RETIRED, B::StorageImage },
         { shared::VS_MC_LOOKUPS, B::StorageBuffer }, { shared::VS_MC_QUADS, B::StorageImage },
-        { shared::VS_MC_FACTOR_IMAGE, B::StorageImage } });
+        { shared::VS_MC_FACTOR_IMAGE, B::StorageImage }, { shared::VS_MC_PATH_POSITION, B::StorageBuffer },
+        { shared::VS_MC_PATH_DIRECTION, B::StorageBuffer }, { shared::VS_MC_PATH_THROUGHPUT, B::StorageBuffer },
+        { shared::VS_MC_PATH_RADIANCE, B::StorageBuffer } });
     static const char* formats[] = { "r8 visibility", "r16 visibility", "r32f visibility",
       "r8 visibility, counting reads", "no grid" };
     const std::string name = std::string("monte carlo (") + formats[format] + ", " + StrategyName(strategy) + ", " +
@@ -110,7 +112,8 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
       (transmittance == shared::VS_TRANSMITTANCE_RAY_MARCHING ? ", ray-marched shadow rays"
           : (control & shared::VS_CONTROL_SHADOW) ? ", residual ratio tracking" : "") +
       ((control & shared::VS_CONTROL_CAMERA) ? ", decomposition tracking" : "") +
-      (params.pixelSampler == shared::VS_SAMPLER_SOBOL ? ", Sobol" : "") + (factor ? ", gradient opacity" : "") + ")";
+      (params.pixelSampler == shared::VS_SAMPLER_SOBOL ? ", Sobol" : "") + (factor ? ", gradient opacity" : "") +
+      (FullTransport(params) ? ", full transport" : "") + ")";
     if (format == 4)
     {
       pipeline = SharedPipeline(
@@ -148,6 +151,31 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
 void MonteCarloPass::Prewarm(const shared::VsMonteCarloParams& params, bool table, bool quads, bool cellWalk)
 {
   this->PipelineFor(nullptr, params, cellWalk, table && params.strategy > shared::VS_STRATEGY_ENVIRONMENT, quads);
+}
+
+bool MonteCarloPass::FullTransport(const shared::VsMonteCarloParams& params)
+{
+  // Exactly single scattering with the isotropic phase keeps the single-scattering estimator (its
+  // images are those of the kernel before full transport, bit for bit).
+  return params.maxEvents > 1u || params.anisotropy != 0.0f;
+}
+
+void MonteCarloPass::CheckScattering(const shared::VsMonteCarloParams& params)
+{
+  if (!(params.anisotropy > -1.0f && params.anisotropy < 1.0f))
+  {
+    throw InputError("the scattering anisotropy (Henyey-Greenstein g) must be in (-1, 1), got " +
+      std::to_string(params.anisotropy));
+  }
+  if (params.maxEvents < 1u || params.maxEvents > shared::VS_MAX_SCATTERING_EVENTS)
+  {
+    throw InputError("the maximum number of scattering events must be in [1, " +
+      std::to_string(shared::VS_MAX_SCATTERING_EVENTS) + "], got " + std::to_string(params.maxEvents));
+  }
+  if (params.mis > shared::VS_MIS_BALANCE)
+  {
+    throw InputError("unknown multiple importance sampling mode " + std::to_string(params.mis));
+  }
 }
 
 bool MonteCarloPass::Defensive(const shared::VsMonteCarloParams& params)
@@ -193,6 +221,10 @@ void MonteCarloPass::Reset(uint32_t width, uint32_t height)
   {
     this->Sum_.reset();
     this->Comp_.reset();
+    this->PathPosition_.reset();
+    this->PathDirection_.reset();
+    this->PathThroughput_.reset();
+    this->PathRadiance_.reset();
     this->Squares_.reset();
     this->Depth_.reset();
     this->Progress_.reset();
@@ -201,8 +233,13 @@ void MonteCarloPass::Reset(uint32_t width, uint32_t height)
     this->Squares_ = std::make_unique<Buffer>(this->Context_, pixels * 16, "radiance squares");
     this->Depth_ = std::make_unique<Buffer>(this->Context_, pixels * 4, "depth");
     // Samples per pixel, then the count of pixels a dispatch left short of its target.
-    this->Progress_ = std::make_unique<Buffer>(this->Context_, (pixels + 1) * 4, "samples per pixel");
+    // and the scattering events of a Render's paths (full transport).
+    this->Progress_ = std::make_unique<Buffer>(this->Context_, (pixels + 2) * 4, "samples per pixel");
     this->LastDepth_.clear();
+  }
+  if (this->PathPosition_)
+  {
+    this->PathPosition_->Fill(0u); // no path in flight
   }
   this->Sum_->Fill(0u);
   this->Comp_->Fill(0u);
@@ -212,6 +249,7 @@ void MonteCarloPass::Reset(uint32_t width, uint32_t height)
   this->Height_ = height;
   this->Samples_ = 0;
   this->TotalSeconds_ = 0.0;
+  this->Events_ = 0;
 }
 
 void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTable& tf,
@@ -232,6 +270,26 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   {
     this->LastDepth_ = depth.empty() ? std::vector<float>(pixels, 1.0f) : depth;
     this->Depth_->Upload(this->LastDepth_.data(), pixels * 4);
+  }
+  if (params.maxEvents == 0u)
+  {
+    params.maxEvents = 1u; // 0: the parameters' zero value, single scattering
+  }
+  CheckScattering(params);
+  const bool fullTransport = FullTransport(params);
+  if (fullTransport && !this->PathPosition_)
+  {
+    // The paths in flight between dispatches (path_state.glsl): 4 x 16 bytes per pixel, checked
+    // against the device's limits as the accumulators are (RenderTargetLimits).
+    this->PathPosition_ = std::make_unique<Buffer>(this->Context_, pixels * 16, "paths in flight: positions");
+    this->PathDirection_ = std::make_unique<Buffer>(this->Context_, pixels * 16, "paths in flight: directions");
+    this->PathThroughput_ = std::make_unique<Buffer>(this->Context_, pixels * 16, "paths in flight: throughputs");
+    this->PathRadiance_ = std::make_unique<Buffer>(this->Context_, pixels * 16, "paths in flight: radiance");
+    this->PathPosition_->Fill(0u);
+  }
+  if (!this->NoPaths_)
+  {
+    this->NoPaths_ = std::make_unique<Buffer>(this->Context_, 16, "no paths in flight");
   }
   if (!(params.defensiveWeight >= 0.0f && params.defensiveWeight <= 1.0f))
   {
@@ -337,11 +395,15 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   }
   set.Bind(shared::VS_MC_QUADS, quads ? *volume.Quads() : *this->NoQuads_);
   set.Bind(shared::VS_MC_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
+  set.Bind(shared::VS_MC_PATH_POSITION, fullTransport ? *this->PathPosition_ : *this->NoPaths_)
+    .Bind(shared::VS_MC_PATH_DIRECTION, fullTransport ? *this->PathDirection_ : *this->NoPaths_)
+    .Bind(shared::VS_MC_PATH_THROUGHPUT, fullTransport ? *this->PathThroughput_ : *this->NoPaths_)
+    .Bind(shared::VS_MC_PATH_RADIANCE, fullTransport ? *this->PathRadiance_ : *this->NoPaths_);
   if (this->CountLookups_)
   {
     if (!this->Lookups_)
     {
-      this->Lookups_ = std::make_unique<Buffer>(this->Context_, 5 * sizeof(uint32_t), "read counters");
+      this->Lookups_ = std::make_unique<Buffer>(this->Context_, 7 * sizeof(uint32_t), "read counters");
     }
     this->Lookups_->Fill(0u);
     set.Bind(shared::VS_MC_LOOKUPS, *this->Lookups_);
@@ -356,6 +418,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   const uint32_t groupsX = (this->Width_ + 7) / 8, groupsY = (this->Height_ + 7) / 8;
   this->LastSeconds_ = this->LastTableSeconds_;
   this->LastCatchUps_ = 0;
+  this->Progress_->Upload(&zero, 4, counterOffset + 4); // the events of this Render's paths
   for (uint32_t round = 0;; ++round)
   {
     this->Progress_->Upload(&zero, 4, counterOffset);
@@ -384,10 +447,12 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     {
       break;
     }
-    // Every round completes at least one sample of every short pixel (mc_render.glsl's tracking
-    // cap), so a frame takes at most one round per sample (many shadow rays fit one sample per
-    // dispatch); this bound only stops a kernel that breaks that promise.
-    if (round >= std::max(kMaxCatchUpRounds, params.samplesPerFrame))
+    // Every round completes at least one sample of every short pixel under single scattering, one
+    // path segment under full transport (mc_render.glsl's tracking cap), so a frame takes at most one
+    // round per sample, or per event (many shadow rays fit one segment per dispatch); this bound only
+    // stops a kernel that breaks that promise.
+    const uint64_t rounds = uint64_t(params.samplesPerFrame) * (fullTransport ? params.maxEvents : 1u);
+    if (round >= std::max<uint64_t>(kMaxCatchUpRounds, rounds))
     {
       throw Error("the render kernel left " + std::to_string(shortPixels) + " pixels short of " +
         std::to_string(goal) + " samples after " + std::to_string(round) +
@@ -396,6 +461,18 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     this->LastCatchUps_ = round + 1;
   }
   this->TotalSeconds_ += this->LastSeconds_;
+  if (fullTransport)
+  {
+    uint32_t events = 0;
+    this->Progress_->Download(&events, 4, counterOffset + 4);
+    this->Events_ += events;
+  }
+  else
+  {
+    // Single scattering: a path has one event where its camera ray collides, none elsewhere;
+    // counted as one per path (an upper bound) rather than paying for a count.
+    this->Events_ += pixels * params.samplesPerFrame;
+  }
   if (table)
   {
     this->Table_->AddSecondsUsed(this->LastSeconds_ - this->LastTableSeconds_);
@@ -404,9 +481,10 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   this->SquareScale_ = params.squareScale > 0.0f ? params.squareScale : 1.0f;
   if (this->CountLookups_)
   {
-    uint32_t counts[5];
+    uint32_t counts[7];
     this->Lookups_->Download(counts, sizeof(counts));
     this->LastLookups_ = { counts[0], counts[1], counts[2] };
+    this->LastShadowRays_ = { counts[5], counts[6] };
     this->LastLaneOccupancy_ = counts[4] > 0 ? double(counts[3]) / double(counts[4]) : 1.0;
   }
 }

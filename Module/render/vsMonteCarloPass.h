@@ -90,6 +90,9 @@ public:
   /** Of the last counted Render: the tracking steps the lanes took over the steps their SIMD
    *  groups ran times the group's width (1: no lane ever waited for another). */
   double LastLaneOccupancy() const { return this->LastLaneOccupancy_; }
+  /** Of the last counted Render: the shadow rays traced, and those whose transmittance was below
+   *  0.01 (blocked: their light sample scored next to nothing). */
+  std::array<uint64_t, 2> LastShadowRays() const { return this->LastShadowRays_; }
 
   /** Samples per pixel one dispatch adds at most (the rest of a Render's samples go to further
    *  dispatches), clamped to [1, kMaxSamplesPerDispatch]; the image is the same bit for bit for
@@ -130,9 +133,25 @@ public:
   uint64_t DirectionTableBuilds() const;
   double LastDirectionTableSeconds() const { return this->LastTableSeconds_; }
 
+  /** Scattering events per path (per sample of a pixel), averaged over every pixel and sample since
+   *  the last Reset: the paths' mean length under full transport (rays that miss the volume count
+   *  0). Single scattering reports 1, an upper bound, without counting. */
+  double MeanEventsPerPath() const
+  {
+    const double paths = double(this->Samples_) * this->Width_ * this->Height_;
+    return paths > 0.0 ? double(this->Events_) / paths : 0.0;
+  }
+
   /** Device seconds of the last Render and of all Renders since the last Reset. */
   double LastSeconds() const { return this->LastSeconds_; }
   double TotalSeconds() const { return this->TotalSeconds_; }
+
+  /** Whether params ask for full transport (more than one event, or an anisotropic phase): the path
+   *  estimator (mc_path.glsl) instead of the single-scattering one. */
+  static bool FullTransport(const shared::VsMonteCarloParams& params);
+  /** Throws InputError naming the setting, the value and the range for an anisotropy outside (-1, 1)
+   *  or not finite, or an event limit outside [1, VS_MAX_SCATTERING_EVENTS] (0 is read as 1). */
+  static void CheckScattering(const shared::VsMonteCarloParams& params);
 
 private:
   const ComputePipeline& PipelineFor(
@@ -154,6 +173,7 @@ private:
   uint32_t SamplesPerDispatch_ = 16;
   std::array<uint64_t, 3> LastLookups_{};
   double LastLaneOccupancy_ = 1.0;
+  std::array<uint64_t, 2> LastShadowRays_{};
   std::unique_ptr<Image3D> NoGrid_;
   std::shared_ptr<DirectionTable> Table_;
   std::unique_ptr<Buffer> NoTable_;
@@ -161,9 +181,12 @@ private:
   double LastTableSeconds_ = 0.0;
   double TableRebuildRatio_ = 0.0;
   std::unique_ptr<Buffer> Params_, Depth_, Sum_, Comp_, Squares_, Progress_;
+  // Full transport's paths in flight between dispatches (path_state.glsl), made on first use.
+  std::unique_ptr<Buffer> PathPosition_, PathDirection_, PathThroughput_, PathRadiance_, NoPaths_;
   uint32_t LastCatchUps_ = 0;
   std::vector<float> LastDepth_;
   uint32_t Width_ = 0, Height_ = 0, Samples_ = 0;
+  uint64_t Events_ = 0; // scattering events since the last Reset (MeanEventsPerPath)
   float SquareScale_ = 1.0f; // radiance scale of the sums of squares (mc_params.h squareScale)
   double LastSeconds_ = 0.0, TotalSeconds_ = 0.0;
 };

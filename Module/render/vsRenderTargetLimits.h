@@ -19,8 +19,9 @@ class VISSWEEPCORE_EXPORT RenderTargetLimits
 {
 public:
   /** Device bytes a pixel of a progressive render holds: three accumulators of 4 floats (sum,
-   *  compensation, squares) and its depth. The largest buffer is 16 bytes a pixel. */
-  static constexpr uint64_t DeviceBytesPerPixel = 3 * 16 + 4;
+   *  compensation, squares), its depth, and under full transport its path in flight (4 x 16 bytes,
+   *  path_state.glsl). The largest buffer is 16 bytes a pixel. */
+  static constexpr uint64_t DeviceBytesPerPixel = 3 * 16 + 4 + 4 * 16;
   static constexpr uint64_t LargestBufferBytesPerPixel = 16;
   /** Host bytes a pixel costs at the peak of a frame and its outputs, rounded up: the window's
    *  depth and the per-pass copies (12), the mean and the display image (32), the radiance image

@@ -30,7 +30,11 @@ VS_CONST uint VS_MC_RETIRED = 13u;       /* declared by no variant (was the empt
 VS_CONST uint VS_MC_LOOKUPS = 14u;       /* storage buffer: the counting variant's counters */
 VS_CONST uint VS_MC_QUADS = 15u;         /* r32ui image: the 8-bit volume's quads */
 VS_CONST uint VS_MC_FACTOR_IMAGE = 16u;        /* r32f image: the extinction factor per voxel */
-VS_CONST uint VS_MC_BINDING_COUNT = 17u;
+VS_CONST uint VS_MC_PATH_POSITION = 17u; /* storage buffers: the paths in flight between dispatches */
+VS_CONST uint VS_MC_PATH_DIRECTION = 18u; /* (path_state.glsl; unread by the single-scattering estimator) */
+VS_CONST uint VS_MC_PATH_THROUGHPUT = 19u;
+VS_CONST uint VS_MC_PATH_RADIANCE = 20u;
+VS_CONST uint VS_MC_BINDING_COUNT = 21u;
 
 /* The emission-absorption pass (render/ea_render.comp, render/vsEmissionAbsorptionPass.cxx). */
 VS_CONST uint VS_EA_VOLUME = 0u;

@@ -35,6 +35,22 @@ VS_CONST uint VS_TRANSMITTANCE_RAY_MARCHING = 1u;
 VS_CONST uint VS_SAMPLER_INDEPENDENT = 0u;
 VS_CONST uint VS_SAMPLER_SOBOL = 1u;
 
+/* How the environment seen at a scattering event is estimated under full transport (mc_path.glsl):
+ * both next-event estimation with the strategy's direction and the phase-sampled continuation, weighted
+ * by the power heuristic (mis.h); or one of them alone (both unbiased; for tests and measurements). */
+VS_CONST uint VS_MIS_POWER = 0u;      /* light sampling and phase sampling, power heuristic */
+VS_CONST uint VS_MIS_LIGHT_ONLY = 1u; /* next-event estimation alone: an escaping continuation adds nothing */
+VS_CONST uint VS_MIS_PHASE_ONLY = 2u; /* the continuation alone: no shadow rays at the events */
+VS_CONST uint VS_MIS_BALANCE = 3u;    /* both, balance heuristic */
+
+/* Scattering events a path may have at most (maxEvents), and the default: high enough that truncation
+ * loses far below 0.5% of the energy on the benchmark scenes (docs/benchmarks.md); Russian roulette ends
+ * paths long before it. */
+VS_CONST uint VS_MAX_SCATTERING_EVENTS = 100000u;
+VS_CONST uint VS_DEFAULT_SCATTERING_EVENTS = 1024u;
+/* The event from which Russian roulette may end a path (rouletteDepth 0 = this). */
+VS_CONST uint VS_DEFAULT_ROULETTE_DEPTH = 4u;
+
 /* Loop back-edges one invocation of the render kernel takes at most per dispatch (an upper bound
  * the kernel keeps). Lavapipe ends every loop of an invocation once they have taken 65535 together
  * (llvmpipe's loop limiter), silently: the kernel stops below that and resumes in the next dispatch
@@ -76,7 +92,16 @@ struct VsMonteCarloParams
   uint controlExtinction; /* VS_CONTROL_* bits (ignored with cropping regions: hidden regions have no
                              extinction) */
   uint pixelSampler;       /* VS_SAMPLER_* */
-  uint unused;
+  /* Full transport (mc_path.glsl). maxEvents 1 with anisotropy 0 is single scattering with the
+   * isotropic phase, rendered by the single-scattering estimator (mc_render.glsl render_sample). */
+  uint maxEvents;         /* scattering events per path, 1 .. VS_MAX_SCATTERING_EVENTS (0 = 1) */
+  float anisotropy;       /* the Henyey-Greenstein phase function's g, in (-1, 1) */
+  uint rouletteDepth;     /* events before Russian roulette may end a path (0 = VS_DEFAULT_ROULETTE_DEPTH) */
+  uint mis;               /* VS_MIS_* */
+  /* Benchmarks: next-event estimation only at events lo ..= hi (bits 0-15 lo, 16-31 hi; 0: at
+   * every event). With VS_MIS_LIGHT_ONLY the image is then the light that reaches the camera
+   * through those events alone (vissweep bench events). */
+  uint lightEvents;
   uvec4 directionSources[VS_MAX_RENDER_DIRECTIONS / 4u]; /* entry n (component n % 4 of element n / 4): the
                         grid direction whose values direction n reads (VisibilityGrid::DirectionSources;
                         direction_map.glsl); MonteCarloPass sets it from the grid */
