@@ -1,4 +1,5 @@
 #include "vsBenchAnimation.h"
+#include "vsBenchOutput.h"
 #include "vsToolCommand.h"
 #include "vsPendingFile.h"
 #include "vsRenderCommand.h"
@@ -173,6 +174,7 @@ void PrintTable(const nlohmann::json& methods, size_t frames)
 
 int Run(const AnimationOptions& o)
 {
+  CheckBenchOutputs({ { "--json", o.Json }, { "--plot", o.Plot } });
   RenderOptions ro;
   ro.SceneFile = o.SceneFile;
   ro.Width = o.Width;
@@ -241,18 +243,11 @@ int Run(const AnimationOptions& o)
       { "reference_spp", o.ReferenceSpp }, { "directions_per_frame", scene.Render.DirectionsPerFrame },
       { "static_interval", scene.Render.StaticInterval }, { "methods", methods } };
     const std::string json = o.Json.empty() ? o.Plot + ".json" : o.Json;
-    PendingFile file(json);
-    std::ofstream(file.Path()) << j.dump(2) << "\n";
-    file.Commit();
+    WriteBenchText(o.Json.empty() ? "--plot" : "--json", json, j.dump(2) + "\n");
     if (!o.Plot.empty())
     {
       // matplotlib (python3-matplotlib) draws it from the JSON.
-      const std::string cmd = "/usr/bin/python3 '" + BenchmarksDir() + "/plot_animation.py' '" + json +
-        "' '" + o.Plot + "'";
-      if (std::system(cmd.c_str()) != 0)
-      {
-        throw std::runtime_error("plotting failed: " + cmd);
-      }
+      RunBenchPlot(BenchmarksDir() + "/plot_animation.py", json, o.Plot);
     }
   }
   return 0;

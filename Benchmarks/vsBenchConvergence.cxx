@@ -1,4 +1,5 @@
 #include "vsBenchConvergence.h"
+#include "vsBenchOutput.h"
 #include "vsToolCommand.h"
 #include "vsImageOutput.h"
 #include "vsRenderCommand.h"
@@ -21,6 +22,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -33,10 +35,21 @@ namespace
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
+// The references' default cache: a user cache folder ($XDG_CACHE_HOME/vissweep/references, else
+// ~/.cache/vissweep/references), never the data folder: in the build tree that is a link into the
+// source tree, where the references were written (issue 35, class 7).
+std::string DefaultReferenceDir()
+{
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  const char* home = std::getenv("HOME");
+  const fs::path base = xdg && *xdg ? fs::path(xdg) : home && *home ? fs::path(home) / ".cache" : fs::temp_directory_path();
+  return (base / "vissweep" / "references").string();
+}
+
 struct Options
 {
   std::string Scene, Reference, Json, Csv, Plot;
-  std::string ReferenceDir = BenchmarksDir() + "/references";
+  std::string ReferenceDir = DefaultReferenceDir();
   std::string ReferenceStrategy = "two-step";
   int ReferenceSpp = 4096;
   int Width = 128, Height = 128, Repeats = 2;
@@ -244,6 +257,7 @@ Rgb MakeReference(Runner& runner, const Options& o)
 
 int Run(const Options& given)
 {
+  CheckBenchOutputs({ { "--json", given.Json }, { "--csv", given.Csv }, { "--plot", given.Plot } });
   Options o = given;
   if (o.Quick)
   {
@@ -281,7 +295,7 @@ int Run(const Options& given)
       nlohmann::json meta = { { "scene", fs::path(o.Scene).filename().string() }, { "spp", o.ReferenceSpp },
         { "strategy", o.ReferenceStrategy }, { "width", o.Width }, { "height", o.Height },
         { "noise_floor_mse", noiseFloor } };
-      std::ofstream(sidecar) << meta.dump(2) << "\n";
+      WriteBenchText("--reference-dir", sidecar, meta.dump(2) + "\n");
       rendered = true;
     }
     else
@@ -425,26 +439,18 @@ int Run(const Options& given)
     }
     report["strategies"][strategy] = js;
   }
-  auto write = [](const std::string& path, const std::string& text) {
-    std::ofstream out(path);
-    out << text;
-    if (!out)
-      throw std::runtime_error("cannot write '" + path + "'");
-  };
   if (!o.Json.empty())
-    write(o.Json, report.dump(2) + "\n");
+    WriteBenchText("--json", o.Json, report.dump(2) + "\n");
   if (!o.Csv.empty())
-    write(o.Csv, csv.str());
+    WriteBenchText("--csv", o.Csv, csv.str());
   if (!o.Plot.empty())
   {
     // matplotlib (python3-matplotlib) draws it from the JSON.
     std::string json = o.Json.empty() ? o.Plot + ".json" : o.Json;
     if (o.Json.empty())
-      write(json, report.dump(2) + "\n");
+      WriteBenchText("--plot", json, report.dump(2) + "\n");
     const std::string script = (fs::path(BenchmarksDir()) / "plot_convergence.py").string();
-    const std::string cmd = "/usr/bin/python3 '" + script + "' '" + json + "' '" + o.Plot + "'";
-    if (std::system(cmd.c_str()) != 0)
-      throw std::runtime_error("plotting failed: " + cmd);
+    RunBenchPlot(script, json, o.Plot);
   }
   return 0;
 }
@@ -457,7 +463,8 @@ void AddBenchConvergence(CLI::App& bench)
   cmd->add_option("scene", o->Scene, "scene file (Benchmarks/scenes/*.json)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--reference", o->Reference, "reference EXR (default: rendered once, cached in Benchmarks/references)")
     ->check(CLI::ExistingFile);
-  cmd->add_option("--reference-dir", o->ReferenceDir, "where rendered references are cached (default Benchmarks/references)");
+  cmd->add_option("--reference-dir", o->ReferenceDir, "where rendered references are cached (default $XDG_CACHE_HOME/vissweep/references, else "
+    "~/.cache/vissweep/references)");
   cmd->add_option("--reference-spp", o->ReferenceSpp, "samples per pixel of a rendered reference")
     ->check(CLI::Range(1, 1 << 20));
   cmd->add_option("--reference-strategy", o->ReferenceStrategy, "strategy of a rendered reference");

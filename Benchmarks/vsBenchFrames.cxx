@@ -1,4 +1,5 @@
 #include "vsBenchFrames.h"
+#include "vsBenchOutput.h"
 #include "vsToolCommand.h"
 #include "vsRenderCommand.h"
 #include "vsSceneFile.h"
@@ -56,6 +57,7 @@ FrameTimes Time(SceneObjects& objects, int frames, bool rotate)
 
 int Run(const Options& o)
 {
+  CheckBenchOutputs({ { "--json", o.Json } });
   Scene scene = ReadSceneFile(o.Scene);
   scene.Render.Width = scene.Render.Height = o.Size;
   SceneObjects objects = BuildScene(scene);
@@ -120,7 +122,8 @@ int Run(const Options& o)
       { "preview_first_drag_seconds", previewFirst.Median }, { "preview_median_seconds", preview.Median },
       { "preview_max_seconds", preview.Max }, { "hand_over_frames", handOverFrames }, { "hand_over_spp", handOverSpp },
       { "hand_over_seconds", handOverSeconds } };
-    std::ofstream(o.Json) << j.dump(2) << "\n";
+    WriteBenchText("--json", o.Json, j.dump(2) + "\n");
+    std::printf("wrote %s\n", o.Json.c_str());
   }
   return 0;
 }

@@ -1,4 +1,5 @@
 #include "vsBenchLightVolume.h"
+#include "vsBenchOutput.h"
 #include "vsSceneBuild.h"
 #include "vsSceneFile.h"
 #include "vsToolCommand.h"
@@ -62,6 +63,7 @@ double SecondsSince(std::chrono::steady_clock::time_point start)
 
 int Run(const LightVolumeOptions& o)
 {
+  CheckBenchOutputs({ { "--json", o.Json } });
   const Scene scene = ReadSceneFile(o.SceneFile);
   if (scene.Environment.Type != Scene::EnvironmentSection::Kind::File || !scene.Volume.Files.empty())
   {
@@ -142,7 +144,7 @@ int Run(const LightVolumeOptions& o)
   line("environment upload", "upload_seconds", upload);
   if (!o.Json.empty())
   {
-    std::ofstream(o.Json) << report.dump(2) << "\n";
+    WriteBenchText("--json", o.Json, report.dump(2) + "\n");
     std::printf("wrote %s\n", o.Json.c_str());
   }
   return 0;

@@ -1,4 +1,5 @@
 #include "vsBenchOverhead.h"
+#include "vsBenchOutput.h"
 #include "vsToolCommand.h"
 #include "vsRenderCommand.h"
 #include "vsSceneFile.h"
@@ -171,6 +172,7 @@ Measurement Measure(
 
 int Run(const Options& given)
 {
+  CheckBenchOutputs({ { "--json", given.Json } });
   Options o = given;
   if (o.Quick)
   {
@@ -295,12 +297,7 @@ int Run(const Options& given)
     { "samples_per_second", rate.SamplesPerSecond() }, { "imageloads_per_second", 8.0 * rate.SamplesPerSecond() } };
   if (!o.Json.empty())
   {
-    std::ofstream out(o.Json);
-    out << report.dump(2) << "\n";
-    if (!out)
-    {
-      throw std::runtime_error("--json " + o.Json + ": cannot write");
-    }
+    WriteBenchText("--json", o.Json, report.dump(2) + "\n");
     std::printf("wrote %s\n", o.Json.c_str());
   }
   return 0;

@@ -1,4 +1,5 @@
 #include "vsBenchPreview.h"
+#include "vsBenchOutput.h"
 #include "vsSceneBuild.h"
 #include "vsSceneFile.h"
 #include "vsToolCommand.h"
@@ -153,6 +154,7 @@ struct Row
 
 int Run(const PreviewOptions& o)
 {
+  CheckBenchOutputs({ { "--json", o.Json }, { "--contact-sheet", o.ContactSheet }, { "--plot", o.Plot } });
   Scene scene = ReadSceneFile(o.SceneFile);
   scene.Render.Width = scene.Render.Height = o.Size;
   // The volume's own radiance: the environment seen through it is exact in the preview and estimated in
@@ -298,12 +300,7 @@ int Run(const PreviewOptions& o)
   const std::string json = !o.Json.empty() ? o.Json : !o.Plot.empty() ? o.Plot + ".json" : std::string();
   if (!json.empty())
   {
-    std::ofstream out(json);
-    out << report.dump(2) << "\n";
-    if (!out)
-    {
-      throw std::runtime_error("--json " + json + ": cannot write");
-    }
+    WriteBenchText(o.Json.empty() ? "--plot" : "--json", json, report.dump(2) + "\n");
     std::printf("wrote %s\n", json.c_str());
   }
   if (!o.ContactSheet.empty())
@@ -315,11 +312,7 @@ int Run(const PreviewOptions& o)
   {
     // matplotlib (python3-matplotlib) draws it from the JSON.
     const std::string script = (std::filesystem::path(BenchmarksDir()) / "plot_preview.py").string();
-    const std::string cmd = "/usr/bin/python3 '" + script + "' '" + json + "' '" + o.Plot + "'";
-    if (std::system(cmd.c_str()) != 0)
-    {
-      throw std::runtime_error("plotting failed: " + cmd);
-    }
+    RunBenchPlot(script, json, o.Plot);
     std::printf("wrote %s\n", o.Plot.c_str());
   }
   return 0;

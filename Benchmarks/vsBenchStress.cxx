@@ -1,4 +1,5 @@
 #include "vsBenchStress.h"
+#include "vsBenchOutput.h"
 #include "vsToolCommand.h"
 #include "vsRenderCommand.h"
 #include "vsSceneFile.h"
@@ -63,6 +64,7 @@ int NonFinite(vtkVisibilitySweepVolumeMapper* m)
 
 int Run(const Options& o)
 {
+  CheckBenchOutputs({ { "--json", o.Json } });
   Scene scene = ReadSceneFile(o.Scene);
   scene.Render.Width = scene.Render.Height = o.Size;
   nlohmann::json report;
@@ -176,7 +178,7 @@ int Run(const Options& o)
       { "non_finite", nonFinite } };
   }
   if (!o.Json.empty())
-    std::ofstream(o.Json) << report.dump(2) << "\n";
+    WriteBenchText("--json", o.Json, report.dump(2) + "\n");
   return 0;
 }
 }

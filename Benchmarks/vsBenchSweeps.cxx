@@ -1,4 +1,5 @@
 #include "vsBenchSweeps.h"
+#include "vsBenchOutput.h"
 #include "vsToolCommand.h"
 #include "vsToolVolume.h"
 
@@ -75,6 +76,7 @@ double Median(std::vector<double> v)
 // the cost of covering all directions in small subsets (what a progressive grid update does).
 int RunProfile(const Options& o)
 {
+  CheckBenchOutputs({ { "--json", o.Json } });
   auto ctx = vs::Context::Default();
   auto image = ReadVolume(o.Volume);
   auto property = SkinProperty();
@@ -167,7 +169,7 @@ int RunProfile(const Options& o)
   }
   if (!o.Json.empty())
   {
-    std::ofstream(o.Json) << report.dump(2) << "\n";
+    WriteBenchText("--json", o.Json, report.dump(2) + "\n");
     std::printf("wrote %s\n", o.Json.c_str());
   }
   return 0;
@@ -179,6 +181,7 @@ int Run(const Options& o)
   {
     return RunProfile(o);
   }
+  CheckBenchOutputs({ { "--json", o.Json } });
   auto ctx = vs::Context::Default();
   auto image = ReadVolume(o.Volume);
   auto property = SkinProperty();
@@ -319,7 +322,7 @@ int Run(const Options& o)
 
   if (!o.Json.empty())
   {
-    std::ofstream(o.Json) << report.dump(2) << "\n";
+    WriteBenchText("--json", o.Json, report.dump(2) + "\n");
     std::printf("wrote %s\n", o.Json.c_str());
   }
   return 0;

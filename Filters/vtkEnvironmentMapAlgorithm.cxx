@@ -140,15 +140,14 @@ void vtkEnvironmentMapAlgorithm::FillImage(const vs::EnvironmentMap& map, vtkIma
   fd->AddArray(power);
 }
 
-std::shared_ptr<const vs::EnvironmentMap> vtkEnvironmentMapAlgorithm::EnvironmentMapFromImage(
-  vtkImageData* image, std::string* error)
+bool vtkEnvironmentMapAlgorithm::IsEnvironmentMapImage(vtkImageData* image, std::string* error)
 {
   auto fail = [error](const std::string& why) {
     if (error)
     {
       *error = why;
     }
-    return std::shared_ptr<const vs::EnvironmentMap>();
+    return false;
   };
   if (!image)
   {
@@ -167,6 +166,19 @@ std::shared_ptr<const vs::EnvironmentMap> vtkEnvironmentMapAlgorithm::Environmen
   {
     return fail("the image has no 3-component point array \"Radiance\" with one tuple per texel");
   }
+  return true;
+}
+
+std::shared_ptr<const vs::EnvironmentMap> vtkEnvironmentMapAlgorithm::EnvironmentMapFromImage(
+  vtkImageData* image, std::string* error)
+{
+  if (!IsEnvironmentMapImage(image, error))
+  {
+    return nullptr;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  vtkDataArray* radiance = image->GetPointData()->GetArray("Radiance");
   auto map = std::make_shared<vs::EnvironmentMap>(vs::EnvironmentMap::Allocate(dims[0]));
   const vtkIdType texels = radiance->GetNumberOfTuples();
   for (vtkIdType i = 0; i < texels; ++i)

@@ -74,6 +74,12 @@ public:
   static std::shared_ptr<const vs::EnvironmentMap> EnvironmentMapFromImage(
     vtkImageData* image, std::string* error = nullptr);
 
+  /**
+   * Whether image has the layout above (what EnvironmentMapFromImage() accepts), without
+   * building a map: false, with the reason in *error, when it does not fit.
+   */
+  static bool IsEnvironmentMapImage(vtkImageData* image, std::string* error = nullptr);
+
   /** Fills image with the layout above from map (empties it when map is empty). */
   static void FillImage(const vs::EnvironmentMap& map, vtkImageData* image);
 #endif

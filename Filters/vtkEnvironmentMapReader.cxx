@@ -230,7 +230,17 @@ int vtkEnvironmentMapReader::ComputeOutputSize()
     vtkErrorMacro(<< "OctahedralSize must be 0 (automatic) or a power of two, not " << this->OctahedralSize);
     return 0;
   }
-  return this->OctahedralSize > 0 ? this->OctahedralSize : vs::EnvironmentMap::DefaultSize(w);
+  try
+  {
+    // A user's size that the machine cannot hold is refused here, before the file is read.
+    vs::EnvironmentMap::CheckMemory(this->OctahedralSize, "OctahedralSize");
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  return this->OctahedralSize > 0 ? this->OctahedralSize : vs::EnvironmentMap::DefaultSize(w, h);
 }
 
 std::shared_ptr<vs::EnvironmentMap> vtkEnvironmentMapReader::ComputeMap()

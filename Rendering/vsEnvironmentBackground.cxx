@@ -1,10 +1,12 @@
 #include "vsEnvironmentBackground.h"
 
+#include "vtkEnvironmentMapAlgorithm.h"
 #include "vtkEnvironmentMapBackground.h"
 #include "vtkVisibilitySweepVolumeMapper.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
+#include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
@@ -84,6 +86,14 @@ bool HasOwnSkybox(vtkRenderer* ren, vtkSkybox* managed)
 void StartFrame(vtkRenderer* ren, Entry& e)
 {
   vtkVisibilitySweepVolumeMapper* mapper = WantingMapper(ren);
+  if (mapper && mapper->GetNumberOfInputConnections(1) > 0 &&
+    !vtkEnvironmentMapAlgorithm::IsEnvironmentMapImage(vtkImageData::SafeDownCast(mapper->GetInputDataObject(1, 0))))
+  {
+    // An environment input that is no map (a failed reader, an image of another kind): the mapper
+    // renders nothing and says why, once; the background is the renderer's own. The skybox drew
+    // blocky garbage, and its filter logged pipeline errors at every frame.
+    mapper = nullptr;
+  }
   const bool own = HasOwnSkybox(ren, e.Sky);
   if (mapper && !own)
   {

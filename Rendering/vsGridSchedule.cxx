@@ -72,6 +72,10 @@ void GridSchedule::FillRequest(vtkVisibilitySweepVolumeMapper* mapper, GridUpdat
   r.Importance = environment.Device().ImportanceLevel(int(vs::shared::vs_log2_pow2(uint32_t(side))));
   r.DataVersion = uint64_t(scene.Uploads());
   r.FullUpdate = fullUpdate;
+  // The Preview and AmbientOcclusion modes show the grid's light itself: no lazy update may leave it
+  // stale (the Monte Carlo estimate is unbiased whatever the grid holds, these images are not).
+  r.Exact = mapper->GetRenderMode() == vtkVisibilitySweepVolumeMapper::Preview ||
+    mapper->GetRenderMode() == vtkVisibilitySweepVolumeMapper::AmbientOcclusion;
   r.Schedule.Scheme = vs::UpdateScheme(mapper->GetUpdateScheme());
   r.Schedule.DirectionsPerFrame = uint32_t(mapper->GetDirectionsPerFrame());
   r.Schedule.StaticInterval = uint32_t(mapper->GetStaticInterval());

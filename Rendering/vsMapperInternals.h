@@ -101,8 +101,21 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   bool ReleaseViewsOf(vtkWindow* win);
   std::string LastError;
   vs::PropertyChecks Checks; // the settings VisSweep ignores, warned once per change
-  vtkMTimeType ErrorStamp = 0;        // the inputs' newest modification time when LastError was reported
-  vtkMTimeType RenderStamp = 0;       // the same, for the Render() in progress
+  vtkMTimeType RenderStamp = 0;       // the inputs' newest modification time, for the Render() in progress
+  vtkWeakPointer<vtkRenderer> RenderingView; // the renderer of the Render() in progress
+  // Per renderer, the error last logged and RenderStamp then: an error is logged once per change of
+  // the inputs in each view (one view failing and another succeeding logged it on every frame).
+  struct ViewError
+  {
+    vtkWeakPointer<vtkRenderer> Renderer;
+    std::string Message;
+    vtkMTimeType Stamp = 0;
+  };
+  std::vector<ViewError> ViewErrors;
+  // The render mode whose radiance I.Radiance holds (MonteCarlo or Preview; -1: none): a render in a
+  // mode that computes none (emission-absorption, ambient occlusion, projections) or another one
+  // drops it, so GetRadiance() is never an earlier mode's image.
+  int RadianceMode = -1;
   uint32_t Frame = 0;
 };
 

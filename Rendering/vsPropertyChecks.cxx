@@ -102,17 +102,27 @@ std::string PropertyChecks::CroppingFlagsName(int flags)
   return std::string("custom region flags ") + hex;
 }
 
-std::vector<std::string> PropertyChecks::NewWarnings(const std::vector<std::string>& current)
+std::vector<std::string> PropertyChecks::NewWarnings(vtkRenderer* renderer, const std::vector<std::string>& current)
 {
+  this->Active.erase(std::remove_if(this->Active.begin(), this->Active.end(),
+                       [](const auto& entry) { return !entry.first; }),
+    this->Active.end());
+  auto it = std::find_if(
+    this->Active.begin(), this->Active.end(), [renderer](const auto& entry) { return entry.first == renderer; });
+  if (it == this->Active.end())
+  {
+    this->Active.emplace_back(renderer, std::vector<std::string>());
+    it = this->Active.end() - 1;
+  }
   std::vector<std::string> fresh;
   for (const auto& w : current)
   {
-    if (std::find(this->Active.begin(), this->Active.end(), w) == this->Active.end())
+    if (std::find(it->second.begin(), it->second.end(), w) == it->second.end())
     {
       fresh.push_back(w);
     }
   }
-  this->Active = current;
+  it->second = current;
   return fresh;
 }
 

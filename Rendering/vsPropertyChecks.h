@@ -6,10 +6,13 @@
 #ifndef vsPropertyChecks_h
 #define vsPropertyChecks_h
 
+#include "vtkRenderer.h"
+#include "vtkWeakPointer.h"
+
 #include <string>
+#include <utility>
 #include <vector>
 
-class vtkRenderer;
 class vtkVolumeMapper;
 class vtkVolumeProperty;
 
@@ -27,12 +30,14 @@ public:
   /** VTK's cropping region flags in words ("VTK_CROP_FENCE", ...; other values in hex). */
   static std::string CroppingFlagsName(int flags);
 
-  /** The warnings of `current` that were not in the previous call's: a setting warns when it
-   *  becomes ignored (or changes), not again while it stays so. */
-  std::vector<std::string> NewWarnings(const std::vector<std::string>& current);
+  /** The warnings of `current` that were not in the previous call's for the same renderer: a
+   *  setting warns when it becomes ignored (or changes) in a view, not again while it stays so.
+   *  Per renderer, since some settings are (depth peeling on in one of two views warned on every
+   *  frame when one list was kept for both); renderers that are gone are forgotten. */
+  std::vector<std::string> NewWarnings(vtkRenderer* renderer, const std::vector<std::string>& current);
 
 private:
-  std::vector<std::string> Active;
+  std::vector<std::pair<vtkWeakPointer<vtkRenderer>, std::vector<std::string>>> Active;
 };
 }
 

@@ -83,10 +83,25 @@ void vtkVisibilitySweepVolumeMapper::ReportError(const std::string& message)
   // Once per change: the same error for unchanged inputs is not reported again at every
   // Render() (an application re-rendering a bad volume would flood its log). GetLastError()
   // keeps it, and GetRadiance() has no image until a render succeeds again.
-  const bool repeated = message == I.LastError && I.RenderStamp == I.ErrorStamp;
+  vtkRenderer* view = I.RenderingView;
+  I.ViewErrors.erase(std::remove_if(I.ViewErrors.begin(), I.ViewErrors.end(),
+                       [](const Internals::ViewError& e) { return !e.Renderer; }),
+    I.ViewErrors.end());
+  auto it = std::find_if(I.ViewErrors.begin(), I.ViewErrors.end(),
+    [view](const Internals::ViewError& e) { return e.Renderer == view; });
+  const bool repeated = it != I.ViewErrors.end() && message == it->Message && I.RenderStamp == it->Stamp;
+  if (it == I.ViewErrors.end())
+  {
+    I.ViewErrors.push_back({ view, message, I.RenderStamp });
+  }
+  else
+  {
+    it->Message = message;
+    it->Stamp = I.RenderStamp;
+  }
   I.LastError = message;
-  I.ErrorStamp = I.RenderStamp;
   I.Radiance = nullptr;
+  I.RadianceMode = -1;
   if (!repeated)
   {
     vtkErrorMacro(<< message);
@@ -178,6 +193,7 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
   vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
   I.RenderStamp = vs::NewestModification({ this, input, vol,
     this->GetNumberOfInputConnections(1) > 0 ? this->GetInputAlgorithm(1, 0) : nullptr });
+  I.RenderingView = ren;
   int cellFlag = 0;
   vtkDataArray* scalars = input
     ? vtkAbstractMapper::GetScalars(input, this->ScalarMode, this->ArrayAccessMode, this->ArrayId,
@@ -191,7 +207,7 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
   // MIP, MinIP, average and additive are projections, not light transport: the emission-absorption
   // path renders them whatever the RenderMode.
   const bool projection = EmissionAbsorptionFrame::IsProjection(this->BlendMode);
-  for (const auto& w : I.Checks.NewWarnings(vs::PropertyChecks::Ignored(
+  for (const auto& w : I.Checks.NewWarnings(ren, vs::PropertyChecks::Ignored(
          this, vol ? vol->GetProperty() : nullptr, ren, this->RenderMode != EmissionAbsorption && !projection, projection)))
   {
     vtkWarningMacro(<< w);
@@ -239,6 +255,16 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     {
       I.GridNeedsFull = true;
     }
+    // GetRadiance() is what the last render computed, or nothing: a render in a mode that computes
+    // no radiance, or in another mode than the one that made the image held, drops it (it returned
+    // the Monte Carlo image after a switch to emission-absorption).
+    const int radianceMode =
+      projection || (this->RenderMode != MonteCarlo && this->RenderMode != Preview) ? -1 : this->RenderMode;
+    if (!ren->GetSelector() && radianceMode != I.RadianceMode)
+    {
+      I.Radiance = nullptr;
+      I.RadianceMode = radianceMode;
+    }
     if (ren->GetSelector())
     {
       this->RenderSelection(ren, vol); // picking: the prop's id where the volume is, no accumulation
@@ -260,6 +286,9 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
       this->RenderMonteCarlo(ren, vol);
     }
     I.LastError.clear();
+    I.ViewErrors.erase(std::remove_if(I.ViewErrors.begin(), I.ViewErrors.end(),
+                         [ren](const Internals::ViewError& e) { return !e.Renderer || e.Renderer == ren; }),
+      I.ViewErrors.end());
   }
   catch (const std::exception& e)
   {
@@ -409,6 +438,57 @@ bool vtkVisibilitySweepVolumeMapper::SetFloatSetting(const char* name, double va
     this->Modified();
   }
   return true;
+}
+
+void vtkVisibilitySweepVolumeMapper::SetClampedSetting(
+  const char* name, double value, double lo, double hi, double& setting)
+{
+  if (std::isnan(value))
+  {
+    vtkErrorMacro(<< name << " NaN is refused; keeping " << setting);
+    return;
+  }
+  value = std::min(std::max(value, lo), hi);
+  if (setting != value)
+  {
+    setting = value;
+    this->Modified();
+  }
+}
+
+void vtkVisibilitySweepVolumeMapper::SetDefensiveWeight(double value)
+{
+  this->SetClampedSetting("DefensiveWeight", value, 0.0, 1.0, this->DefensiveWeight);
+}
+
+void vtkVisibilitySweepVolumeMapper::SetVisibilityEpsilon(double value)
+{
+  this->SetClampedSetting("VisibilityEpsilon", value, 1e-6, 1.0, this->VisibilityEpsilon);
+}
+
+void vtkVisibilitySweepVolumeMapper::SetVoxelsPerCell(double value)
+{
+  this->SetClampedSetting("VoxelsPerCell", value, 0.0, 256.0, this->VoxelsPerCell);
+}
+
+void vtkVisibilitySweepVolumeMapper::SetFilterAngleFraction(double value)
+{
+  this->SetClampedSetting("FilterAngleFraction", value, 0.0, 1.0, this->FilterAngleFraction);
+}
+
+void vtkVisibilitySweepVolumeMapper::SetInteractiveUpdateRate(double value)
+{
+  this->SetClampedSetting("InteractiveUpdateRate", value, 0.0, VTK_DOUBLE_MAX, this->InteractiveUpdateRate);
+}
+
+void vtkVisibilitySweepVolumeMapper::SetSweepFrameFraction(double value)
+{
+  this->SetClampedSetting("SweepFrameFraction", value, 0.0, 1000.0, this->SweepFrameFraction);
+}
+
+void vtkVisibilitySweepVolumeMapper::SetAutoProbeFraction(double value)
+{
+  this->SetClampedSetting("AutoProbeFraction", value, 0.0, 1000.0, this->AutoProbeFraction);
 }
 
 void vtkVisibilitySweepVolumeMapper::SetEnvironmentIntensity(double intensity)

@@ -177,7 +177,7 @@ public:
    *  nothing from it (variance per sample 0.0159 at 0, 0.0165 at 0.25) and a grid swept only towards
    *  the sun stays worse than Environment sampling with it (0.025 at 0.25, 0.030 at 0, against
    *  0.021). */
-  vtkSetClampMacro(DefensiveWeight, double, 0.0, 1.0);
+  virtual void SetDefensiveWeight(double value); // clamped to [0.0, 1.0]; NaN is refused (an error, the setting kept)
   vtkGetMacro(DefensiveWeight, double);
   ///@}
 
@@ -324,7 +324,7 @@ public:
 
   ///@{
   /** Added to the visibility before it shapes the pdf (von Radziewsky et al. 2017: 0.01). */
-  vtkSetClampMacro(VisibilityEpsilon, double, 1e-6, 1.0);
+  virtual void SetVisibilityEpsilon(double value); // clamped to [1e-6, 1.0]; NaN is refused (an error, the setting kept)
   vtkGetMacro(VisibilityEpsilon, double);
   ///@}
 
@@ -339,7 +339,7 @@ public:
    *  its beta/alpha. */
   virtual void SetDirectionResolution(int resolution);
   vtkGetMacro(DirectionResolution, int);
-  vtkSetClampMacro(VoxelsPerCell, double, 0.0, 256.0);
+  virtual void SetVoxelsPerCell(double value); // clamped to [0.0, 256.0]; NaN is refused (an error, the setting kept)
   vtkGetMacro(VoxelsPerCell, double);
   vtkSetClampMacro(KernelResolution, int, 0, 1 << 14);
   vtkGetMacro(KernelResolution, int);
@@ -351,7 +351,7 @@ public:
   vtkSetMacro(Filtering, bool);
   vtkGetMacro(Filtering, bool);
   vtkBooleanMacro(Filtering, bool);
-  vtkSetClampMacro(FilterAngleFraction, double, 0.0, 1.0);
+  virtual void SetFilterAngleFraction(double value); // clamped to [0.0, 1.0]; NaN is refused (an error, the setting kept)
   vtkGetMacro(FilterAngleFraction, double);
   ///@}
 
@@ -427,7 +427,7 @@ public:
    *  images' mean squared difference less V. s falls as samples come in; below 0.05 the hand-over
    *  ends and the estimate is shown as it is (GetLastPreviewShare() is then 0). GetRadiance() is
    *  always the estimate alone. */
-  vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetInteractiveUpdateRate(double value); // clamped to [0.0, VTK_DOUBLE_MAX]; NaN is refused (an error, the setting kept)
   vtkGetMacro(InteractiveUpdateRate, double);
   vtkSetClampMacro(InteractiveSubsampling, int, 1, 16);
   vtkGetMacro(InteractiveSubsampling, int);
@@ -452,7 +452,11 @@ public:
   }
 
   /** The linear HDR radiance of the last render (of the view rendered last) as image data (width x height, point array
-   *  "Radiance" with 3 floats and "Alpha"), rows bottom-up; nullptr before the first render.
+   *  "Radiance" with 3 floats and "Alpha"), rows bottom-up; nullptr before the first render. It is what
+   *  the last render computed, or nothing: nullptr after a failed render and after a render in a mode
+   *  that computes no radiance (EmissionAbsorption, AmbientOcclusion, the projection blend modes), and
+   *  a switch between MonteCarlo and Preview drops the other mode's image (while the user drags in the
+   *  MonteCarlo mode it stays the view's estimate).
    *  With `variance`, also "Variance" (per-sample variance of each channel, 4 components, double). */
   vtkImageData* GetRadiance(bool variance = false);
 
@@ -477,7 +481,10 @@ public:
    *  layout recomputes every direction, and so does the first computation. Majorants are
    *  always recomputed for new data and accumulation restarts. Default RoundRobin (the
    *  paper's most robust scheme); k =
-   *  DirectionsPerFrame (default 4); StaticInterval default 16. */
+   *  DirectionsPerFrame (default 4); StaticInterval default 16. The MonteCarlo mode only: the
+   *  Preview and AmbientOcclusion images are the grid's light, not estimates, so in them a data
+   *  change (or a grid left stale by earlier lazy updates) recomputes every direction, as a fresh
+   *  mapper would. */
   vtkSetClampMacro(UpdateScheme, int, FullUpdate, StaticUpdate);
   vtkGetMacro(UpdateScheme, int);
   void SetUpdateSchemeToFull() { this->SetUpdateScheme(FullUpdate); }
@@ -515,11 +522,11 @@ public:
   vtkSetMacro(ProgressiveVisibility, bool);
   vtkGetMacro(ProgressiveVisibility, bool);
   vtkBooleanMacro(ProgressiveVisibility, bool);
-  vtkSetClampMacro(SweepFrameFraction, double, 0.0, 1000.0);
+  virtual void SetSweepFrameFraction(double value); // clamped to [0.0, 1000.0]; NaN is refused (an error, the setting kept)
   /** Auto's sweep share of the time until TwoStep has measured more efficient than Environment
    *  sampling; then half of the measured gain (efficiency ratio - 1), at least this and at most
    *  SweepFrameFraction. Default 0.05. */
-  vtkSetClampMacro(AutoProbeFraction, double, 0.0, 1000.0);
+  virtual void SetAutoProbeFraction(double value); // clamped to [0.0, 1000.0]; NaN is refused (an error, the setting kept)
   vtkGetMacro(AutoProbeFraction, double);
   /** Sweep each direction texel towards where its light comes from (the environment's
    *  luminance-weighted mean direction inside the texel) instead of its centre: the visibility
@@ -750,6 +757,9 @@ private:
 
   void ReportError(const std::string& message);
   bool SetFloatSetting(const char* name, double value, double& setting);
+  // A setting clamped to [lo, hi] as vtkSetClampMacro does, except that NaN (which passes any clamp)
+  // is refused with an error and the setting kept (issue 35: InteractiveUpdateRate took NaN).
+  void SetClampedSetting(const char* name, double value, double lo, double hi, double& setting);
   void RenderAndCheck(vtkRenderer* ren, vtkVolume* vol);
   void RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol);
   std::vector<float> EmissionAbsorptionImage(vtkRenderer* ren, vtkVolume* vol);

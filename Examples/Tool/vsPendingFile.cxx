@@ -72,7 +72,16 @@ void CommitAll(const std::vector<PendingFile*>& files)
   {
     std::error_code ec;
     const fs::path d(step.File->Destination);
-    if (fs::exists(fs::symlink_status(d, ec)))
+    const fs::file_status st = fs::symlink_status(d, ec);
+    if (fs::exists(st) && !fs::is_regular_file(st) && !fs::is_symlink(st))
+    {
+      // Only a file (or a link, not its target) is ever replaced: a folder or device that appeared at
+      // the path after CheckWritable is left as it is, and nothing is written.
+      failure = "'" + d.string() + "' " + (fs::is_directory(st) ? "is a directory" : "is not a regular file") +
+        "; it is not replaced";
+      break;
+    }
+    if (fs::exists(st))
     {
       const fs::path dir = d.has_parent_path() ? d.parent_path() : fs::path(".");
       step.Backup = (dir / ("." + d.filename().string() + ".previous-" + std::to_string(::getpid()))).string();
@@ -110,7 +119,7 @@ void CommitAll(const std::vector<PendingFile*>& files)
     std::error_code ignored;
     if (!step.Backup.empty())
     {
-      fs::remove_all(step.Backup, ignored);
+      fs::remove(step.Backup, ignored); // a file or a link: never a folder (see above)
     }
     step.File->Committed = true;
   }

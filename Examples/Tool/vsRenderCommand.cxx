@@ -3,6 +3,7 @@
 // outputs and the statistics. BuildScene (vsSceneBuild.cxx) makes the pipeline it renders.
 #include "vsRenderCommand.h"
 #include "vsImageOutput.h"
+#include "vsOutputChecks.h"
 #include "vsPendingFile.h"
 #include "vsRenderFrames.h"
 #include "vsToolCommand.h"
@@ -70,19 +71,14 @@ int Run(const RenderOptions& o)
   }
   const auto start = Clock::now();
   // Everything that can be checked before the (slow) render is checked first.
-  for (const auto& out : o.Outputs)
-  {
-    CheckOutputPath(out);
-  }
-  if (!o.Json.empty() && o.Json != "-")
-  {
-    CheckWritable("--json", o.Json);
-  }
+  CheckOutputs(o.Outputs, o.Json);
   Scene scene = LoadScene(o);
+  CheckOutputsForMode(o.Outputs, scene.Render.Mode);
   const bool timed = o.TimeBudget > 0.0;
   const int target = timed ? (1 << 30) : scene.Render.Spp;
 
   SceneObjects objects = BuildScene(scene);
+  CheckVolumeInView(objects);
   auto* mapper = objects.Mapper.Get();
   const double setupSeconds = Seconds(start, Clock::now());
 

@@ -1,5 +1,6 @@
 #include "vsRenderFrames.h"
 #include "vsImageOutput.h"
+#include "vsOutputChecks.h"
 #include "vsRenderCommand.h"
 #include "vsToolVolume.h"
 
@@ -137,14 +138,18 @@ int RunFrames(const RenderOptions& o)
     throw std::runtime_error("--frames needs a volume sequence: give volume.files in the scene");
   }
   const FrameRange range = ParseFrameRange(o.Frames, int(scene.Volume.Files.size()));
-  for (const auto& out : o.Outputs)
+  // Every output of every frame, before anything renders: a later frame's path that is a folder, in
+  // a missing folder or the same as another output was found only when that frame was written.
+  std::vector<std::string> allOutputs;
+  for (int step = range.First; step <= range.Last; ++step)
   {
-    CheckOutputPath(FrameOutputName(out, range.First));
+    for (const auto& out : o.Outputs)
+    {
+      allOutputs.push_back(FrameOutputName(out, step));
+    }
   }
-  if (!o.Json.empty() && o.Json != "-")
-  {
-    CheckWritable("--json", o.Json);
-  }
+  CheckOutputs(allOutputs, o.Json);
+  CheckOutputsForMode(allOutputs, scene.Render.Mode);
   const bool timed = o.TimeBudget > 0.0;
   const int target = timed ? (1 << 30) : scene.Render.Spp;
   const bool bar = !o.Quiet && ::isatty(STDERR_FILENO);
@@ -152,6 +157,7 @@ int RunFrames(const RenderOptions& o)
   scene.Volume.TimeStep = range.First;
   auto t0 = Clock::now();
   SceneObjects objects = BuildScene(scene);
+  CheckVolumeInView(objects);
   double readSeconds = Since(t0);
   nlohmann::json frames = nlohmann::json::array();
   for (int step = range.First; step <= range.Last; ++step)

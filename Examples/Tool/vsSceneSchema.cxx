@@ -86,14 +86,14 @@ const std::vector<SceneKey>& SceneSchema()
     { "render", "control_extinction", T::Word, R::Any, 0, 0, "\"shadow\"", false, "control extinction", "", { "none", "shadow", "camera", "both" }, "which rays integrate each brick's smallest extinction exactly" },
     { "render", "transmittance_estimator", T::Word, R::Any, 0, 0, "\"ratio-tracking\"", false, "transmittance estimator", "", { "ratio-tracking", "ray-marching" }, "the shadow rays' transmittance estimator" },
     { "render", "sampler", T::Word, R::Any, 0, 0, "\"sobol\"", false, "sampler", "", { "independent", "sobol" }, "where a sample's jitter and light direction come from" },
-    { "render", "mode", T::Word, R::Any, 0, 0, "\"monte-carlo\"", false, "render mode", "", { "emission-absorption", "monte-carlo", "preview", "ambient-occlusion" }, "the mapper's RenderMode" },
+    { "render", "mode", T::Word, R::Any, 0, 0, "\"monte-carlo\"", false, "render mode", "", { "emission-absorption", "monte-carlo", "preview", "ambient-occlusion" }, "the mapper's RenderMode (the API's spelling too)" },
     { "render", "shadow_rays", T::Integer, R::Closed, 1, 64, "1", false, "shadow rays per scatter point", "", {}, "shadow rays per scatter point (splitting)" },
     { "render", "max_scattering_events", T::Integer, R::Closed, 1, 100000, "1024", false, "scattering events", "", {}, "the most scattering events a path may have (1: single scattering)" },
     { "render", "anisotropy", T::Number, R::Open, -1, 1, "0", false, "anisotropy", "", {}, "the Henyey-Greenstein phase function's g (> 0 forward, < 0 backward)" },
 
     // The mapper's settings: absent = the mapper's default (vtkVisibilitySweepVolumeMapper.h).
     { "visibility", "direction_resolution", T::Integer, R::Closed, 1, 1024, nullptr, false, "resolution", "", {}, "directions per octahedral side: 4, 8 or 16" },
-    { "visibility", "voxels_per_cell", T::Number, R::Positive, 0, kInf, nullptr, false, "voxels per cell", "", {}, "the grid's cell size in voxels (absent: automatic)" },
+    { "visibility", "voxels_per_cell", T::Number, R::Closed, 1, 256, nullptr, false, "voxels per cell", "", {}, "the grid's cell size in voxels, 1 to 256 (absent: automatic)" },
     { "visibility", "kernel_resolution", T::Integer, R::Closed, 0, 1 << 14, nullptr, false, "rays", "", {}, "0 = automatic" },
     { "visibility", "filtering", T::Boolean, R::Any, 0, 0, nullptr, false, "", "", {}, "the mapper's Filtering" },
     { "visibility", "filter_angle_fraction", T::Number, R::Closed, 0, 1, nullptr, false, "fraction", "", {}, "the mapper's FilterAngleFraction" },

@@ -3,6 +3,7 @@
 #include "vsSceneValues.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -248,7 +249,22 @@ bool IsPowerOfTwo(int v)
 int NameIndex(const std::vector<std::string>& names, const std::string& name, const std::string& key,
   const std::string& what)
 {
-  auto it = std::find(names.begin(), names.end(), name);
+  // Every word also in the API's spelling (RenderMode "AmbientOcclusion", UpdateScheme "RoundRobin"),
+  // as the strategies always were: case, '-' and '_' are ignored (issue 35: render.mode refused
+  // "Preview" where render.strategy took "TwoStep").
+  auto folded = [](const std::string& text) {
+    std::string f;
+    for (const char c : text)
+    {
+      if (c != '-' && c != '_')
+      {
+        f += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      }
+    }
+    return f;
+  };
+  auto it = std::find_if(
+    names.begin(), names.end(), [&](const std::string& n) { return folded(n) == folded(name); });
   if (it == names.end())
   {
     Fail(key, "unknown " + what + " '" + name + "' (expected " + List(names) + ")");

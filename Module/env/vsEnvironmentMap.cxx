@@ -8,7 +8,10 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdio>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -30,6 +33,10 @@ constexpr int RefineFactor = 4;
 constexpr int MaxSub = 32;
 // The finest map a lat-long is first converted to when a coarser one is requested.
 constexpr int MaxWorkSize = 2048;
+// ... and at least this fine: the sub-sample grid of a texel is sized by its corners' directions, which
+// for a map of 1 or 2 texels per side coincide (one sample at the texel's centre: a 1 x 1 map held the
+// upper pole's colour, not the mean). Box-filtered down afterwards, so the mean is kept.
+constexpr int MinWorkSize = 16;
 
 bool Good(float c)
 {
@@ -209,19 +216,38 @@ double EnvironmentMap::TotalPower() const
   return 4.0 * Pi * this->MeanLuminance;
 }
 
-int EnvironmentMap::DefaultSize(int latLongWidth)
+int EnvironmentMap::DefaultSize(int latLongWidth, int latLongHeight)
 {
+  const double pixels = double(std::max(0, latLongWidth)) * double(std::max(0, latLongHeight));
   int size = 1;
-  while (size < latLongWidth / 2 + latLongWidth % 2 && size < (1 << 15))
+  while (double(size) * size < pixels / 2.0 && size < (1 << 15))
   {
     size *= 2;
   }
   return size;
 }
 
+void EnvironmentMap::CheckMemory(int size, const char* what)
+{
+  // Radiance (3 floats) and the luminance pyramid (1 float, 4/3 over its levels) per texel.
+  const double bytes = double(size) * double(size) * (12.0 + 4.0 * 4.0 / 3.0);
+  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGE_SIZE);
+  const double memory = pages > 0 && pageSize > 0 ? double(pages) * double(pageSize) : 0.0;
+  if (memory > 0.0 && bytes > 0.5 * memory)
+  {
+    char text[256];
+    std::snprintf(text, sizeof(text),
+      "an octahedral map of %d x %d texels needs %.1f GB, more than half of this machine's %.1f GB; "
+      "choose a smaller octahedral size",
+      size, size, bytes / 1e9, memory / 1e9);
+    throw std::invalid_argument(std::string(what) + ": " + text);
+  }
+}
+
 EnvironmentMap EnvironmentMap::Allocate(int size)
 {
   CheckSize(size, "EnvironmentMap");
+  CheckMemory(size, "EnvironmentMap");
   EnvironmentMap map;
   map.Size = size;
   map.Radiance.assign(3 * std::size_t(size) * size, 0.0f);
@@ -290,9 +316,10 @@ EnvironmentMap EnvironmentMap::FromLatLong(const LatLongImage& image, int size, 
   }
   if (size == 0)
   {
-    size = DefaultSize(image.Width);
+    size = DefaultSize(image.Width, image.Height);
   }
   CheckSize(size, "EnvironmentMap::FromLatLong");
+  CheckMemory(size, "EnvironmentMap::FromLatLong");
   if (!std::isfinite(rotationDeg) || !std::isfinite(intensity))
   {
     throw std::invalid_argument("EnvironmentMap::FromLatLong: rotation and intensity must be finite");
@@ -308,7 +335,7 @@ EnvironmentMap EnvironmentMap::FromLatLong(const LatLongImage& image, int size, 
   // most MaxWorkSize) or finer; a smaller requested map is then box-filtered
   // 2x2 at a time, which is exact: an octahedral texel is the union of its 4
   // children, all of equal solid angle.
-  const int work = std::max(size, std::min(DefaultSize(src.Width), MaxWorkSize));
+  const int work = std::max(size, std::clamp(DefaultSize(src.Width, src.Height), MinWorkSize, MaxWorkSize));
   EnvironmentMap map = Allocate(work);
   // The ringing bound: RingingFraction of the source's mean luminance over the sphere (negative
   // and non-finite channels count as 0 in LatLongPower).

@@ -131,9 +131,14 @@ public:
    * BadTexels), then rebuild ImportanceMips and the means. Call after editing Radiance. */
   void Finalize();
 
-  /* Default octahedral size for a lat-long of the given width: the smallest power
-   * of two >= width / 2 (1024 -> 512), at least 1. */
-  static int DefaultSize(int latLongWidth);
+  /* Default octahedral size for a lat-long of width x height pixels: the smallest power of two N
+   * with N^2 >= width x height / 2, the texels of a 2:1 map's pixels (1024 x 512 -> 512), at
+   * least 1 and at most 32768. It follows the pixels in both directions: from the width alone a
+   * 1- or 2-pixel-wide map became 1 x 1 (the upper pole's colour), a 65536 x 1 map 32768^2 (12 GB). */
+  static int DefaultSize(int latLongWidth, int latLongHeight);
+  /* Throws std::invalid_argument (naming `what`) when a map of size x size texels needs more than
+   * half of this machine's physical memory (with its importance pyramid, ~17 bytes per texel). */
+  static void CheckMemory(int size, const char* what);
   static bool IsPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
 
   /* Progress callback, called with values in [0, 1] from the calling thread. */
@@ -144,8 +149,10 @@ public:
    * bilinear lookup with wrap in u and clamp in v) with a spacing of at most 0.7
    * source pixel, and texels whose samples vary by more than 1e-4 of the map's
    * power (a sun) again 4x finer per axis. A size below the source's resolution
-   * is converted at DefaultSize(width) (at most 2048) and box-filtered down, which
-   * is exact on the nested equal-area texels. size = 0 chooses DefaultSize(width). Bad source channels are zeroed and counted in BadTexels.
+   * is converted at DefaultSize(width, height) (at least 16, at most 2048: the sub-samples of a
+   * texel are sized by its corners, which a coarser map's texels do not resolve) and box-filtered
+   * down, which is exact on the nested equal-area texels, so the map's mean radiance is the
+   * source's for any shape. size = 0 chooses DefaultSize(width, height). Bad source channels are zeroed and counted in BadTexels.
    * threads = 0 uses the hardware concurrency; the result does not depend on it.
    * Throws std::invalid_argument for an empty image or a size that is not a power of two. */
   static EnvironmentMap FromLatLong(const LatLongImage& image, int size = 0,

@@ -194,7 +194,9 @@ GridUpdateResult VisibilityGridUpdater::Update(const DeviceVolume& volume, const
   GridUpdateResult result;
   std::vector<uint32_t> lazy;
   const std::vector<double> signature = Signature(request);
-  if (!this->Grid_->Valid() || request.FullUpdate || signature != this->Signature_ || this->Swept_.size() != count)
+  const bool dataChanged = request.DataVersion != this->DataVersion_;
+  if (!this->Grid_->Valid() || request.FullUpdate || signature != this->Signature_ || this->Swept_.size() != count ||
+    (request.Exact && (dataChanged || this->Stale_)))
   {
     // A full invalidation: a new grid at visibility 1 (the product pdf is then environment
     // sampling), every needed direction pending.
@@ -209,12 +211,16 @@ GridUpdateResult VisibilityGridUpdater::Update(const DeviceVolume& volume, const
     this->Signature_ = signature;
     this->Scheduler_.OnFullUpdate();
     this->Allowance_ = 0.0;
+    this->Stale_ = false;
     ++this->Generation_;
     result.NewGrid = true;
   }
-  else if (request.DataVersion != this->DataVersion_)
+  else if (dataChanged)
   {
     lazy = this->Scheduler_.OnDataChange(request.Schedule, side, request.Importance, request.Required);
+    // The directions not in `lazy` keep an earlier data's visibility (unbiased for the Monte Carlo
+    // estimate, wrong as the light of an exact request): remembered until the next full update.
+    this->Stale_ = true;
   }
   this->DataVersion_ = request.DataVersion;
   this->Required_ = request.Required;

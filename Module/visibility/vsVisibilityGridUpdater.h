@@ -41,6 +41,10 @@ struct GridUpdateRequest
   uint64_t DataVersion = 0;
   /** Extinction or geometry changed in a way that is not a data-only change: sweep everything. */
   bool FullUpdate = false;
+  /** The grid must hold the current data's visibility in every direction, as a fresh grid would (the
+   *  Preview and AmbientOcclusion modes, whose image *is* the grid's light): a data-only change, or
+   *  a grid left stale by earlier lazy updates, is then a full invalidation, not a lazy update. */
+  bool Exact = false;
   UpdateSchedule Schedule;
   /** Fill a new grid progressively (see above) or sweep every needed direction at once. */
   bool Progressive = true;
@@ -126,6 +130,7 @@ private:
   std::vector<uint8_t> Required_; // of the last request
   std::vector<float> Importance_; // of the last request
   uint64_t DataVersion_ = 0;
+  bool Stale_ = false;            // a lazy update left directions with an earlier data's visibility
   uint64_t Generation_ = 0;
   double SecondsPerDirection_ = 0.0;
   double Allowance_ = 0.0;        // progressive: sweep seconds granted and not yet spent

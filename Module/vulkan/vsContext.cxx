@@ -461,15 +461,68 @@ std::shared_ptr<ComputePipeline> Context::Pipeline(
     {
       entry = std::make_shared<PipelineSlot>();
     }
+    entry->LastUse = ++this->UseClock_;
     slot = entry;
   }
+  bool made = false;
   std::call_once(slot->Made,
     [&]()
     {
       slot->Pipeline = make();
       slot->Ready = true;
+      made = true;
     });
+  if (made)
+  {
+    ++this->PipelineBuilds_;
+    std::lock_guard<std::mutex> lock(this->PipelineMutex_);
+    this->TrimPipelines(key);
+  }
   return slot->Pipeline;
+}
+
+void Context::TrimPipelines(const std::string& keep)
+{
+  size_t ready = 0;
+  for (const auto& entry : this->Pipelines_)
+  {
+    ready += entry.second->Ready ? 1 : 0;
+  }
+  while (ready > this->PipelineLimit_)
+  {
+    // Only the cache holds a candidate (use count 1): no pass keeps it, and no batch records it (a
+    // pass holds what it dispatches; batches wait for their fence when submitted). A caller that
+    // took the slot before it left the map keeps the slot, and with it the pipeline.
+    auto oldest = this->Pipelines_.end();
+    for (auto it = this->Pipelines_.begin(); it != this->Pipelines_.end(); ++it)
+    {
+      const PipelineSlot& s = *it->second;
+      if (s.Ready && it->first != keep && s.Pipeline.use_count() <= 1 &&
+        (oldest == this->Pipelines_.end() || s.LastUse < oldest->second->LastUse))
+      {
+        oldest = it;
+      }
+    }
+    if (oldest == this->Pipelines_.end())
+    {
+      break; // the rest are in use
+    }
+    this->Pipelines_.erase(oldest);
+    --ready;
+  }
+}
+
+void Context::SetPipelineLimit(size_t limit)
+{
+  std::lock_guard<std::mutex> lock(this->PipelineMutex_);
+  this->PipelineLimit_ = std::max<size_t>(1, limit);
+  this->TrimPipelines(std::string());
+}
+
+size_t Context::PipelineLimit() const
+{
+  std::lock_guard<std::mutex> lock(this->PipelineMutex_);
+  return this->PipelineLimit_;
 }
 
 size_t Context::PipelineCount() const

@@ -98,9 +98,19 @@ public:
   std::shared_ptr<ComputePipeline> Pipeline(
     const std::string& key, const std::function<std::shared_ptr<ComputePipeline>()>& make);
 
-  /** How many pipelines the context holds (compiled ones stay for the process: a one-time cost,
-   *  which memory checks tell from a leak by this count). */
+  /** How many pipelines the context holds. A compiled pipeline stays while the cache has room: past
+   *  PipelineLimit() the least recently used ones that nothing else holds (no pass keeps them) are
+   *  let go, so churning through many variants of the kernels (strategies, samplers, estimators,
+   *  cropping, ...) does not grow the process without bound (issue 35: ~100-300 KB of compiled
+   *  code per lavapipe pipeline, all kept for the process before). */
   size_t PipelineCount() const;
+  /** Pipelines ever compiled (made) by this context: grows by one per compile, also when the
+   *  compile let another go (memory checks tell a compile from a leak by this count). */
+  uint64_t PipelineBuilds() const { return this->PipelineBuilds_.load(); }
+  /** The cache's bound (default 96 pipelines; at least 1). Pipelines held elsewhere are never let go,
+   *  so the count may exceed it while passes hold them. */
+  void SetPipelineLimit(size_t limit);
+  size_t PipelineLimit() const;
   /** The names of the pipelines the context holds, e.g. to tell which kernels a frame made. */
   std::vector<std::string> PipelineNames() const;
 
@@ -128,7 +138,14 @@ private:
     std::once_flag Made;
     std::shared_ptr<ComputePipeline> Pipeline; // set once, inside Made
     std::atomic<bool> Ready{ false };
+    uint64_t LastUse = 0; // the context's use clock at the last Pipeline() call of the key
   };
+  // Lets go of the least recently used ready pipelines nothing else holds, other than `keep`, while
+  // more than PipelineLimit_ are ready. Called with PipelineMutex_ held.
+  void TrimPipelines(const std::string& keep);
+  uint64_t UseClock_ = 0;
+  size_t PipelineLimit_ = 96;
+  std::atomic<uint64_t> PipelineBuilds_{ 0 };
   mutable std::mutex PipelineMutex_; // guards the map, not the compiles
   std::map<std::string, std::shared_ptr<PipelineSlot>> Pipelines_;
 };

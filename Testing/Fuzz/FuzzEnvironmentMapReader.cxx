@@ -7,7 +7,7 @@
 //
 // Harness limits (documented in docs/benchmarks.md): MaximumNumberOfPixels is lowered to 64
 // (the seeds are 8 x 4) and the octahedral size fixed at 16, so that one input reads and
-// converts in milliseconds: a source wider than the map is converted at DefaultSize(width)
+// converts in milliseconds: a source wider than the map is converted at DefaultSize(width, height)
 // first, seconds for a 64K-pixel-wide image under ASan. The limit path itself is under test.
 #include "vtkEnvironmentMapReader.h"
 

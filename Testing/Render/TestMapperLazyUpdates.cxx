@@ -275,6 +275,68 @@ void TestRoundRobinCycleRefreshesEverything()
   Check(VisibilityValues(s.Mapper) == reference, "16 round-robin changes of 4 directions refresh the whole grid");
 }
 
+// Issue 35, class 2: the Preview and AmbientOcclusion images *are* the grid's light, so after a data
+// change (the default RoundRobin scheme, or a grid left stale by Monte Carlo frames before a switch
+// to them) their image and grid are those of a fresh mapper. They stayed A's in 60 of 64 directions,
+// and once nothing was pending never recovered.
+// The Preview's radiance (its window image also depends on whether the skybox is in the frame yet),
+// or AmbientOcclusion's window image (it has no radiance).
+std::vector<float> LitImage(Scene& s)
+{
+  std::vector<float> out;
+  if (s.Mapper->GetRenderMode() == vtkVisibilitySweepVolumeMapper::Preview)
+  {
+    vtkImageData* r = s.Mapper->GetRadiance();
+    vtkDataArray* a = r ? r->GetPointData()->GetArray("Radiance") : nullptr;
+    for (vtkIdType i = 0; a && i < a->GetNumberOfValues(); ++i)
+      out.push_back(float(a->GetVariantValue(i).ToDouble()));
+    return out;
+  }
+  for (int v : vstest::WindowPixels(s.Window))
+    out.push_back(float(v));
+  return out;
+}
+
+void TestLitModesAfterDataChange()
+{
+  auto a = StepA(), b = StepB();
+  for (int mode : { vtkVisibilitySweepVolumeMapper::Preview, vtkVisibilitySweepVolumeMapper::AmbientOcclusion })
+  {
+    Scene fresh(b);
+    fresh.Mapper->SetRenderMode(mode);
+    fresh.Window->Render();
+    Check(std::string(fresh.Mapper->GetLastError()).empty(), fresh.Mapper->GetLastError());
+    const std::vector<float> reference = LitImage(fresh);
+    const std::vector<float> referenceGrid = VisibilityValues(fresh.Mapper);
+    const std::string name = mode == vtkVisibilitySweepVolumeMapper::Preview ? "Preview" : "AmbientOcclusion";
+
+    Scene changed(a);
+    changed.Mapper->SetRenderMode(mode);
+    changed.Mapper->SetUpdateSchemeToRoundRobin();
+    changed.Window->Render();
+    Check(LitImage(changed) != reference, name + ": the two time steps look different");
+    changed.SetData(b);
+    changed.Window->Render();
+    Check(std::string(changed.Mapper->GetLastError()).empty(), changed.Mapper->GetLastError());
+    Check(LitImage(changed) == reference, name + ": after new data the image is a fresh mapper's");
+    Check(VisibilityValues(changed.Mapper) == referenceGrid, name + ": after new data the grid is a fresh mapper's");
+
+    // Monte Carlo frames update the grid lazily (4 of 64 directions); a switch to the mode then
+    // must not show the stale grid's light.
+    Scene switched(a);
+    switched.Mapper->SetUpdateSchemeToRoundRobin();
+    switched.Mapper->SetMaximumSamples(1);
+    switched.Window->Render();
+    switched.SetData(b);
+    switched.Window->Render();
+    switched.Mapper->SetRenderMode(mode);
+    switched.Window->Render();
+    Check(std::string(switched.Mapper->GetLastError()).empty(), switched.Mapper->GetLastError());
+    Check(LitImage(switched) == reference,
+      name + ": after lazy Monte Carlo updates, the switch to the mode shows a fresh mapper's image");
+  }
+}
+
 // Volume B rendered with a grid that is still (mostly or wholly) volume A's, against B with a
 // fresh grid: the same mean.
 void TestStaleGridIsUnbiased()
@@ -329,6 +391,7 @@ int TestMapperLazyUpdates(int, char*[])
 {
   TestCounters();
   TestRoundRobinCycleRefreshesEverything();
+  TestLitModesAfterDataChange();
   TestStaleGridIsUnbiased();
   return vstest::ExitCode();
 }

@@ -32,7 +32,17 @@ set(cases
   "NaN frame budget|bench animation ${SCENE} --budget-per-frame nan|budget-per-frame: Value nan is not a finite number"
   "infinite budgets|bench convergence ${SCENE} --budgets 1,inf|budgets: Value inf is not a finite number"
   # Issue 13, item 9: the seed's bounds as integers, not a 309-digit double.
-  "negative seed|render ${SCENE} -o x.png --seed -5|--seed: Value -5 not in range 0 to 2147483647")
+  "negative seed|render ${SCENE} -o x.png --seed -5|--seed: Value -5 not in range 0 to 2147483647"
+  # Issue 35, class 7: every benchmark output is checked before the run (a JSON into a missing folder
+  # was "written" after the run, exit 0; one that is a device or a folder too).
+  "bench frames json folder|bench frames ${SCENE} --frames 1 --size 8 --json /nonexistent-folder/x.json|--json /nonexistent-folder/x.json: folder '/nonexistent-folder' does not exist"
+  "bench stress json device|bench stress ${SCENE} --json /dev/full|--json /dev/full: exists and is not a regular file"
+  "bench sweeps json folder|bench sweeps --json /nonexistent-folder/x.json|--json /nonexistent-folder/x.json: folder"
+  "bench lightvolume json folder|bench lightvolume ${SCENE} --json /nonexistent-folder/x.json|--json /nonexistent-folder/x.json: folder"
+  "bench overhead json folder|bench overhead ${SCENE} --json /nonexistent-folder/x.json|--json /nonexistent-folder/x.json: folder"
+  "bench animation plot folder|bench animation ${SCENE} --plot /nonexistent-folder/p.png|--plot /nonexistent-folder/p.png: folder"
+  "bench convergence csv folder|bench convergence ${SCENE} --csv /nonexistent-folder/c.csv|--csv /nonexistent-folder/c.csv: folder"
+  "bench preview sheet folder|bench preview ${SCENE} --contact-sheet /nonexistent-folder/s.png|--contact-sheet /nonexistent-folder/s.png: folder")
 foreach (c IN LISTS cases)
   string(REPLACE "|" ";" parts "${c}")
   list(LENGTH parts n)

@@ -181,6 +181,20 @@ TEST(SceneFile, StrategiesInTheApiSpellingToo)
   EXPECT_EQ(ParseScene(file, "/x").Render.Strategy, "two-step"); // stored in the file's spelling
 }
 
+// Issue 35: every word in the API's spelling, not only the strategies (render.mode refused "Preview").
+TEST(SceneFile, WordsInTheApiSpellingToo)
+{
+  json file = FullScene();
+  file["render"]["mode"] = "Preview";
+  EXPECT_EQ(ParseScene(file, "/x").Render.Mode, "preview");
+  file["render"]["mode"] = "AmbientOcclusion";
+  EXPECT_EQ(ParseScene(file, "/x").Render.Mode, "ambient-occlusion");
+  file["render"]["update_scheme"] = "RoundRobin";
+  EXPECT_EQ(ParseScene(file, "/x").Render.UpdateScheme, "round-robin");
+  EXPECT_EQ(vstool::RenderModeIndex("MonteCarlo"), vstool::RenderModeIndex("monte-carlo"));
+  EXPECT_THROW(vstool::RenderModeIndex("Monte Carlo"), std::runtime_error);
+}
+
 TEST(SceneFile, RoundTrip)
 {
   // Every environment kind, and with/without the optional sections.
@@ -425,6 +439,12 @@ TEST(SceneFile, BadValues)
     "render.update_scheme: unknown update scheme 'lazy' (expected full, round-robin, environment-guided, static)");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["update_scheme"] = 1; }),
     "render.update_scheme: expected a string, got number");
+  // Issue 35: voxels_per_cell outside what the mapper uses is refused, not clamped silently.
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["visibility"]["voxels_per_cell"] = 1e30; }),
+    "visibility.voxels_per_cell: voxels per cell 1e+30 not in [1, 256]");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["visibility"]["voxels_per_cell"] = 0.001; }),
+    "visibility.voxels_per_cell: voxels per cell 0.001 not in [1, 256]");
+  EXPECT_EQ(ErrorAfter([](json& j) { j["visibility"]["voxels_per_cell"] = 256; }), "");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["directions_per_frame"] = 0; }),
     "render.directions_per_frame: directions per frame 0 not in [1, 4096]");
   EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["render"]["shadow_rays"] = 65; }),

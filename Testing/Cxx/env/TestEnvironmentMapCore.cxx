@@ -7,8 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace
 {
@@ -97,11 +100,81 @@ TEST(EnvironmentMapCore, LatLongConventions)
       EXPECT_NEAR(uv.y, v, 1e-6);
     }
   }
-  EXPECT_EQ(vs::EnvironmentMap::DefaultSize(1024), 512);
-  EXPECT_EQ(vs::EnvironmentMap::DefaultSize(1000), 512);
-  EXPECT_EQ(vs::EnvironmentMap::DefaultSize(2048), 1024);
-  EXPECT_EQ(vs::EnvironmentMap::DefaultSize(3), 2);
-  EXPECT_EQ(vs::EnvironmentMap::DefaultSize(1), 1);
+  EXPECT_EQ(vs::EnvironmentMap::DefaultSize(1024, 512), 512);
+  EXPECT_EQ(vs::EnvironmentMap::DefaultSize(1000, 500), 512);
+  EXPECT_EQ(vs::EnvironmentMap::DefaultSize(2048, 1024), 1024);
+  EXPECT_EQ(vs::EnvironmentMap::DefaultSize(3, 2), 2);
+  EXPECT_EQ(vs::EnvironmentMap::DefaultSize(1, 1), 1);
+}
+
+// Issue 35, classes 3 and 4: the automatic size follows the map's pixels in both directions, and
+// the map's mean radiance (solid-angle weighted) is the source's for any shape. From the width
+// alone a map 1-2 pixels wide became a 1 x 1 map holding the upper pole's colour, and a small, very
+// wide one a gigantic map (65536 x 1 pixels: 32768^2 texels, 12 GB).
+TEST(EnvironmentMapCore, AnyShapeKeepsTheMeanAndABoundedSize)
+{
+  EXPECT_EQ(vs::EnvironmentMap::DefaultSize(1, 2), 1);
+  EXPECT_EQ(vs::EnvironmentMap::DefaultSize(2, 1000), 32);
+  EXPECT_EQ(vs::EnvironmentMap::DefaultSize(65536, 1), 256);
+  EXPECT_EQ(vs::EnvironmentMap::DefaultSize(1 << 30, 1 << 30), 1 << 15);
+  struct Shape
+  {
+    int W, H;
+  };
+  for (const Shape shape : { Shape{ 1, 1 }, Shape{ 1, 2 }, Shape{ 2, 1 }, Shape{ 2, 2 }, Shape{ 3, 1 },
+         Shape{ 2, 64 }, Shape{ 4096, 1 }, Shape{ 4096, 2 } })
+  {
+    vs::LatLongImage img;
+    img.Width = shape.W;
+    img.Height = shape.H;
+    img.RGB.resize(3 * std::size_t(shape.W) * shape.H);
+    // Rows of different colours (the upper one bright), columns varying too.
+    glm::dvec3 sum(0.0);
+    for (int j = 0; j < shape.H; ++j)
+    {
+      // The row's solid angle over the whole sphere's: (cos theta0 - cos theta1) / 2.
+      const double weight = 0.5 * (std::cos(Pi * j / shape.H) - std::cos(Pi * (j + 1) / shape.H)) / shape.W;
+      for (int i = 0; i < shape.W; ++i)
+      {
+        const glm::vec3 c(j == 0 ? 5.0f : 0.5f + 0.1f * float(j % 3), 1.0f + 0.5f * float(i % 2), 0.2f + 0.01f * float(i % 7));
+        float* p = &img.RGB[3 * (std::size_t(j) * shape.W + i)];
+        p[0] = c.x;
+        p[1] = c.y;
+        p[2] = c.z;
+        sum += weight * glm::dvec3(c);
+      }
+    }
+    const vs::EnvironmentMap map = vs::EnvironmentMap::FromLatLong(img);
+    const std::string what = std::to_string(shape.W) + " x " + std::to_string(shape.H);
+    EXPECT_LE(double(map.Size) * map.Size, std::max(1.0, 2.0 * shape.W * shape.H)) << what; // the file's pixels
+    // The piecewise-constant source's mean against the map's: the same for 1 or 2 rows (the bilinear
+    // reading the conversion integrates is symmetric about the equator there), within a little for many.
+    const double tolerance = shape.H <= 2 ? 0.002 : 0.03;
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(map.MeanRadiance[c], sum[c], tolerance * sum[c]) << what << ", channel " << c;
+    }
+  }
+}
+
+// An explicit size the machine cannot hold is refused with a clear error (32768^2 texels need
+// ~18.6 GB), before anything is allocated.
+TEST(EnvironmentMapCore, ExplicitSizeBoundedByMemory)
+{
+  const double memory = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
+  EXPECT_NO_THROW(vs::EnvironmentMap::CheckMemory(1024, "test"));
+  if (memory < 2.0 * 18.6e9)
+  {
+    try
+    {
+      vs::EnvironmentMap::Allocate(32768);
+      ADD_FAILURE() << "a 32768^2 map on a machine of " << memory / 1e9 << " GB was allocated";
+    }
+    catch (const std::invalid_argument& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("choose a smaller octahedral size"), std::string::npos) << e.what();
+    }
+  }
 }
 
 // Radiance = (max(0, x), max(0, y), max(0, z)): a known function of direction

@@ -3,6 +3,7 @@
 #include "vsBatch.h"
 #include "vsBuffer.h"
 #include "vsContext.h"
+#include "vs_spirv_loop_probe.h"
 #include "vsError.h"
 #include "vsImage.h"
 #include "vsPipeline.h"
@@ -12,6 +13,10 @@
 #include "sampling/rng.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
 
 #include <cstdlib>
 #include <numeric>
@@ -209,4 +214,55 @@ TEST(VulkanCore, ValidationLayersReportNothing)
     b.Fill(0u);
   }
   EXPECT_EQ(ctx->ValidationMessageCount(), 0u);
+}
+
+// Issue 35, class 10: the context's pipeline cache has a bound. Every variant a kernel was ever
+// compiled for stayed for the process (~100-300 KB of lavapipe code each), so long churn through
+// many kinds of setting grew without bound and kept it after the mapper was deleted. Past the
+// limit the least recently used pipelines nothing else holds are let go; held ones never are.
+namespace
+{
+std::shared_ptr<vs::ComputePipeline> CachePipeline(int k, const std::string& prefix = "test: cache variant ")
+{
+  return vs::SharedPipeline(vs::Context::Default(), VS_SPIRV(vs_spirv_loop_probe), { vs::BindingType::StorageBuffer },
+    2 * sizeof(uint32_t), prefix + std::to_string(k));
+}
+
+bool Holds(const std::string& name)
+{
+  const auto names = vs::Context::Default()->PipelineNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+}
+
+TEST(VulkanCore, PipelineCacheIsBounded)
+{
+  auto ctx = vs::Context::Default();
+  auto held = CachePipeline(0); // held here: never let go
+  for (int k = 1; k <= 150; ++k)
+  {
+    CachePipeline(k); // dropped at once: only the cache holds it
+  }
+  std::printf("%zu pipelines held after 151 variants\n", ctx->PipelineCount());
+  EXPECT_LE(ctx->PipelineCount(), 100u) << "the cache keeps every variant";
+  EXPECT_TRUE(Holds("test: cache variant 0")) << "a pipeline in use was let go";
+  EXPECT_TRUE(Holds("test: cache variant 150")) << "the newest pipeline was let go";
+  EXPECT_FALSE(Holds("test: cache variant 1")) << "the least recently used pipeline stayed";
+}
+
+TEST(VulkanCore, PipelineCacheRemakesWhatItLetGo)
+{
+  auto ctx = vs::Context::Default();
+  ctx->SetPipelineLimit(2); // nothing else is held here: two stay
+  const uint64_t builds = ctx->PipelineBuilds();
+  for (int k = 0; k < 5; ++k)
+  {
+    CachePipeline(k, "test: remake ");
+  }
+  EXPECT_EQ(ctx->PipelineBuilds(), builds + 5);
+  CachePipeline(4, "test: remake "); // still cached: no compile
+  EXPECT_EQ(ctx->PipelineBuilds(), builds + 5);
+  CachePipeline(0, "test: remake "); // let go: made again, and usable
+  EXPECT_EQ(ctx->PipelineBuilds(), builds + 6);
+  ctx->SetPipelineLimit(96);
 }
