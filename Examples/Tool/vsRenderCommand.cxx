@@ -167,6 +167,17 @@ int Run(const RenderOptions& o)
   {
     std::cout << stats.dump(2) << std::endl;
   }
+  else if (scene.Render.Mode != "monte-carlo")
+  {
+    // A deterministic mode renders one frame: no samples, no paths, no strategy to report.
+    std::printf("%d x %d, %s, one frame in %.2f s (setup %.2f s; device: majorants %.3f s, sweeps %.3f s, render %.3f s)\n",
+      scene.Render.Width, scene.Render.Height, scene.Render.Mode.c_str(), renderSeconds, setupSeconds,
+      mapper->GetLastMajorantSeconds(), sweepSeconds, deviceSeconds);
+    for (const auto& out : o.Outputs)
+    {
+      std::printf("wrote %s\n", out.c_str());
+    }
+  }
   else
   {
     std::printf("%d x %d, %s, %d spp in %.2f s (setup %.2f s; device: majorants %.3f s, sweeps %.3f s, render %.3f s): "
