@@ -4,6 +4,8 @@
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkProp.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkRendererCollection.h"
 #include "vtkUnsignedCharArray.h"
@@ -28,7 +30,7 @@ unsigned char ToUnorm8(float v)
 
 vtkVisSweepHeadlessWindow::vtkVisSweepHeadlessWindow()
 {
-  this->OffScreenRendering = 1;
+  this->SetOffScreenRendering(1);
   this->DoubleBuffer = 0;
   this->SetWindowName("VisSweep (headless)");
 }
@@ -97,7 +99,15 @@ void vtkVisSweepHeadlessWindow::Render()
         }
       }
     }
-    if (ren->VisibleActorCount() > 0 && !this->WarnedActors)
+    // VisibleActorCount() counts the volumes too: look for the props that are not volumes.
+    bool actors = false;
+    vtkProp* prop;
+    vtkCollectionSimpleIterator pit;
+    for (ren->GetViewProps()->InitTraversal(pit); (prop = ren->GetViewProps()->GetNextProp(pit));)
+    {
+      actors = actors || (prop->GetVisibility() && !vtkVolume::SafeDownCast(prop));
+    }
+    if (actors && !this->WarnedActors)
     {
       this->WarnedActors = true;
       vtkWarningMacro(<< "draws volumes only: the renderer's actors are not drawn (they need an OpenGL window)");

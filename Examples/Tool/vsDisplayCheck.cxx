@@ -14,7 +14,7 @@ namespace vs
 void RequireDisplay()
 {
   const char* name = std::getenv("DISPLAY");
-  const std::string hint = "this measures VTK's OpenGL window, which needs an X display (Debian's VTK has neither "
+  const std::string hint = "This measures VTK's OpenGL window, which needs an X display (Debian's VTK has neither "
                            "EGL nor OSMesa); on a headless machine run it under `xvfb-run -a vissweep ...` "
                            "(vissweep render, info and the other benchmarks need no display)";
   if (!name || !*name)
