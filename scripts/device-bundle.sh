@@ -2,8 +2,9 @@
 # Makes the device bundle (issue 37): a folder of at most 64 MiB that runs VisSweep's device checks
 # and benchmarks in one command on any Linux x86-64 machine with a Vulkan loader and driver (a GPU
 # machine with nothing but NVIDIA's driver on it: no Debian packages, no network, no X server):
-#   bin/     the headless tool (vissweep) and the unit tests (vissweep_unit_tests), stripped
-#   lib/     every shared library they need beyond glibc and the Vulkan loader (found by ldd)
+#   programs.tar.gz  bin/: the headless tool (vissweep) and the unit tests (vissweep_unit_tests),
+#            stripped; lib/: every shared library they need beyond glibc and the Vulkan loader
+#            (found by ldd); run.sh unpacks it beside itself (or in $TMPDIR) on its first run
 #   data/    Colin27 (ch2, ch2better from mricron-data), the sunrise HDRI, the test data (Data/)
 #   scenes/  the benchmark scenes with their paths into data/: mri_sunrise, brain_sunrise, tiny
 #   run.sh   info, the device tests, bench overhead, bench sweeps, bench convergence: JSON + summary
@@ -69,13 +70,17 @@ for name, (source, volume) in scenes.items():
         env["file"] = "../data/envmaps/" + env["file"].split("/")[-1]
     json.dump(scene, open(out + "/scenes/" + name, "w"), indent=2)
 EOF
+# The programs and libraries packed (gzip: OpenVDB alone is 57 MB, the libraries 135 MB unpacked);
+# run.sh unpacks them at its first run. tar and gzip are on any Linux.
+tar -C "$out" -czf "$out/programs.tar.gz" bin lib
+rm -rf "$out/bin" "$out/lib"
 cp "$root/scripts/device-run.sh" "$out/run.sh"
 chmod +x "$out/run.sh"
 
 size=$(du -sb "$out" | cut -f1)
 if [ "$size" -gt "$limit" ]; then
   echo "device-bundle.sh: $out is $((size / 1048576)) MiB, more than 64 MiB:" >&2
-  du -sb "$out"/* "$out"/lib/* | sort -n | tail -8 >&2
+  du -sb "$out"/* "$out"/data/* | sort -n | tail -8 >&2
   exit 1
 fi
-echo "device bundle: $out ($((size / 1048576)) MiB, $(ls "$out/lib" | wc -l) libraries); run: $out/run.sh"
+echo "device bundle: $out ($((size / 1048576)) MiB, $(tar -tzf "$out/programs.tar.gz" | grep -c '^lib/.') libraries); run: $out/run.sh"

@@ -28,9 +28,21 @@ if ! mkdir -p "$results"; then
 fi
 results=$(CDPATH= cd -- "$results" && pwd)
 summary="$results/summary.txt"
-tool="$here/bin/vissweep"
-tests="$here/bin/vissweep_unit_tests"
-LD_LIBRARY_PATH="$here/lib"
+# The programs and their libraries, packed by device-bundle.sh: unpacked once, beside run.sh when
+# its folder is writable, else in $TMPDIR.
+programs="$here/programs"
+if [ ! -x "$programs/bin/vissweep" ]; then
+  if ! mkdir -p "$programs" 2> /dev/null || [ ! -w "$programs" ]; then
+    programs=$(mktemp -d "${TMPDIR:-/tmp}/vissweep-bundle.XXXXXX") || { echo "run.sh: error: no folder to unpack into" >&2; exit 2; }
+  fi
+  if ! gzip -dc "$here/programs.tar.gz" | tar -x -C "$programs"; then
+    echo "run.sh: error: cannot unpack $here/programs.tar.gz into $programs (tar and gzip are needed)" >&2
+    exit 2
+  fi
+fi
+tool="$programs/bin/vissweep"
+tests="$programs/bin/vissweep_unit_tests"
+LD_LIBRARY_PATH="$programs/lib"
 export LD_LIBRARY_PATH
 # Headless: nothing here needs an X display.
 unset DISPLAY

@@ -22,11 +22,6 @@ VISSWEEP_BUILD_DIR="$build" "$root/scripts/device-bundle.sh" "$bundle"
 size=$(du -sb "$bundle" | cut -f1)
 [ "$size" -le $((64 * 1024 * 1024)) ] || fail "the bundle is $size bytes"
 
-# Every library resolved from outside the bundle is glibc's or the Vulkan loader.
-outside=$(env -i LD_LIBRARY_PATH="$bundle/lib" ldd "$bundle/bin/vissweep" "$bundle/bin/vissweep_unit_tests" |
-  awk '/=> \// { print $3 }' | grep -v "^$bundle/lib/" |
-  grep -v -E '/(libc|libm|libpthread|libdl|librt|libresolv|libutil|ld-linux-x86-64|libvulkan)\.so' || true)
-[ -z "$outside" ] || fail "libraries loaded from outside the bundle: $outside"
 
 # The quick run, in a clean environment: HOME only for Mesa's shader cache (compiles take minutes).
 rc=0
@@ -34,6 +29,11 @@ env -i PATH=/usr/bin:/bin HOME="${HOME:-/root}" LP_NUM_THREADS=1 "$bundle/run.sh
   > "$out/run.log" 2>&1 || rc=$?
 cat "$out/run.log"
 [ "$rc" = 0 ] || fail "run.sh --quick exited $rc"
+# Every library resolved from outside the bundle is glibc's or the Vulkan loader.
+outside=$(env -i LD_LIBRARY_PATH="$bundle/programs/lib" ldd "$bundle/programs/bin/vissweep" \
+  "$bundle/programs/bin/vissweep_unit_tests" | awk '/=> \// { print $3 }' | grep -v "^$bundle/programs/lib/" |
+  grep -v -E '/(libc|libm|libpthread|libdl|librt|libresolv|libutil|ld-linux-x86-64|libvulkan)\.so' || true)
+[ -z "$outside" ] || fail "libraries loaded from outside the bundle: $outside"
 for f in info.txt tests.json overhead.json sweeps.json convergence.json summary.txt; do
   [ -s "$out/results/$f" ] || fail "run.sh wrote no $f"
 done
