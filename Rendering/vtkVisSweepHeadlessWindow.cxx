@@ -162,10 +162,14 @@ void vtkVisSweepHeadlessWindow::BlendPremultiplied(
       const int sx = std::min(width - 1, int(int64_t(col - x) * width / w));
       const float* s = rgba + (size_t(sy) * width + sx) * 4;
       unsigned char* d = &this->Pixels[(size_t(row) * this->PixelsSize[0] + col) * 4];
-      const float keep = 1.0f - std::min(std::max(s[3], 0.0f), 1.0f);
+      // As an OpenGL blend into an 8-bit buffer computes it (llvmpipe's, bit for bit): the source in
+      // 8 bits, the destination times (255 - source alpha) / 255 rounded, the sum saturated.
+      const unsigned keep = 255u - ToUnorm8(s[3]);
       for (int c = 0; c < 4; ++c)
       {
-        d[c] = ToUnorm8(s[c] + keep * (float(d[c]) / 255.0f));
+        unsigned t = unsigned(d[c]) * keep + 128u;
+        t = (t + (t >> 8)) >> 8;
+        d[c] = static_cast<unsigned char>(std::min(255u, unsigned(ToUnorm8(s[c])) + t));
       }
     }
   }
