@@ -222,6 +222,10 @@ Scene LoadScene(const RenderOptions& o)
   {
     scene.Render.Seed = o.Seed;
   }
+  if (o.Exposure >= 0.0)
+  {
+    scene.Render.Exposure = o.Exposure;
+  }
   if (!o.Mode.empty())
   {
     scene.Render.Mode = SceneRenderModes()[RenderModeIndex(o.Mode, "--mode")];
@@ -381,6 +385,11 @@ void AddRender(CLI::App& app)
   // CLI::NonNegativeNumber printed its bound as a 309-digit double ("not in range 0.000000 to 17976...").
   cmd->add_option("--seed", o->Seed, "random seed, 0 to 2147483647 (overrides the scene)")
     ->check(CLI::Range(0, std::numeric_limits<int>::max()));
+  cmd->add_option("--exposure", o->Exposure,
+       "the PNG's exposure: a multiplier on the radiance before the tone curve (overrides render.exposure; "
+       "the EXR is the radiance, unchanged)")
+    ->check(FiniteNumber())
+    ->check(CLI::PositiveNumber);
   cmd->add_option("--samples-per-frame", o->SamplesPerFrame,
       "samples per pixel added by each progressive frame (default 0: as many as take about 0.5 s)")
     ->check(CLI::Range(0, 1 << 16));

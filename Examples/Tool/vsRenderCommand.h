@@ -31,6 +31,7 @@ struct RenderOptions
   std::string Strategy;
   std::string Mode; // the render mode (overrides render.mode)
   int Seed = -1;
+  double Exposure = -1.0; // the PNG's exposure (overrides render.exposure); < 0: the scene's
   int SamplesPerFrame = 0; // 0: frames of about AutoFrameSeconds
   std::string Json;
   bool Quiet = false;
