@@ -60,7 +60,7 @@ int Run(const Options& o)
   CheckBenchOutputs({ { "--json", o.Json } });
   Scene scene = ReadSceneFile(o.Scene);
   scene.Render.Width = scene.Render.Height = o.Size;
-  SceneObjects objects = BuildScene(scene);
+  SceneObjects objects = BuildScene(scene, true); // frame times in VTK's OpenGL window
   auto* mapper = objects.Mapper.Get();
   mapper->SetMaximumSamples(1 << 30);
   mapper->SetSamplesPerFrame(1);

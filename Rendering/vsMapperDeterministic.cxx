@@ -147,7 +147,7 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol,
   bool seesEnvironment = false;
   if (preview)
   {
-    const bool asBackground = this->GetShowsEnvironmentAsBackground();
+    const bool asBackground = this->GetShowsEnvironmentAsBackground() && vs::WindowCompositor::DrawsActors(ren);
     if (asBackground)
     {
       vs::EnvironmentBackground::Observe(ren);

@@ -197,7 +197,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   // skybox yet (the renderer's first with this volume), or with EnvironmentAsBackground off, the
   // first VisSweep volume of the renderer's frame paints the environment with its own (opaque)
   // image; with EnvironmentAsBackground off the others are transparent where empty (vs::RendererFrame).
-  const bool asBackground = this->GetShowsEnvironmentAsBackground();
+  const bool asBackground = this->GetShowsEnvironmentAsBackground() && vs::WindowCompositor::DrawsActors(ren);
   if (asBackground)
   {
     vs::EnvironmentBackground::Observe(ren);

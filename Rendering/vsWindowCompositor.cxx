@@ -3,6 +3,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkRenderer.h"
+#include "vtkVisSweepHeadlessWindow.h"
 #include "vtk_glew.h"
 
 namespace vs
@@ -12,6 +13,11 @@ Viewport WindowCompositor::GetViewport(vtkRenderer* ren)
   Viewport vp;
   ren->GetTiledSizeAndOrigin(&vp.Width, &vp.Height, &vp.X, &vp.Y);
   return vp;
+}
+
+bool WindowCompositor::DrawsActors(vtkRenderer* ren)
+{
+  return !vtkVisSweepHeadlessWindow::SafeDownCast(ren->GetRenderWindow());
 }
 
 std::vector<float> WindowCompositor::ReadDepth(vtkRenderer* ren, const Viewport& vp)
@@ -32,8 +38,18 @@ bool WindowCompositor::Draw(vtkRenderer* ren, const Viewport& vp, const std::vec
 bool WindowCompositor::DrawScaled(
   vtkRenderer* ren, const Viewport& vp, const std::vector<float>& rgba, int width, int height)
 {
+  if (vp.Width <= 0 || vp.Height <= 0)
+  {
+    return false;
+  }
+  if (auto* headless = vtkVisSweepHeadlessWindow::SafeDownCast(ren->GetRenderWindow()))
+  {
+    // No OpenGL: the same blend into the window's 8-bit image.
+    headless->BlendPremultiplied(vp.X, vp.Y, vp.X + vp.Width - 1, vp.Y + vp.Height - 1, rgba.data(), width, height);
+    return true;
+  }
   auto* win = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!win || vp.Width <= 0 || vp.Height <= 0)
+  if (!win)
   {
     return false;
   }

@@ -20,6 +20,9 @@ class WindowCompositor
 {
 public:
   static Viewport GetViewport(vtkRenderer* ren);
+  /** Whether `ren`'s window draws the renderer's actors (a vtkSkybox background among them): false
+   *  in a vtkVisSweepHeadlessWindow, where a volume paints the environment it shows itself. */
+  static bool DrawsActors(vtkRenderer* ren);
   /** Window depth in [0,1] per pixel of the viewport, rows bottom-up. */
   static std::vector<float> ReadDepth(vtkRenderer* ren, const Viewport& vp);
   /** Draws `rgba` (premultiplied, vp.Width x vp.Height, rows bottom-up) over the viewport. */

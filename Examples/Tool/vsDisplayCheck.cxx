@@ -14,8 +14,9 @@ namespace vs
 void RequireDisplay()
 {
   const char* name = std::getenv("DISPLAY");
-  const std::string hint = "VTK's render windows need an X display here (Debian's VTK has neither EGL nor OSMesa); "
-                           "on a headless machine run under `xvfb-run -a vissweep ...`";
+  const std::string hint = "This measures VTK's OpenGL window, which needs an X display (Debian's VTK has neither "
+                           "EGL nor OSMesa); on a headless machine run it under `xvfb-run -a vissweep ...` "
+                           "(vissweep render, info and the other benchmarks need no display)";
   if (!name || !*name)
   {
     throw std::runtime_error("DISPLAY is not set. " + hint);

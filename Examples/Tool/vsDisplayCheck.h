@@ -1,7 +1,7 @@
-// vsDisplayCheck.h — the command-line tool renders through a VTK window, and Debian's
-// VTK can only open one on an X display (it has neither EGL nor OSMesa). VTK aborts
-// the process when the display is missing; this check turns that into an error that
-// says what to do.
+// vsDisplayCheck.h — the tool renders into a vtkVisSweepHeadlessWindow (no display); only what
+// measures VTK's OpenGL window (bench frames) opens one, and Debian's VTK can only open one on an
+// X display (it has neither EGL nor OSMesa). VTK aborts the process when the display is missing;
+// this check turns that into an error that says what to do.
 #ifndef vsDisplayCheck_h
 #define vsDisplayCheck_h
 

@@ -166,6 +166,17 @@ int Run(const RenderOptions& o)
   {
     std::cout << stats.dump(2) << std::endl;
   }
+  else if (scene.Render.Mode != "monte-carlo")
+  {
+    // A deterministic mode renders one frame: no samples, no paths, no strategy to report.
+    std::printf("%d x %d, %s, one frame in %.2f s (setup %.2f s; device: majorants %.3f s, sweeps %.3f s, render %.3f s)\n",
+      scene.Render.Width, scene.Render.Height, scene.Render.Mode.c_str(), renderSeconds, setupSeconds,
+      mapper->GetLastMajorantSeconds(), sweepSeconds, deviceSeconds);
+    for (const auto& out : o.Outputs)
+    {
+      std::printf("wrote %s\n", out.c_str());
+    }
+  }
   else
   {
     std::printf("%d x %d, %s, %d spp in %.2f s (setup %.2f s; device: majorants %.3f s, sweeps %.3f s, render %.3f s): "
@@ -217,6 +228,10 @@ Scene LoadScene(const RenderOptions& o)
   if (o.Seed >= 0)
   {
     scene.Render.Seed = o.Seed;
+  }
+  if (o.Exposure >= 0.0)
+  {
+    scene.Render.Exposure = o.Exposure;
   }
   if (!o.Mode.empty())
   {
@@ -396,6 +411,11 @@ void AddRender(CLI::App& app)
   // CLI::NonNegativeNumber printed its bound as a 309-digit double ("not in range 0.000000 to 17976...").
   cmd->add_option("--seed", o->Seed, "random seed, 0 to 2147483647 (overrides the scene)")
     ->check(CLI::Range(0, std::numeric_limits<int>::max()));
+  cmd->add_option("--exposure", o->Exposure,
+       "the PNG's exposure: a multiplier on the radiance before the tone curve (overrides render.exposure; "
+       "the EXR is the radiance, unchanged)")
+    ->check(FiniteNumber())
+    ->check(CLI::PositiveNumber);
   cmd->add_option("--samples-per-frame", o->SamplesPerFrame,
       "samples per pixel added by each progressive frame (default 0: as many as take about 0.5 s)")
     ->check(CLI::Range(0, 1 << 16));

@@ -34,6 +34,7 @@ struct RenderOptions
   int MaxScatteringEvents = 0;  // 0: the scene's render.max_scattering_events
   std::optional<double> Anisotropy; // the scene's render.anisotropy when absent
   int Seed = -1;
+  double Exposure = -1.0; // the PNG's exposure (overrides render.exposure); < 0: the scene's
   int SamplesPerFrame = 0; // 0: frames of about AutoFrameSeconds
   std::string Json;
   bool Quiet = false;

@@ -24,6 +24,7 @@
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkVisSweepHeadlessWindow.h"
 #include "vtkVisibilitySweepVolumeMapper.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -290,7 +291,7 @@ std::string VolumeFits(const std::array<int, 3>& dims)
 }
 }
 
-SceneObjects BuildScene(const Scene& scene)
+SceneObjects BuildScene(const Scene& scene, bool openGLWindow)
 {
   SceneObjects o;
   // The image size against the device's limits and the host's memory before anything is read or
@@ -345,10 +346,17 @@ SceneObjects BuildScene(const Scene& scene)
   }
   o.Renderer->ResetCameraClippingRange();
 
-  vs::RequireDisplay();
-  o.Window = vtkSmartPointer<vtkRenderWindow>::New();
-  o.Window->SetOffScreenRendering(1);
-  o.Window->SetMultiSamples(0);
+  if (openGLWindow)
+  {
+    vs::RequireDisplay();
+    o.Window = vtkSmartPointer<vtkRenderWindow>::New();
+    o.Window->SetOffScreenRendering(1);
+    o.Window->SetMultiSamples(0);
+  }
+  else
+  {
+    o.Window = vtkSmartPointer<vtkVisSweepHeadlessWindow>::New(); // Vulkan only: no X display
+  }
   o.Window->SetSize(scene.Render.Width, scene.Render.Height);
   o.Window->AddRenderer(o.Renderer);
   return o;

@@ -28,7 +28,7 @@ struct SceneObjects
   vtkSmartPointer<vtkVisibilitySweepVolumeMapper> Mapper;
   vtkSmartPointer<vtkVolume> Volume;
   vtkSmartPointer<vtkRenderer> Renderer;
-  vtkSmartPointer<vtkRenderWindow> Window; // offscreen, scene.Render.Width x Height
+  vtkSmartPointer<vtkRenderWindow> Window; // scene.Render.Width x Height: headless, or offscreen OpenGL
 };
 
 /** The transfer functions and unit distance of the scene. */
@@ -38,8 +38,11 @@ vtkSmartPointer<vtkAlgorithm> MakeEnvironment(const Scene& scene);
 /** Monte Carlo mode, strategy, seed, spp (MaximumSamples = scene spp), density, environment
  *  intensity/visibility, exposure, update scheme, visibility-grid parameters and clipping planes. */
 void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene);
-/** Reads the volume, builds everything, sets the camera; the window is offscreen. Throws std::runtime_error. */
-SceneObjects BuildScene(const Scene& scene);
+/** Reads the volume, builds everything, sets the camera. The window is a vtkVisSweepHeadlessWindow
+ *  (no X display, the same pixels), or with `openGLWindow` VTK's offscreen OpenGL window on the X
+ *  display (for what measures a window: bench frames; vs::RequireDisplay() says when there is none).
+ *  Throws std::runtime_error. */
+SceneObjects BuildScene(const Scene& scene, bool openGLWindow = false);
 }
 
 #endif

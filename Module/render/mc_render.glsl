@@ -350,11 +350,11 @@ void main()
    * more share it so that one sample always fits (64 rays: ~800 steps each if all need them; a ray
    * that reaches its cap scores transmittance 0, as at VS_TRACKING_CAP). */
   uint sampleFixed = VS_TRACKING_CAP + 1u + scatterCost + gShadowRays * (1u + perRay) + VS_START_COST + VS_SAMPLE_SLACK;
-  gShadowBudget = min(gShadowRays * VS_TRACKING_CAP, VS_LOOP_BUDGET - min(sampleFixed + gShadowRays, VS_LOOP_BUDGET));
+  gShadowBudget = min(gShadowRays * VS_TRACKING_CAP, VS_SPEC_LOOP_BUDGET - min(sampleFixed + gShadowRays, VS_SPEC_LOOP_BUDGET));
   uint sampleMax = sampleFixed + gShadowBudget;
   uint cost = 0u;
   uint events = 0u; /* scattering events of this invocation's paths (full transport) */
-  while (subgroupAny(done < pc.target) && cost + sampleMax <= VS_LOOP_BUDGET)
+  while (subgroupAny(done < pc.target) && cost + sampleMax <= VS_SPEC_LOOP_BUDGET)
   {
     uint cameraCost = 0u, shadowCost = 0u;
     bool scattered = false;

@@ -32,6 +32,9 @@ layout(constant_id = 12) const uint VS_SPEC_FACTOR = 0u;   /* 1: the extinction 
 layout(constant_id = 14) const uint VS_SPEC_PATH = 0u;    /* 0: single scattering with the isotropic phase
                                                              (render_sample); 1: full transport, a path per
                                                              sample (mc_path.glsl), any event limit and phase */
+layout(constant_id = 15) const uint VS_SPEC_LOOP_BUDGET = VS_LOOP_BUDGET; /* the sample loop's budget of back-edges:
+                                                             VS_LOOP_BUDGET where the driver has a loop limiter (lavapipe), else
+                                                             none (1 << 30; vs::DeviceInfo::LoopLimited, vsMonteCarloPass) */
 layout(constant_id = 6) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
                                                              table (binding 12), stochastic cell only */
 layout(binding = VS_MC_VOLUME, r32f) uniform readonly image3D uVolume;

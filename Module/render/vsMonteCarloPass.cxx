@@ -30,6 +30,13 @@
 
 namespace vs
 {
+namespace
+{
+// The sample loop's budget on a driver without a loop limiter: none in practice (a dispatch's
+// samples stay far below it), and small enough that the kernel's cost + sampleMax cannot wrap.
+constexpr uint32_t NoLoopBudget = 1u << 30;
+}
+
 MonteCarloPass::MonteCarloPass(std::shared_ptr<Context> context)
   : Context_(std::move(context))
 {
@@ -83,7 +90,9 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   }
   const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping,
     table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u, quads ? 1u : 0u, control,
-    params.pixelSampler == shared::VS_SAMPLER_SOBOL ? 1u : 0u, factor, transmittance, FullTransport(params) ? 1u : 0u };
+    params.pixelSampler == shared::VS_SAMPLER_SOBOL ? 1u : 0u, factor, transmittance, FullTransport(params) ? 1u : 0u,
+    // The loop budget only where the driver has a loop limiter (lavapipe's), from its driver id.
+    this->Context_->Info().LoopLimited() ? shared::VS_LOOP_BUDGET : NoLoopBudget };
   auto& slot = this->Pipelines_[specialization];
   auto& pipeline = slot[format];
   if (!pipeline)

@@ -13,7 +13,9 @@
 #include "bindings.h"
 #include "sweep_params.h"
 
-layout(local_size_x = 8, local_size_y = 1, local_size_z = 1) in;
+/* One row of work per subgroup: the width is the device's subgroup size within [8, 64]
+ * (vs::DeviceInfo::RowWorkgroupWidth: 8 on lavapipe, 32 on NVIDIA), constant 1, set by the host. */
+layout(local_size_x_id = 1, local_size_y = 1, local_size_z = 1) in;
 /* Rays of nonzero weight at most (vs_kernel_taps), for every direction of the dispatch: the tap
  * loops unroll and the weights stay in registers; 0 = any number (a loop). */
 layout(constant_id = 0) const int VS_TAPS = 4;

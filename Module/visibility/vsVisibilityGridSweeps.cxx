@@ -134,6 +134,8 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
       tapsB = std::max(tapsB, KernelTaps(s.filterSize.y + 2.0f * tMax * s.filterSize.w, s.kernel.y));
     }
   }
+  // Their workgroups are one row of one subgroup (the device's subgroup size, not lavapipe's 8).
+  const uint32_t rowWidth = this->Context_->Info().RowWorkgroupWidth();
   tapsA = tapsA > MaxUnrolledTaps ? 0u : tapsA;
   tapsB = tapsB > MaxUnrolledTaps ? 0u : tapsB;
   {
@@ -143,14 +145,14 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
         { { shared::VS_FILTER_GLOBALS, B::StorageBuffer }, { shared::VS_FILTER_DIRECTIONS, B::StorageBuffer },
           { shared::VS_FILTER_STACK, B::UniformTexelBuffer }, { shared::VS_FILTER_FILTERED, B::StorageBuffer } }),
       sizeof(ChunkPush),
-      "sweep filter (" + std::to_string(tapsA) + " taps)", { tapsA });
+      "sweep filter (" + std::to_string(tapsA) + " taps)", { tapsA, rowWidth });
     // The projection stores into an image of known format (faster on lavapipe than format-less stores).
     const std::vector<B> bindings = BindingTypes(shared::VS_PROJECT_BINDING_COUNT,
       { { shared::VS_PROJECT_GLOBALS, B::StorageBuffer }, { shared::VS_PROJECT_DIRECTIONS, B::StorageBuffer },
         { shared::VS_PROJECT_FILTERED, B::UniformTexelBuffer }, { shared::VS_PROJECT_VISIBILITY, B::StorageImage } });
     this->Project_ = FormatPipeline(this->Context_, this->Parameters_.StorageFormat,
       VS_SPIRV_PER_FORMAT(vs_spirv_sweep_project), bindings, sizeof(ChunkPush), "sweep project",
-      ", " + std::to_string(tapsB) + " taps", { tapsB });
+      ", " + std::to_string(tapsB) + " taps", { tapsB, rowWidth });
   }
   const uint32_t nearest = this->Parameters_.NearestInterpolation ? 1u : 0u;
   if (!this->MarchPooled_ || this->MarchPooledNearest_ != nearest)
@@ -292,8 +294,8 @@ void VisibilityGrid::RunSweeps(const DeviceVolume& volume, const TransferFunctio
       ChunkPush cp{ first, chunk, firsts[bi] };
       dispatch("march", marchPipeline, march, cp, (ra + 7) / 8, (rb + 7) / 8, nd);
       // The filter along a and the interpolation along a (Filtering off: the interpolation only).
-      dispatch("filter", *this->Filter_, filter, cp, (ga + 7) / 8, chunk, nd);
-      dispatch("project", *this->Project_, project, cp, (gb + 7) / 8, chunk, nd);
+      dispatch("filter", *this->Filter_, filter, cp, (ga + rowWidth - 1) / rowWidth, chunk, nd);
+      dispatch("project", *this->Project_, project, cp, (gb + rowWidth - 1) / rowWidth, chunk, nd);
     }
     if (!profiling)
     {

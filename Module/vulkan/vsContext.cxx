@@ -116,6 +116,10 @@ DeviceInfo Describe(vk::PhysicalDevice pd, uint32_t index)
   }
   info.MaxPushConstantsSize = p.limits.maxPushConstantsSize;
   info.SubgroupSize = subgroup.subgroupSize;
+  info.SubgroupStages = static_cast<uint32_t>(subgroup.supportedStages);
+  info.SubgroupOperations = static_cast<uint32_t>(subgroup.supportedOperations);
+  info.ApiVersionNumber = p.apiVersion;
+  info.DriverId = static_cast<uint32_t>(driver.driverID);
   info.TimestampPeriodNs = p.limits.timestampPeriod;
   int family = ComputeQueueFamily(pd);
   info.Timestamps =
@@ -248,11 +252,60 @@ std::string DeviceInfo::Describe() const
      << this->MaxComputeWorkGroupCount[1] << " x " << this->MaxComputeWorkGroupCount[2] << "\n";
   os << "  max push constants:      " << this->MaxPushConstantsSize << " bytes\n";
   os << "  subgroup size:           " << this->SubgroupSize << "\n";
+  os << "  driver loop limiter:     "
+     << (this->LoopLimited() ? "yes: the render kernel keeps a loop budget" : "no: no loop budget") << "\n";
+  os << "  row workgroup width:     " << this->RowWorkgroupWidth() << " (sweep filter and projection)\n";
+  const std::string missing = this->MissingFeatures();
+  if (!missing.empty())
+  {
+    os << "  MISSING for VisSweep:    " << missing << "\n";
+  }
   os << "  float32 atomic add:      " << (this->FloatAtomicAdd ? "yes" : "no") << "\n";
   os << "  compute timestamps:      "
      << (this->Timestamps ? "yes (" + std::to_string(this->TimestampPeriodNs) + " ns/tick)" : "no")
      << "\n";
   return os.str();
+}
+
+std::string DeviceInfo::MissingFeatures() const
+{
+  std::vector<std::string> missing;
+  if (VK_API_VERSION_MAJOR(this->ApiVersionNumber) < 1 ||
+    (VK_API_VERSION_MAJOR(this->ApiVersionNumber) == 1 && VK_API_VERSION_MINOR(this->ApiVersionNumber) < 1))
+  {
+    missing.push_back("Vulkan 1.1 (the device reports " + this->ApiVersion + ")");
+  }
+  if ((this->SubgroupStages & VK_SHADER_STAGE_COMPUTE_BIT) == 0u)
+  {
+    missing.push_back("subgroup operations in compute shaders");
+  }
+  const std::pair<uint32_t, const char*> operations[] = { { VK_SUBGROUP_FEATURE_BASIC_BIT, "basic" },
+    { VK_SUBGROUP_FEATURE_VOTE_BIT, "vote" }, { VK_SUBGROUP_FEATURE_BALLOT_BIT, "ballot" },
+    { VK_SUBGROUP_FEATURE_ARITHMETIC_BIT, "arithmetic" } };
+  for (const auto& op : operations)
+  {
+    if ((this->SubgroupOperations & op.first) == 0u)
+    {
+      missing.push_back(std::string("subgroup ") + op.second + " operations in compute shaders");
+    }
+  }
+  std::string out;
+  for (const auto& m : missing)
+  {
+    out += (out.empty() ? "" : ", ") + m;
+  }
+  return out;
+}
+
+bool DeviceInfo::LoopLimited() const
+{
+  // An unknown driver (no VK_KHR_driver_properties) keeps the budget: it costs little.
+  return this->DriverId == static_cast<uint32_t>(VK_DRIVER_ID_MESA_LLVMPIPE) || this->DriverId == 0u;
+}
+
+uint32_t DeviceInfo::RowWorkgroupWidth() const
+{
+  return std::clamp(this->SubgroupSize, 8u, 64u);
 }
 
 std::shared_ptr<Context> Context::Create(const ContextOptions& options)
@@ -363,6 +416,11 @@ void Context::Initialize(const ContextOptions& options)
       throw NoDeviceError("VISSWEEP_DEVICE='" + selector +
         "' matches no Vulkan device with a compute queue; available: " + list);
     }
+    if (!infos[chosen].MissingFeatures().empty())
+    {
+      throw NoDeviceError("the Vulkan device '" + infos[chosen].Name + "' (" + infos[chosen].Driver +
+        ") lacks what VisSweep's kernels need: " + infos[chosen].MissingFeatures());
+    }
   }
   else
   {
@@ -370,7 +428,7 @@ void Context::Initialize(const ContextOptions& options)
     for (uint32_t i = 0; i < devices.size(); ++i)
     {
       int rank = TypeRank(devices[i].getProperties().deviceType);
-      if (ComputeQueueFamily(devices[i]) >= 0 && rank > bestRank)
+      if (ComputeQueueFamily(devices[i]) >= 0 && infos[i].MissingFeatures().empty() && rank > bestRank)
       {
         bestRank = rank;
         chosen = static_cast<int>(i);
@@ -378,8 +436,15 @@ void Context::Initialize(const ContextOptions& options)
     }
     if (chosen < 0)
     {
-      std::string list = available.str();
-      throw NoDeviceError("no Vulkan device has a compute queue; available: " + list);
+      // Name what each device lacks (a driver without the subgroup operations the kernels use).
+      std::string lacks;
+      for (uint32_t i = 0; i < devices.size(); ++i)
+      {
+        const std::string missing =
+          ComputeQueueFamily(devices[i]) < 0 ? std::string("a compute queue") : infos[i].MissingFeatures();
+        lacks += (i ? "; " : "") + infos[i].Name + " lacks " + missing;
+      }
+      throw NoDeviceError("no Vulkan device can run VisSweep's kernels: " + lacks);
     }
   }
 

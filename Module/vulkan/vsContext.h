@@ -40,6 +40,10 @@ struct VISSWEEPCORE_EXPORT DeviceInfo
   uint32_t MaxComputeWorkGroupCount[3] = { 0, 0, 0 };
   uint32_t MaxPushConstantsSize = 0;
   uint32_t SubgroupSize = 0;
+  uint32_t ApiVersionNumber = 0;   // VK_MAKE_API_VERSION of the device
+  uint32_t DriverId = 0;           // VkDriverId (VK_DRIVER_ID_MESA_LLVMPIPE = 13 is lavapipe); 0 = unknown
+  uint32_t SubgroupStages = 0;     // VkShaderStageFlags with subgroup operations
+  uint32_t SubgroupOperations = 0; // VkSubgroupFeatureFlags
   bool FloatAtomicAdd = false;
   bool WriteWithoutFormat = false; // shaderStorageImageWriteWithoutFormat
   bool Timestamps = false;
@@ -47,6 +51,19 @@ struct VISSWEEPCORE_EXPORT DeviceInfo
 
   /** Several lines, one per property, as `vissweep info` prints them. */
   std::string Describe() const;
+
+  /** What the kernels need and this device lacks, named, comma-separated (Vulkan 1.1; subgroup
+   *  basic, vote, ballot and arithmetic operations in compute shaders); empty when it has all. */
+  std::string MissingFeatures() const;
+
+  /** The choices made for the driver come from what it reports, not assumed (docs/reference.md,
+   *  "Drivers"). Whether the driver has a loop limiter: llvmpipe (lavapipe) ends every loop of an
+   *  invocation after 65,535 back-edges in all, silently, so the render kernel keeps a loop budget
+   *  below that there (mc_params.h VS_LOOP_BUDGET); other drivers get none (vsMonteCarloPass). */
+  bool LoopLimited() const;
+  /** Workgroup width of the kernels that run one row of work per subgroup (the sweeps' filter and
+   *  projection): the subgroup size, within [8, 64] (8 on lavapipe, 32 on NVIDIA, 64 on AMD). */
+  uint32_t RowWorkgroupWidth() const;
 };
 
 struct VISSWEEPCORE_EXPORT ContextOptions

@@ -1,6 +1,7 @@
 // vtkOpenVDBVolumeReader's error cases: missing, foreign, truncated and corrupt files, damaged
 // compressed leaf data, and every truncation inside the file header (one error, the same on every
 // read, and an empty output).
+#include "vsTestPaths.h"
 #include "vsOpenVDBReaderTest.h"
 
 TEST_F(OpenVDBReader, Errors)
@@ -195,7 +196,7 @@ TEST_F(OpenVDBReader, DamagedLeafValuesAreErrors)
   // The shipped smoke step with 64 bytes of 0xff in its Blosc leaf data at byte 19900: it decodes
   // (before: 16,100 points read without a word), with 3 NaN densities.
   {
-    std::ifstream in(std::string(VISSWEEP_DATA) + "/smoke/smoke_0004.vdb", std::ios::binary);
+    std::ifstream in(vstest::DataDir() + "/smoke/smoke_0004.vdb", std::ios::binary);
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     ASSERT_GT(bytes.size(), 20000u);
     std::fill(bytes.begin() + 19900, bytes.begin() + 19964, '\xff');

@@ -3,6 +3,7 @@
 // map's power and directions checked.
 #ifndef vsEnvironmentMapTest_h
 #define vsEnvironmentMapTest_h
+#include "vsTestPaths.h"
 #include "vsEnvironmentMap.h"
 #include "vtkEnvironmentMapReader.h"
 #include "vtkEnvironmentMapSource.h"
@@ -41,7 +42,7 @@ namespace
 {
 constexpr double Pi = 3.14159265358979323846;
 
-const std::string EnvDir = std::string(VISSWEEP_DATA) + "/envmaps/";
+const std::string EnvDir = vstest::DataDir() + "/envmaps/";
 
 class Messages : public vtkCommand
 {

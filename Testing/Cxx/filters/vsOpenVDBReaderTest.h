@@ -3,6 +3,7 @@
 // voxel by voxel, and the check of an error that leaves the output empty.
 #ifndef vsOpenVDBReaderTest_h
 #define vsOpenVDBReaderTest_h
+#include "vsTestPaths.h"
 #include "vtkOpenVDBVolumeReader.h"
 
 #include "vtkCommand.h"
@@ -37,7 +38,7 @@
 
 namespace
 {
-const std::string SmokeDir = std::string(VISSWEEP_DATA) + "/smoke/";
+const std::string SmokeDir = vstest::DataDir() + "/smoke/";
 
 class Messages : public vtkCommand
 {

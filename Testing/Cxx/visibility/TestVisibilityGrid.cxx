@@ -1,5 +1,6 @@
 // The visibility grid (von Radziewsky et al. 2017, Sec. 6 and 8) against analytic transmittance,
 // against the brute force, on the MRI, and on aliasing-prone thin occluders.
+#include "vsTestPaths.h"
 #include "vsVisibilityTestScene.h"
 
 #include "vsError.h"
@@ -428,7 +429,7 @@ TEST(VisibilityGrid, SweepAgreesWithBruteForceOnTheMRI)
 {
   auto ctx = vs::Context::Default();
   vtkNew<vtkNIFTIImageReader> reader;
-  reader->SetFileName(VISSWEEP_CH2);
+  reader->SetFileName(vstest::Ch2Path().c_str());
   vtkNew<vtkImageShrink3D> shrink;
   shrink->SetInputConnection(reader->GetOutputPort());
   shrink->SetShrinkFactors(2, 2, 2);
