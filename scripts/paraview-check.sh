@@ -5,7 +5,8 @@
 # the README's C++ app against that build. docs/paraview.md says what it found. Not part of
 # scripts/test.sh (it installs about 560 MB). Run as root on Debian 12.
 #
-#   scripts/paraview-check.sh            # install (once), configure, build, render
+#   scripts/paraview-check.sh               # install (once), configure, build, render
+#   scripts/paraview-check.sh --build-only  # install (once), configure, build
 #
 # Three Debian packaging facts shape it:
 #  - paraview Recommends python3-paraview, which Conflicts with python3-vtk9, on which Debian's
@@ -30,9 +31,14 @@ if [ "${1:-}" = "--inside" ]; then
   shift
   mount -t overlay overlay -o "lowerdir=$pvroot$site:$site" "$site"
   mount --bind "$pvroot$site/vtkmodules" "$site/vtkmodules"
+  # ParaView's own CMake package (ParaViewTools-targets.cmake, for plugins) also names pvpython,
+  # python3-paraview's too.
+  mount -t overlay overlay -o "lowerdir=$pvroot/usr/bin:/usr/bin" /usr/bin
   exec "$@"
 fi
 inside() { unshare -m "$root/scripts/paraview-check.sh" --inside "$@"; }
+build_only=0
+if [ "${1:-}" = "--build-only" ]; then build_only=1; fi   # for scripts/paraview-plugin.sh
 
 "$root/scripts/setup-debian.sh"   # the normal build's packages (VTK 9.1 among them)
 if ! dpkg -s paraview-dev >/dev/null 2>&1; then
@@ -53,6 +59,7 @@ inside cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVISSWE
   -DVISSWEEP_WRAP_PYTHON=OFF -DVTK_DIR="$vtk_dir"
 echo "== build"
 inside nice -n 10 cmake --build "$build" -j "$jobs"
+if [ "$build_only" = 1 ]; then exit 0; fi
 echo "== libraries link ParaView's VTK only"
 for lib in "$build"/lib/libvissweep*.so "$build/bin/vissweep"; do
   if ldd "$lib" | grep -q 'libvtk[A-Za-z]*-9\.1\.so'; then

@@ -1,0 +1,121 @@
+#include "vtkVisSweepVolumeRepresentation.h"
+
+#include "vtkEnvironmentMapReader.h"
+#include "vtkObjectFactory.h"
+#include "vtkVisibilitySweepVolumeMapper.h"
+
+vtkStandardNewMacro(vtkVisSweepVolumeRepresentation);
+
+vtkVisSweepVolumeRepresentation::vtkVisSweepVolumeRepresentation()
+{
+  // The superclass made its own mapper; VisSweep's takes its place (the superclass reads
+  // this->VolumeMapper wherever it passes ParaView's volume settings on).
+  this->VolumeMapper = vtkSmartPointer<vtkVisibilitySweepVolumeMapper>::New();
+  this->EnvironmentReader = vtkEnvironmentMapReader::New();
+}
+
+vtkVisSweepVolumeRepresentation::~vtkVisSweepVolumeRepresentation()
+{
+  this->EnvironmentReader->Delete();
+}
+
+vtkVisibilitySweepVolumeMapper* vtkVisSweepVolumeRepresentation::GetVisSweepMapper()
+{
+  return static_cast<vtkVisibilitySweepVolumeMapper*>(this->VolumeMapper.GetPointer());
+}
+
+void vtkVisSweepVolumeRepresentation::SetVisSweepRenderMode(int mode)
+{
+  this->GetVisSweepMapper()->SetRenderMode(mode);
+}
+
+void vtkVisSweepVolumeRepresentation::SetSamplingStrategy(int strategy)
+{
+  this->GetVisSweepMapper()->SetSamplingStrategy(strategy);
+}
+
+void vtkVisSweepVolumeRepresentation::SetSamplesPerFrame(int samples)
+{
+  this->GetVisSweepMapper()->SetSamplesPerFrame(samples);
+}
+
+void vtkVisSweepVolumeRepresentation::SetMaximumSamples(int samples)
+{
+  this->GetVisSweepMapper()->SetMaximumSamples(samples);
+}
+
+void vtkVisSweepVolumeRepresentation::SetEnvironmentIntensity(double intensity)
+{
+  this->GetVisSweepMapper()->SetEnvironmentIntensity(intensity);
+}
+
+void vtkVisSweepVolumeRepresentation::SetEnvironmentVisible(bool visible)
+{
+  this->GetVisSweepMapper()->SetEnvironmentVisible(visible);
+}
+
+void vtkVisSweepVolumeRepresentation::SetExposure(double exposure)
+{
+  this->GetVisSweepMapper()->SetExposure(exposure);
+}
+
+void vtkVisSweepVolumeRepresentation::SetToneMapping(bool toneMapping)
+{
+  this->GetVisSweepMapper()->SetToneMapping(toneMapping);
+}
+
+void vtkVisSweepVolumeRepresentation::SetSeed(int seed)
+{
+  this->GetVisSweepMapper()->SetSeed(seed);
+}
+
+void vtkVisSweepVolumeRepresentation::SetEnvironmentFileName(const char* fileName)
+{
+  const std::string name = fileName ? fileName : "";
+  if (name == this->EnvironmentFileName)
+  {
+    return;
+  }
+  this->EnvironmentFileName = name;
+  if (name.empty())
+  {
+    this->GetVisSweepMapper()->SetEnvironmentConnection(nullptr);
+  }
+  else
+  {
+    this->EnvironmentReader->SetFileName(name.c_str());
+    this->GetVisSweepMapper()->SetEnvironmentConnection(this->EnvironmentReader->GetOutputPort());
+  }
+  this->Modified();
+}
+
+void vtkVisSweepVolumeRepresentation::SetEnvironmentRotation(double degrees)
+{
+  if (degrees == this->EnvironmentRotation)
+  {
+    return;
+  }
+  this->EnvironmentRotation = degrees;
+  this->EnvironmentReader->SetRotationDegrees(degrees);
+  this->Modified();
+}
+
+int vtkVisSweepVolumeRepresentation::GetAccumulatedSamples()
+{
+  return this->GetVisSweepMapper()->GetAccumulatedSamples();
+}
+
+bool vtkVisSweepVolumeRepresentation::IsConverged()
+{
+  return this->GetVisSweepMapper()->IsConverged();
+}
+
+void vtkVisSweepVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "EnvironmentFileName: "
+     << (this->EnvironmentFileName.empty() ? "(none: white sky)" : this->EnvironmentFileName) << "\n";
+  os << indent << "EnvironmentRotation: " << this->EnvironmentRotation << "\n";
+  os << indent << "Mapper:\n";
+  this->VolumeMapper->PrintSelf(os, indent.GetNextIndent());
+}

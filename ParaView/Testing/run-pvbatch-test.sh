@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# The VisSweep plugin's pvbatch test: renders Examples/Scenes/tiny.json's volume under the white
+# sky with the vissweep tool (seeds 1 and 2) and in pvbatch with the plugin, and compares
+# (pvbatch_vissweep.py says how); checks that a missing environment file is reported on stderr.
+# Needs a display (run under xvfb-run).
+#   run-pvbatch-test.sh ROOT PV_BUILD PV_ROOT PLUGIN OUTDIR
+set -euo pipefail
+root="$1"; pvbuild="$2"; pvroot="$3"; plugin="$4"; out="$5"
+rm -rf "$out"; mkdir -p "$out"
+
+# tiny.json without its sun (the white sky, the representation's default), the volume by full path.
+/usr/bin/python3 - "$root/Examples/Scenes/tiny.json" "$out/tiny-white-sky.json" <<'PY'
+import json, os, sys
+scene = json.load(open(sys.argv[1]))
+scene["volume"]["file"] = os.path.join(os.path.dirname(sys.argv[1]), scene["volume"]["file"])
+del scene["environment"]
+json.dump(scene, open(sys.argv[2], "w"), indent=1)
+PY
+for seed in 1 2; do
+  sed "s/\"seed\": 1/\"seed\": $seed/" "$out/tiny-white-sky.json" > "$out/tiny-seed$seed.json"
+  "$pvbuild/bin/vissweep" render "$out/tiny-seed$seed.json" -o "$out/tool-seed$seed.png" > /dev/null
+done
+
+status=0
+PYTHONPATH="$pvroot/usr/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
+  pvbatch "$root/ParaView/Testing/pvbatch_vissweep.py" "$plugin" "$root/Examples/Scenes/tiny_sphere.vti" \
+  "$out" "$out/tool-seed1.png" "$out/tool-seed2.png" 2> "$out/pvbatch.stderr" || status=$?
+cat "$out/pvbatch.stderr" >&2
+if ! grep -q 'missing-sky.exr' "$out/pvbatch.stderr"; then
+  echo "FAIL a missing environment file was not reported on stderr"; status=1
+else
+  echo "ok   a missing environment file is reported: $(grep -m1 'missing-sky.exr' "$out/pvbatch.stderr" | cut -c1-200)"
+fi
+exit $status
