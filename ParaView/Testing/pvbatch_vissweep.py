@@ -109,5 +109,19 @@ check(abs(again.mean() - a.mean()) <= 4 * stderr + 0.5,
       "with the file name cleared the volume renders as before (%.3f vs %.3f)"
       % (again.mean(), a.mean()))
 
+# Progressive refinement: each still render adds SamplesPerFrame until MaximumSamples, which
+# the Converged and AccumulatedSamples information properties report to the client.
+display.SamplesPerFrame = 4
+display.MaximumSamples = 12
+counts = []
+for _ in range(5):
+    pvs.Render(view)
+    display.UpdatePropertyInformation()
+    counts.append((display.GetPropertyValue("AccumulatedSamples"),
+                   display.GetPropertyValue("Converged")))
+print("accumulated samples, converged after each render:", counts)
+check([c[0] for c in counts] == [4, 8, 12, 12, 12] and [c[1] for c in counts] == [0, 0, 1, 1, 1],
+      "renders refine 4 samples at a time until MaximumSamples (12), then report convergence")
+
 print("%d failure(s)" % len(failures))
 sys.exit(1 if failures else 0)
