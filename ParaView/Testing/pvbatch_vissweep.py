@@ -7,8 +7,9 @@ i.e. the white sky) with the "VisSweep Volume" representation, renders it at 64 
 samples per pixel and compares the image with the vissweep tool's renders of the same scene
 (seeds 1 and 2): the means must agree within 4 standard errors (estimated from the two tool
 renders' difference), and the pixels as closely as two tool renders agree. Then checks that
-properties reach the mapper (Exposure brightens the image) and that a missing environment file
-is an error, not a crash, after which the volume renders again. Exits non-zero on any failure.
+properties reach the mapper (Exposure brightens the image), that a missing environment file
+is an error, not a crash, after which the volume renders again, and that renders refine
+progressively. Writes "N failure(s)" to OUTDIR/result.txt.
 """
 import sys
 
@@ -59,7 +60,6 @@ lut.ColorSpace = "RGB"
 lut.Discretize = 0
 lut.RGBPoints = [0, 0.9, 0.9, 0.9, 255, 0.8, 0.5, 0.3]
 otf = pvs.GetOpacityTransferFunction("density")
-otf.AutomaticRescaleRangeMode = "Never"
 otf.Points = [0, 0.0, 0.5, 0.0, 20, 0.0, 0.5, 0.0, 120, 0.5, 0.5, 0.0, 255, 0.9, 0.5, 0.0]
 display.ScalarOpacityUnitDistance = 1.0
 display.VisSweepRenderMode = "Monte Carlo"
@@ -110,9 +110,10 @@ check(abs(again.mean() - a.mean()) <= 4 * stderr + 0.5,
       % (again.mean(), a.mean()))
 
 # Progressive refinement: each still render adds SamplesPerFrame until MaximumSamples, which
-# the Converged and AccumulatedSamples information properties report to the client.
+# the Converged and AccumulatedSamples information properties report to the client. The view
+# holds 16 samples per pixel (converged at MaximumSamples 16): raised to 28, renders continue.
 display.SamplesPerFrame = 4
-display.MaximumSamples = 12
+display.MaximumSamples = 28
 counts = []
 for _ in range(5):
     pvs.Render(view)
@@ -120,8 +121,12 @@ for _ in range(5):
     counts.append((display.GetPropertyValue("AccumulatedSamples"),
                    display.GetPropertyValue("Converged")))
 print("accumulated samples, converged after each render:", counts)
-check([c[0] for c in counts] == [4, 8, 12, 12, 12] and [c[1] for c in counts] == [0, 0, 1, 1, 1],
-      "renders refine 4 samples at a time until MaximumSamples (12), then report convergence")
+check([c[0] for c in counts] == [20, 24, 28, 28, 28] and [c[1] for c in counts] == [0, 0, 1, 1, 1],
+      "renders refine 4 samples at a time until MaximumSamples (28), then report convergence")
 
 print("%d failure(s)" % len(failures))
-sys.exit(1 if failures else 0)
+# The verdict goes to a file, not the exit status: sys.exit() in a pvbatch script ends pvbatch with
+# "X Error of failed request: GLXBadContext" and status 1 as it tears the window down (seen with
+# ParaView's own Volume representation too, without the plugin), so the driver reads this file.
+with open(outdir + "/result.txt", "w") as f:
+    f.write("%d failure(s)\n" % len(failures))

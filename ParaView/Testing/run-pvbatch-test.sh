@@ -26,6 +26,10 @@ PYTHONPATH="$pvroot/usr/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
   pvbatch "$root/ParaView/Testing/pvbatch_vissweep.py" "$plugin" "$root/Examples/Scenes/tiny_sphere.vti" \
   "$out" "$out/tool-seed1.png" "$out/tool-seed2.png" 2> "$out/pvbatch.stderr" || status=$?
 cat "$out/pvbatch.stderr" >&2
+if [ "$status" != 0 ]; then echo "FAIL pvbatch exited with status $status"; fi
+if [ "$(cat "$out/result.txt" 2>/dev/null)" != "0 failure(s)" ]; then
+  echo "FAIL the pvbatch script's checks: $(cat "$out/result.txt" 2>/dev/null || echo 'no result (it did not finish)')"; status=1
+fi
 if ! grep -q 'missing-sky.exr' "$out/pvbatch.stderr"; then
   echo "FAIL a missing environment file was not reported on stderr"; status=1
 else
