@@ -124,6 +124,21 @@ print("accumulated samples, converged after each render:", counts)
 check([c[0] for c in counts] == [20, 24, 28, 28, 28] and [c[1] for c in counts] == [0, 0, 1, 1, 1],
       "renders refine 4 samples at a time until MaximumSamples (28), then report convergence")
 
+# A state file keeps the representation and its settings.
+display.Exposure = 2.5
+display.VisSweepRenderMode = "Preview"
+display.EnvironmentRotation = 30
+pvs.SaveState(outdir + "/state.pvsm")
+pvs.ResetSession()
+pvs.LoadState(outdir + "/state.pvsm")
+loaded_view = pvs.GetActiveViewOrCreate("RenderView")
+loaded = pvs.GetDisplayProperties(pvs.FindSource("XMLImageDataReader1"), loaded_view)
+values = (loaded.Representation, loaded.Exposure, loaded.VisSweepRenderMode,
+          loaded.EnvironmentRotation, loaded.SamplesPerFrame, loaded.MaximumSamples)
+print("after LoadState:", values)
+check(values == ("VisSweep Volume", 2.5, "Preview", 30.0, 4, 28),
+      "a saved state (.pvsm) loads back with the VisSweep representation and its settings")
+
 print("%d failure(s)" % len(failures))
 # The verdict goes to a file, not the exit status: sys.exit() in a pvbatch script ends pvbatch with
 # "X Error of failed request: GLXBadContext" and status 1 as it tears the window down (seen with
