@@ -35,4 +35,24 @@ if ! grep -q 'missing-sky.exr' "$out/pvbatch.stderr"; then
 else
   echo "ok   a missing environment file is reported: $(grep -m1 'missing-sky.exr' "$out/pvbatch.stderr" | cut -c1-200)"
 fi
+
+# The README's pvbatch snippet (its "### ParaView" section), exactly as written, from a folder laid
+# out as the repository's root (its relative paths: the plugin build and Examples/).
+readme="$out/readme"; mkdir -p "$readme"
+ln -s "$(cd "$(dirname "$plugin")/../../../.." && pwd)" "$readme/build-pv-plugin"
+ln -s "$root/Examples" "$readme/Examples"
+/usr/bin/python3 - "$root/README.md" "$readme/snippet.py" <<'PY'
+import re, sys
+text = open(sys.argv[1], encoding="utf-8").read()
+at = text.index("\n### ParaView\n")
+open(sys.argv[2], "w").write(re.compile(r"\n```python\n(.*?)\n```\n", re.S).search(text, at).group(1) + "\n")
+PY
+snippet_status=0
+(cd "$readme" && PYTHONPATH="$pvroot/usr/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
+  timeout 600 pvbatch snippet.py > snippet.out 2> snippet.err) || snippet_status=$?
+if grep -qx '32 spp' "$readme/snippet.out" && [ -s "$readme/sphere.png" ] && [ "$snippet_status" = 0 ]; then
+  echo "ok   the README's ParaView snippet runs as written (32 spp, sphere.png)"
+else
+  echo "FAIL the README's ParaView snippet (status $snippet_status):"; cat "$readme/snippet.out" "$readme/snippet.err"; status=1
+fi
 exit $status
