@@ -17,8 +17,9 @@
 #    downloaded and unpacked into build-pv-root/, and laid over dist-packages in a private mount
 #    namespace (unshare -m) that only this script's configure and build see.
 #  - paraview-dev ships no VTK wrapping hierarchy files (lib/vtk/hierarchy/ParaView/*-hierarchy.txt),
-#    which vtk_module_wrap_python needs for every VTK module VisSweep's classes use: the Python
-#    package cannot be built against it, so VISSWEEP_WRAP_PYTHON=OFF (and nothing runs under pvpython).
+#    which vtk_module_wrap_python needs for every VTK module VisSweep's classes use; python3-paraview
+#    does (unpacked in build-pv-root/, used by scripts/paraview-plugin.sh), but wrapping the Python
+#    package with them is not tried: VISSWEEP_WRAP_PYTHON=OFF here.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${VISSWEEP_PV_BUILD_DIR:-$root/build-pv}"
