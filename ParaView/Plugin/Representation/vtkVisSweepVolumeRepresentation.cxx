@@ -110,6 +110,11 @@ bool vtkVisSweepVolumeRepresentation::IsConverged()
   return this->GetVisSweepMapper()->IsConverged();
 }
 
+const char* vtkVisSweepVolumeRepresentation::GetLastError()
+{
+  return this->GetVisSweepMapper()->GetLastError();
+}
+
 void vtkVisSweepVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

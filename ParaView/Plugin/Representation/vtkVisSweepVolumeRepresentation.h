@@ -59,6 +59,8 @@ public:
   /** Samples per pixel accumulated in the view rendered last, and whether they reached MaximumSamples. */
   int GetAccumulatedSamples();
   bool IsConverged();
+  /** The mapper's last error ("" after a successful render). */
+  const char* GetLastError();
 
 #if !defined(__VTK_WRAP__)
   /** The mapper (for tests and C++ users). */
