@@ -109,6 +109,15 @@ check(abs(again.mean() - a.mean()) <= 4 * stderr + 0.5,
       "with the file name cleared the volume renders as before (%.3f vs %.3f)"
       % (again.mean(), a.mean()))
 
+# Out-of-range settings from a script (the panel's domains stop them in the GUI) are warned about
+# with the setting's name and the value used (the driver checks the messages); NaN is refused.
+display.SamplesPerFrame = 0
+display.Exposure = float("nan")
+pvs.Render(view)
+print("rendered with out-of-range settings", flush=True)
+display.SamplesPerFrame = 16
+display.Exposure = 1.0
+
 # Progressive refinement: each still render adds SamplesPerFrame until MaximumSamples, which
 # the Converged and AccumulatedSamples information properties report to the client. The view
 # holds 16 samples per pixel (converged at MaximumSamples 16): raised to 28, renders continue.

@@ -35,6 +35,13 @@ if ! grep -q 'missing-sky.exr' "$out/pvbatch.stderr"; then
 else
   echo "ok   a missing environment file is reported: $(grep -m1 'missing-sky.exr' "$out/pvbatch.stderr" | cut -c1-200)"
 fi
+for message in 'SamplesPerFrame 0 is outside \[1, 65536\]: the mapper uses 1' 'Exposure nan is refused'; do
+  if grep -q "$message" "$out/pvbatch.stderr"; then
+    echo "ok   an out-of-range setting is reported: $(grep -m1 "$message" "$out/pvbatch.stderr" | sed 's/.*| //' | cut -c1-160)"
+  else
+    echo "FAIL no message matching '$message' on stderr"; status=1
+  fi
+done
 
 # The README's pvbatch snippet (its "### ParaView" section), exactly as written, from a folder laid
 # out as the repository's root (its relative paths: the plugin build and Examples/).

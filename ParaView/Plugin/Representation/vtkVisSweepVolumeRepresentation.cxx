@@ -6,6 +6,22 @@
 
 vtkStandardNewMacro(vtkVisSweepVolumeRepresentation);
 
+namespace
+{
+// The mapper clamps these settings silently (vtkSetClampMacro); a value set from ParaView's panel
+// or a script outside the range is worth a word in ParaView's output window.
+template <typename T>
+void WarnOutOfRange(vtkObject* self, const char* name, T value, T low, T high)
+{
+  if (value < low || value > high)
+  {
+    vtkWarningWithObjectMacro(self, << name << " " << value << " is outside [" << low << ", "
+                                    << high << "]: the mapper uses "
+                                    << (value < low ? low : high) << ".");
+  }
+}
+}
+
 vtkVisSweepVolumeRepresentation::vtkVisSweepVolumeRepresentation()
 {
   // The superclass made its own mapper; VisSweep's takes its place (the superclass reads
@@ -26,26 +42,34 @@ vtkVisibilitySweepVolumeMapper* vtkVisSweepVolumeRepresentation::GetVisSweepMapp
 
 void vtkVisSweepVolumeRepresentation::SetVisSweepRenderMode(int mode)
 {
+  WarnOutOfRange(this, "VisSweepRenderMode", mode, 0, 3);
   this->GetVisSweepMapper()->SetRenderMode(mode);
 }
 
 void vtkVisSweepVolumeRepresentation::SetSamplingStrategy(int strategy)
 {
+  WarnOutOfRange(this, "SamplingStrategy", strategy, 0, 5);
   this->GetVisSweepMapper()->SetSamplingStrategy(strategy);
 }
 
 void vtkVisSweepVolumeRepresentation::SetSamplesPerFrame(int samples)
 {
+  WarnOutOfRange(this, "SamplesPerFrame", samples, 1, 1 << 16);
   this->GetVisSweepMapper()->SetSamplesPerFrame(samples);
 }
 
 void vtkVisSweepVolumeRepresentation::SetMaximumSamples(int samples)
 {
+  WarnOutOfRange(this, "MaximumSamples", samples, 1, 1 << 30);
   this->GetVisSweepMapper()->SetMaximumSamples(samples);
 }
 
 void vtkVisSweepVolumeRepresentation::SetEnvironmentIntensity(double intensity)
 {
+  if (intensity < 0)
+  {
+    vtkWarningMacro(<< "EnvironmentIntensity " << intensity << " is negative: the mapper uses 0.");
+  }
   this->GetVisSweepMapper()->SetEnvironmentIntensity(intensity);
 }
 
@@ -56,6 +80,10 @@ void vtkVisSweepVolumeRepresentation::SetEnvironmentVisible(bool visible)
 
 void vtkVisSweepVolumeRepresentation::SetExposure(double exposure)
 {
+  if (exposure < 0)
+  {
+    vtkWarningMacro(<< "Exposure " << exposure << " is negative: the mapper uses 0.");
+  }
   this->GetVisSweepMapper()->SetExposure(exposure);
 }
 
@@ -66,6 +94,7 @@ void vtkVisSweepVolumeRepresentation::SetToneMapping(bool toneMapping)
 
 void vtkVisSweepVolumeRepresentation::SetSeed(int seed)
 {
+  WarnOutOfRange(this, "Seed", seed, 0, VTK_INT_MAX);
   this->GetVisSweepMapper()->SetSeed(seed);
 }
 

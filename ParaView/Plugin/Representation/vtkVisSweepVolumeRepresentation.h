@@ -12,9 +12,11 @@
  * emission (docs/reference.md). Each still render adds SamplesPerFrame samples per pixel until
  * MaximumSamples; GetAccumulatedSamples() and IsConverged() say how far it got.
  *
- * Bad settings (an environment file that cannot be read, values out of range) are reported by the
- * mapper and the reader with vtkErrorMacro, which ParaView shows in its output window; nothing
- * crashes and the volume is not drawn.
+ * Bad settings are reported in ParaView's output window and crash nothing: an environment file
+ * that cannot be read is an error of the reader and the mapper (the volume is not drawn until the
+ * name is fixed or cleared), a value the device cannot hold (NaN, infinite) an error of the mapper
+ * (the setting is kept), and a value outside a setting's range a warning naming the setting and
+ * the value the mapper clamps it to.
  */
 #ifndef vtkVisSweepVolumeRepresentation_h
 #define vtkVisSweepVolumeRepresentation_h
