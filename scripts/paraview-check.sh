@@ -5,7 +5,8 @@
 # the README's C++ app against that build. docs/paraview.md says what it found. Not part of
 # scripts/test.sh (it installs about 560 MB). Run as root on Debian 12.
 #
-#   scripts/paraview-check.sh            # install (once), configure, build, render
+#   scripts/paraview-check.sh               # install (once), configure, build, render
+#   scripts/paraview-check.sh --build-only  # install (once), configure, build
 #
 # Three Debian packaging facts shape it:
 #  - paraview Recommends python3-paraview, which Conflicts with python3-vtk9, on which Debian's
@@ -16,8 +17,9 @@
 #    downloaded and unpacked into build-pv-root/, and laid over dist-packages in a private mount
 #    namespace (unshare -m) that only this script's configure and build see.
 #  - paraview-dev ships no VTK wrapping hierarchy files (lib/vtk/hierarchy/ParaView/*-hierarchy.txt),
-#    which vtk_module_wrap_python needs for every VTK module VisSweep's classes use: the Python
-#    package cannot be built against it, so VISSWEEP_WRAP_PYTHON=OFF (and nothing runs under pvpython).
+#    which vtk_module_wrap_python needs for every VTK module VisSweep's classes use; python3-paraview
+#    does (unpacked in build-pv-root/, used by scripts/paraview-plugin.sh), but wrapping the Python
+#    package with them is not tried: VISSWEEP_WRAP_PYTHON=OFF here.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${VISSWEEP_PV_BUILD_DIR:-$root/build-pv}"
@@ -30,9 +32,14 @@ if [ "${1:-}" = "--inside" ]; then
   shift
   mount -t overlay overlay -o "lowerdir=$pvroot$site:$site" "$site"
   mount --bind "$pvroot$site/vtkmodules" "$site/vtkmodules"
+  # ParaView's own CMake package (ParaViewTools-targets.cmake, for plugins) also names pvpython,
+  # python3-paraview's too.
+  mount -t overlay overlay -o "lowerdir=$pvroot/usr/bin:/usr/bin" /usr/bin
   exec "$@"
 fi
 inside() { unshare -m "$root/scripts/paraview-check.sh" --inside "$@"; }
+build_only=0
+if [ "${1:-}" = "--build-only" ]; then build_only=1; fi   # for scripts/paraview-plugin.sh
 
 "$root/scripts/setup-debian.sh"   # the normal build's packages (VTK 9.1 among them)
 if ! dpkg -s paraview-dev >/dev/null 2>&1; then
@@ -53,6 +60,7 @@ inside cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVISSWE
   -DVISSWEEP_WRAP_PYTHON=OFF -DVTK_DIR="$vtk_dir"
 echo "== build"
 inside nice -n 10 cmake --build "$build" -j "$jobs"
+if [ "$build_only" = 1 ]; then exit 0; fi
 echo "== libraries link ParaView's VTK only"
 for lib in "$build"/lib/libvissweep*.so "$build/bin/vissweep"; do
   if ldd "$lib" | grep -q 'libvtk[A-Za-z]*-9\.1\.so'; then
