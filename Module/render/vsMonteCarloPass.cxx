@@ -93,6 +93,24 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
     params.pixelSampler == shared::VS_SAMPLER_SOBOL ? 1u : 0u, factor, transmittance, FullTransport(params) ? 1u : 0u,
     // The loop budget only where the driver has a loop limiter (lavapipe's), from its driver id.
     this->Context_->Info().LoopLimited() ? shared::VS_LOOP_BUDGET : NoLoopBudget };
+  // A bounded set of variants (a host that churns settings would otherwise hold every pipeline it
+  // ever used: issue 35, class 10): the least recently used goes, and the context's cache lets its
+  // pipelines go once nothing holds them.
+  if (this->Pipelines_.find(specialization) == this->Pipelines_.end() &&
+    this->Pipelines_.size() >= kMaxPipelineVariants)
+  {
+    auto oldest = this->Pipelines_.begin();
+    for (auto it = this->Pipelines_.begin(); it != this->Pipelines_.end(); ++it)
+    {
+      if (this->PipelineUse_[it->first] < this->PipelineUse_[oldest->first])
+      {
+        oldest = it;
+      }
+    }
+    this->PipelineUse_.erase(oldest->first);
+    this->Pipelines_.erase(oldest);
+  }
+  this->PipelineUse_[specialization] = ++this->PipelineClock_;
   auto& slot = this->Pipelines_[specialization];
   auto& pipeline = slot[format];
   if (!pipeline)

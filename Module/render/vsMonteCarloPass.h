@@ -146,6 +146,11 @@ public:
   double LastSeconds() const { return this->LastSeconds_; }
   double TotalSeconds() const { return this->TotalSeconds_; }
 
+  /** The specializations whose pipelines the pass holds: at most kMaxPipelineVariants, the least
+   *  recently used let go first. */
+  size_t PipelineVariants() const { return this->Pipelines_.size(); }
+  static constexpr size_t kMaxPipelineVariants = 16;
+
   /** Whether params ask for full transport (more than one event, or an anisotropic phase): the path
    *  estimator (mc_path.glsl) instead of the single-scattering one. */
   static bool FullTransport(const shared::VsMonteCarloParams& params);
@@ -163,6 +168,8 @@ private:
   // Per specialization (mc_render.glsl's constant_ids): r8, r16, r32f visibility; r8 counting reads.
   // Per specialization: the modules for the r8, r16 and r32f grids, counting reads, and no grid.
   std::map<std::vector<uint32_t>, std::array<std::shared_ptr<ComputePipeline>, 5>> Pipelines_;
+  std::map<std::vector<uint32_t>, uint64_t> PipelineUse_; // when each variant was last asked for
+  uint64_t PipelineClock_ = 0;
   std::string LastPipelineName_;
   std::unique_ptr<Buffer> Lookups_;
   bool CountLookups_ = false;

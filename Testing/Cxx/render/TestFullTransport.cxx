@@ -393,3 +393,36 @@ TEST(FullTransport, BadSettingsAreErrors)
   q.maxEvents = VS_MAX_SCATTERING_EVENTS + 1;
   expectError(q, "scattering events must be in [1, 100000], got 100001");
 }
+
+// A pass asked for many variants holds at most kMaxPipelineVariants of them (issue 35, class 10: a host
+// churning settings grew without bound), and a variant it let go is made again when asked for.
+TEST(FullTransport, PassHoldsABoundedSetOfPipelines)
+{
+  RenderScene scene({ { 8, 8, 8 } }, [](int, int, int) { return 0.5f; }, 1.0, glm::vec3(0.9f),
+    vs::EnvironmentMap::Constant(16, glm::vec3(1.0f)));
+  vs::MonteCarloPass pass(scene.Context);
+  pass.Reset(4, 4);
+  std::vector<float> first;
+  int variants = 0;
+  for (uint32_t camera = 0; camera < 2; ++camera)
+    for (uint32_t sampler = 0; sampler < 2; ++sampler)
+      for (uint32_t control = 0; control < 4; ++control)
+        for (uint32_t events : { 1u, 3u })
+        {
+          auto p = scene.Params(4, 4, 0.0f, 7.0f, VS_STRATEGY_ENVIRONMENT, 1, 1u);
+          p.cameraEstimator = camera;
+          p.pixelSampler = sampler;
+          p.controlExtinction = control;
+          p.maxEvents = events;
+          pass.Render(*scene.Volume, *scene.TF, *scene.Majorants, scene.Grid.get(), *scene.Environment, p, {});
+          ++variants;
+          EXPECT_LE(pass.PipelineVariants(), vs::MonteCarloPass::kMaxPipelineVariants);
+        }
+  EXPECT_EQ(variants, 32);
+  EXPECT_EQ(pass.PipelineVariants(), vs::MonteCarloPass::kMaxPipelineVariants);
+  // The first variant was let go; asking again makes it again and renders.
+  auto p = scene.Params(4, 4, 0.0f, 7.0f, VS_STRATEGY_ENVIRONMENT, 1, 1u);
+  p.maxEvents = 1;
+  pass.Render(*scene.Volume, *scene.TF, *scene.Majorants, scene.Grid.get(), *scene.Environment, p, {});
+  EXPECT_EQ(pass.Samples(), 33u);
+}
