@@ -617,7 +617,9 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << this->LastLookupCounts[2] << "\n";
   os << indent << "LastLaneOccupancy: " << this->LastLaneOccupancy << "\n";
   os << indent << "MeanScatteringEvents: " << this->MeanScatteringEvents << "\n";
-  os << indent << "MultipleImportanceSampling: " << this->MultipleImportanceSampling << "\n";
+  os << indent << "MultipleImportanceSampling: " << this->GetMultipleImportanceSamplingAsString() << "\n";
+  os << indent << "LastShadowRayCounts: " << this->LastShadowRayCounts[0] << " " << this->LastShadowRayCounts[1]
+     << "\n";
   os << indent << "RussianRouletteDepth: " << this->RussianRouletteDepth << "\n";
   os << indent << "LightEventRange: " << this->LightEventRange[0] << " " << this->LightEventRange[1] << "\n";
   os << indent << "UpdateScheme: " << this->GetUpdateSchemeAsString() << "\n";

@@ -224,6 +224,24 @@ public:
    *  unbiased; the others are for comparisons, docs/benchmarks.md). Default PowerHeuristic. */
   vtkSetClampMacro(MultipleImportanceSampling, int, PowerHeuristic, BalanceHeuristic);
   vtkGetMacro(MultipleImportanceSampling, int);
+  void SetMultipleImportanceSamplingToPowerHeuristic() { this->SetMultipleImportanceSampling(PowerHeuristic); }
+  void SetMultipleImportanceSamplingToBalanceHeuristic() { this->SetMultipleImportanceSampling(BalanceHeuristic); }
+  void SetMultipleImportanceSamplingToLightSamplingOnly() { this->SetMultipleImportanceSampling(LightSamplingOnly); }
+  void SetMultipleImportanceSamplingToPhaseSamplingOnly() { this->SetMultipleImportanceSampling(PhaseSamplingOnly); }
+  const char* GetMultipleImportanceSamplingAsString()
+  {
+    switch (this->MultipleImportanceSampling)
+    {
+      case LightSamplingOnly:
+        return "LightSamplingOnly";
+      case PhaseSamplingOnly:
+        return "PhaseSamplingOnly";
+      case BalanceHeuristic:
+        return "BalanceHeuristic";
+      default:
+        return "PowerHeuristic";
+    }
+  }
   ///@}
 
   ///@{

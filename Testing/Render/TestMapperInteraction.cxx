@@ -45,6 +45,12 @@ int TestMapperInteraction(int argc, char* argv[])
   mapper->SetInputData(brain);
   mapper->SetEnvironmentConnection(env->GetOutputPort());
   mapper->SetRenderModeToMonteCarlo();
+  // The hand-over's mechanics where the preview is an estimate of the same light (single scattering).
+  // Under full transport the preview (single scattering from the light volume) is far darker than the
+  // estimate: the hand-over then leaves it within a frame or two, and the first still frame jumps
+  // (issue 39 gives the preview multiple scattering; its test of the hand-over under full transport
+  // comes with it).
+  mapper->SetMaximumScatteringEvents(1);
   mapper->SetSamplesPerFrame(4);
   mapper->SetMaximumSamples(1024);
   vtkNew<vstest::ErrorRecorder> errors;
