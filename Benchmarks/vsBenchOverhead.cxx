@@ -5,6 +5,7 @@
 #include "vsSceneFile.h"
 
 #include "vsContext.h"
+#include "vsKernelOptions.h"
 #include "vsMarchRate.h"
 #include "vsVolumeScene.h"
 
@@ -93,24 +94,19 @@ Measurement Measure(
   {
     mapper->SetShadowRays(o.ShadowRays);
   }
-  mapper->SetCameraEstimator(o.Camera == "reservoir" ? vtkVisibilitySweepVolumeMapper::ReservoirCamera
-                                                     : vtkVisibilitySweepVolumeMapper::CollisionCamera);
+  using vs::KernelOptionId;
+  mapper->SetCameraEstimator(vs::KernelOptionValueOf(KernelOptionId::CameraEstimator, o.Camera));
   if (!o.Sampler.empty())
   {
-    mapper->SetSampler(o.Sampler == "sobol" ? vtkVisibilitySweepVolumeMapper::SobolSampler
-                                            : vtkVisibilitySweepVolumeMapper::IndependentSampler);
+    mapper->SetSampler(vs::KernelOptionValueOf(KernelOptionId::Sampler, o.Sampler));
   }
   if (!o.Control.empty())
   {
-    mapper->SetControlExtinction(o.Control == "both" ? vtkVisibilitySweepVolumeMapper::FullControl
-        : o.Control == "shadow"                    ? vtkVisibilitySweepVolumeMapper::ShadowRayControl
-        : o.Control == "camera"                    ? vtkVisibilitySweepVolumeMapper::CameraRayControl
-                                                   : vtkVisibilitySweepVolumeMapper::NoControl);
+    mapper->SetControlExtinction(vs::KernelOptionValueOf(KernelOptionId::ControlExtinction, o.Control));
   }
   if (!o.Transmittance.empty())
   {
-    mapper->SetTransmittanceEstimator(o.Transmittance == "ray-marching" ? vtkVisibilitySweepVolumeMapper::RayMarching
-                                                                        : vtkVisibilitySweepVolumeMapper::RatioTracking);
+    mapper->SetTransmittanceEstimator(vs::KernelOptionValueOf(KernelOptionId::Transmittance, o.Transmittance));
   }
   mapper->SetMaximumSamples(1 << 30);
   mapper->SetSamplesPerFrame(o.Spp);
@@ -153,19 +149,22 @@ Measurement Measure(
   m.Variance = v / (3.0 * double(var->GetNumberOfTuples()));
   m.MeanRadiance = mean / (3.0 * double(rgb->GetNumberOfTuples()));
 
-  // One instrumented frame of one sample per pixel for the read counts (32-bit counters).
-  mapper->SetSamplesPerFrame(1);
+  // One instrumented frame of the timed frames' size for the read counts (32-bit counters; at most
+  // 1024 spp x 4096^2 pixels would overflow them, the bench's sizes are far below). Its lane
+  // occupancy is that of a normal frame: a lane whose path ended starts the pixel's next sample
+  // (regeneration) while others still trace.
+  mapper->SetSamplesPerFrame(o.Spp);
   mapper->CountLookupsOn();
   RenderChecked(objects);
   mapper->CountLookupsOff();
   for (int k = 0; k < 3; ++k)
   {
-    m.Lookups[k] = mapper->GetLastLookupCounts()[k] / pixels;
+    m.Lookups[k] = mapper->GetLastLookupCounts()[k] / (pixels * o.Spp);
   }
   m.LaneOccupancy = mapper->GetLastLaneOccupancy();
   const double* shadow = mapper->GetLastShadowRayCounts();
   m.BlockedShadowRays = shadow[0] > 0.0 ? shadow[1] / shadow[0] : 0.0;
-  m.ShadowRaysPerPath = shadow[0] / pixels;
+  m.ShadowRaysPerPath = shadow[0] / (pixels * o.Spp);
   m.EventsPerPath = mapper->GetMeanScatteringEvents();
   return m;
 }
@@ -323,14 +322,14 @@ void AddBenchOverhead(CLI::App& bench)
   cmd->add_option("--sampler", o->Sampler,
        "pixel jitter and light directions: independent or sobol (the per-sample variance it reports does not "
        "show the Sobol sampler's gain, which is in the error of the mean: bench convergence)")
-    ->check(CLI::IsMember({ "independent", "sobol" }));
+    ->check(CLI::IsMember(vs::KernelOptionWords(vs::KernelOptionId::Sampler)));
   cmd->add_option("--control", o->Control,
        "control extinction: none, shadow (residual ratio tracking), camera (decomposition tracking) or both")
-    ->check(CLI::IsMember({ "none", "shadow", "camera", "both" }));
+    ->check(CLI::IsMember(vs::KernelOptionWords(vs::KernelOptionId::ControlExtinction)));
   cmd->add_option("--transmittance", o->Transmittance,
        "the shadow rays' transmittance estimator: ratio-tracking (residual with --control shadow or both) or "
        "ray-marching (Kettunen et al. 2021's unbiased ray marching)")
-    ->check(CLI::IsMember({ "ratio-tracking", "ray-marching" }));
+    ->check(CLI::IsMember(vs::KernelOptionWords(vs::KernelOptionId::Transmittance)));
   cmd->add_option("--max-scattering-events", o->MaxEvents,
        "the most scattering events a path may have (default: the scene's render.max_scattering_events)")
     ->check(CLI::Range(1, 100000));
@@ -340,7 +339,7 @@ void AddBenchOverhead(CLI::App& bench)
     "LO:HI: next-event estimation alone, scored at scattering events LO to HI only (e.g. 1:1, 2:2, 3:4, 5:1024): "
     "the variance of the light sample at that depth, per strategy");
   cmd->add_option("--camera", o->Camera, "camera estimator: collision (delta tracking) or reservoir")
-    ->check(CLI::IsMember({ "collision", "reservoir" }));
+    ->check(CLI::IsMember(vs::KernelOptionWords(vs::KernelOptionId::CameraEstimator)));
   cmd->add_option("--defensive", o->Defensive, "TwoStep's defensive weights to measure (default 0 = plain TwoStep)")
     ->delimiter(',')
     ->check(CLI::Range(0.0, 1.0));

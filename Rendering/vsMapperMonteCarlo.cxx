@@ -58,6 +58,7 @@
 #include "vtkVersionMacros.h"
 #include "vtkVolumeProperty.h"
 #include "vtkWeakPointer.h"
+#include "vsKernelOptions.h"
 
 #include <algorithm>
 #include <chrono>
@@ -67,11 +68,16 @@ using vs::EmissionAbsorptionFrame;
 
 namespace
 {
-// The transport settings of the parameters: the event limit and the phase's anisotropy (with VTK >=
-// 9.2 the volume property's ScatteringAnisotropy where the mapper's is 0). Out-of-range values are
-// an InputError naming the setting, the value and its range.
-void SetTransport(vs::shared::VsMonteCarloParams& p, int maxEvents, double anisotropy, vtkVolumeProperty* property)
+// The mapper's kernel settings in the parameters, copied here and nowhere else (the first frame's
+// prewarm and every frame use it): the cell mode, the trackers, the sampler, TwoStep's ε and
+// defensive weight, splitting, the environment's intensity, and the transport (the event limit, the
+// phase's anisotropy: with VTK >= 9.2 the volume property's ScatteringAnisotropy where the mapper's
+// is 0, MIS, Russian roulette, the benchmarks' light events). The strategy is the caller's (the
+// prewarm's and Auto's differ from the setting). Out-of-range transport settings are an InputError
+// naming the setting, the value and its range (vs::CheckScatteringSettings).
+void CopyKernelSettings(vtkVisibilitySweepVolumeMapper* m, vtkVolumeProperty* property, vs::shared::VsMonteCarloParams& p)
 {
+  double anisotropy = m->GetScatteringAnisotropy();
 #if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
   if (anisotropy == 0.0 && property)
   {
@@ -80,18 +86,27 @@ void SetTransport(vs::shared::VsMonteCarloParams& p, int maxEvents, double aniso
 #else
   (void)property;
 #endif
-  if (maxEvents < 1 || uint32_t(maxEvents) > vs::shared::VS_MAX_SCATTERING_EVENTS)
-  {
-    throw vs::InputError("MaximumScatteringEvents must be in [1, " +
-      std::to_string(vs::shared::VS_MAX_SCATTERING_EVENTS) + "], got " + std::to_string(maxEvents));
-  }
-  if (!(anisotropy > -1.0 && anisotropy < 1.0))
-  {
-    throw vs::InputError("ScatteringAnisotropy (the Henyey-Greenstein g) must be in (-1, 1), got " +
-      std::to_string(anisotropy));
-  }
-  p.maxEvents = uint32_t(maxEvents);
+  vs::CheckScatteringSettings(double(m->GetMaximumScatteringEvents()), anisotropy);
+  p.maxEvents = uint32_t(m->GetMaximumScatteringEvents());
   p.anisotropy = float(anisotropy);
+  p.cellMode = uint32_t(m->GetCellMode());
+  p.cameraEstimator = uint32_t(m->GetCameraEstimator());
+  p.controlExtinction = uint32_t(m->GetControlExtinction());
+  p.pixelSampler = uint32_t(m->GetSampler());
+  p.transmittance = uint32_t(m->GetTransmittanceEstimator());
+  p.defensiveWeight = float(m->GetDefensiveWeight());
+  p.visibilityEpsilon = float(m->GetVisibilityEpsilon());
+  p.environmentIntensity = float(m->GetEnvironmentIntensity());
+  p.shadowRays = uint32_t(m->GetShadowRays());
+  p.mis = uint32_t(m->GetMultipleImportanceSampling());
+  p.rouletteDepth = uint32_t(m->GetRussianRouletteDepth());
+  const int* range = m->GetLightEventRange();
+  if (range[0] > 0 || range[1] > 0)
+  {
+    const int lo = std::max(1, std::min(range[0], 0xffff));
+    const int hi = std::max(lo, std::min(range[1] > 0 ? range[1] : 0xffff, 0xffff));
+    p.lightEvents = uint32_t(lo) | (uint32_t(hi) << 16);
+  }
 }
 }
 
@@ -109,19 +124,13 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume
   // first progressive frame: its new grid is flat, where TwoStep is rendered as Environment sampling.
   const bool flatFirst = this->SamplingStrategy == Auto || (this->SamplingStrategy == TwoStep && this->ProgressiveVisibility);
   p.strategy = uint32_t(flatFirst ? int(Environment) : this->SamplingStrategy);
-  p.cellMode = uint32_t(this->CellMode);
-  p.cameraEstimator = uint32_t(this->CameraEstimator);
-  p.controlExtinction = uint32_t(this->ControlExtinction);
-  p.pixelSampler = uint32_t(this->Sampler);
   p.volume.interpolation = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
     ? vs::shared::VS_INTERPOLATION_NEAREST
     : vs::shared::VS_INTERPOLATION_LINEAR;
-  p.defensiveWeight = float(this->DefensiveWeight);
-  p.transmittance = uint32_t(this->TransmittanceEstimator);
   p.volume.extinctionFactor = vs::HasEffectiveGradientOpacity(property) ? 1u : 0u; // the kernel's factor volume
   try
   {
-    SetTransport(p, this->MaximumScatteringEvents, this->ScatteringAnisotropy, property);
+    CopyKernelSettings(this, property, p);
   }
   catch (const vs::InputError&)
   {
@@ -242,7 +251,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   // The signature sees the user's strategy: Auto's frame-by-frame choice does not restart accumulation.
   p.strategy = uint32_t(autoStrategy && !emptyVolume ? int(Auto) : effective);
   p.samplesPerFrame = 1u;
-  p.cellMode = uint32_t(this->CellMode);
+  CopyKernelSettings(this, vol->GetProperty(), p);
   p.environmentLevels = uint32_t(I.Environment.Device().FinestLevel());
   // TwoStep on a flat grid is rendered as Environment sampling, without building a direction table
   // for it (27-170 ms on the MRIs) or paying the table's descent per sample. (Auto waits for a grid
@@ -257,24 +266,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   const double brightest = I.Environment.Device().MaxLuminance() * this->EnvironmentIntensity;
   const float squareScale = brightest > 0.0 && std::isfinite(1.0 / brightest) && 1.0 / brightest < 1e37
     ? float(1.0 / brightest) : 1.0f;
-  p.visibilityEpsilon = float(this->VisibilityEpsilon);
-  p.environmentIntensity = float(this->EnvironmentIntensity);
   p.squareScale = squareScale;
-  p.defensiveWeight = float(this->DefensiveWeight);
-  p.shadowRays = uint32_t(this->ShadowRays);
-  p.transmittance = uint32_t(this->TransmittanceEstimator);
-  p.cameraEstimator = uint32_t(this->CameraEstimator);
-  p.controlExtinction = uint32_t(this->ControlExtinction);
-  p.pixelSampler = uint32_t(this->Sampler);
-  SetTransport(p, this->MaximumScatteringEvents, this->ScatteringAnisotropy, vol->GetProperty());
-  p.mis = uint32_t(this->MultipleImportanceSampling);
-  p.rouletteDepth = uint32_t(this->RussianRouletteDepth);
-  if (this->LightEventRange[0] > 0 || this->LightEventRange[1] > 0)
-  {
-    const int lo = std::max(1, std::min(this->LightEventRange[0], 0xffff));
-    const int hi = std::max(lo, std::min(this->LightEventRange[1] > 0 ? this->LightEventRange[1] : 0xffff, 0xffff));
-    p.lightEvents = uint32_t(lo) | (uint32_t(hi) << 16);
-  }
   if (grid)
   {
     auto c = grid->Cells();

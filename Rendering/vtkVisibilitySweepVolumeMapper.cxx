@@ -19,7 +19,10 @@
 #include "vsEnvironmentMap.h"
 #include "vsMajorantGrid.h"
 #include "vsDirectionTable.h"
+#include "vsKernelOptions.h"
 #include "vsMonteCarloPass.h"
+#include "sampling/mc_params.h"
+#include "sampling/strategies.h"
 #include "vsPeelingDeferral.h"
 #include "vsPropertyChecks.h"
 #include "vsRendererFrame.h"
@@ -296,30 +299,76 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
   }
 }
 
+// The kernel options' names come from their one table (vsKernelOptions.cxx); the enums are the
+// kernel's constants.
+using KernelOption = vs::KernelOptionId;
+static_assert(vtkVisibilitySweepVolumeMapper::Uniform == int(vs::shared::VS_STRATEGY_UNIFORM) &&
+    vtkVisibilitySweepVolumeMapper::Environment == int(vs::shared::VS_STRATEGY_ENVIRONMENT) &&
+    vtkVisibilitySweepVolumeMapper::Visibility == int(vs::shared::VS_STRATEGY_VISIBILITY) &&
+    vtkVisibilitySweepVolumeMapper::Combined == int(vs::shared::VS_STRATEGY_COMBINED) &&
+    vtkVisibilitySweepVolumeMapper::TwoStep == int(vs::shared::VS_STRATEGY_TWO_STEP) &&
+    vtkVisibilitySweepVolumeMapper::Auto == int(vs::kAutoStrategy),
+  "the mapper's strategies are the kernel's");
+static_assert(vtkVisibilitySweepVolumeMapper::TrilinearCells == int(vs::shared::VS_CELL_TRILINEAR) &&
+    vtkVisibilitySweepVolumeMapper::StochasticCell == int(vs::shared::VS_CELL_STOCHASTIC),
+  "the mapper's cell modes are the kernel's");
+static_assert(vtkVisibilitySweepVolumeMapper::CollisionCamera == int(vs::shared::VS_CAMERA_COLLISION) &&
+    vtkVisibilitySweepVolumeMapper::ReservoirCamera == int(vs::shared::VS_CAMERA_RESERVOIR),
+  "the mapper's camera estimators are the kernel's");
+static_assert(vtkVisibilitySweepVolumeMapper::IndependentSampler == int(vs::shared::VS_SAMPLER_INDEPENDENT) &&
+    vtkVisibilitySweepVolumeMapper::SobolSampler == int(vs::shared::VS_SAMPLER_SOBOL),
+  "the mapper's samplers are the kernel's");
+static_assert(vtkVisibilitySweepVolumeMapper::ShadowRayControl == int(vs::shared::VS_CONTROL_SHADOW) &&
+    vtkVisibilitySweepVolumeMapper::CameraRayControl == int(vs::shared::VS_CONTROL_CAMERA) &&
+    vtkVisibilitySweepVolumeMapper::FullControl == int(vs::shared::VS_CONTROL_SHADOW | vs::shared::VS_CONTROL_CAMERA),
+  "the mapper's control extinctions are the kernel's bits");
+static_assert(vtkVisibilitySweepVolumeMapper::RatioTracking == int(vs::shared::VS_TRANSMITTANCE_RATIO_TRACKING) &&
+    vtkVisibilitySweepVolumeMapper::RayMarching == int(vs::shared::VS_TRANSMITTANCE_RAY_MARCHING),
+  "the mapper's transmittance estimators are the kernel's");
+static_assert(vtkVisibilitySweepVolumeMapper::PowerHeuristic == int(vs::shared::VS_MIS_POWER) &&
+    vtkVisibilitySweepVolumeMapper::LightSamplingOnly == int(vs::shared::VS_MIS_LIGHT_ONLY) &&
+    vtkVisibilitySweepVolumeMapper::PhaseSamplingOnly == int(vs::shared::VS_MIS_PHASE_ONLY) &&
+    vtkVisibilitySweepVolumeMapper::BalanceHeuristic == int(vs::shared::VS_MIS_BALANCE),
+  "the mapper's MIS modes are the kernel's");
+
 const char* vtkVisibilitySweepVolumeMapper::GetSamplingStrategyName(int strategy)
 {
-  switch (strategy)
-  {
-    case Uniform:
-      return "Uniform";
-    case Environment:
-      return "Environment";
-    case Visibility:
-      return "Visibility";
-    case Combined:
-      return "Combined";
-    case TwoStep:
-      return "TwoStep";
-    case Auto:
-      return "Auto";
-    default:
-      return "Unknown";
-  }
+  return vs::KernelOptionApiName(KernelOption::Strategy, uint32_t(strategy));
 }
 
 const char* vtkVisibilitySweepVolumeMapper::GetSamplingStrategyAsString()
 {
   return GetSamplingStrategyName(this->SamplingStrategy);
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetCellModeAsString()
+{
+  return vs::KernelOptionApiName(KernelOption::CellMode, uint32_t(this->CellMode));
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetCameraEstimatorAsString()
+{
+  return vs::KernelOptionApiName(KernelOption::CameraEstimator, uint32_t(this->CameraEstimator));
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetSamplerAsString()
+{
+  return vs::KernelOptionApiName(KernelOption::Sampler, uint32_t(this->Sampler));
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetControlExtinctionAsString()
+{
+  return vs::KernelOptionApiName(KernelOption::ControlExtinction, uint32_t(this->ControlExtinction));
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetTransmittanceEstimatorAsString()
+{
+  return vs::KernelOptionApiName(KernelOption::Transmittance, uint32_t(this->TransmittanceEstimator));
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetMultipleImportanceSamplingAsString()
+{
+  return vs::KernelOptionApiName(KernelOption::Mis, uint32_t(this->MultipleImportanceSampling));
 }
 
 const char* vtkVisibilitySweepVolumeMapper::GetUpdateSchemeAsString()
@@ -539,11 +588,6 @@ const char* vtkVisibilitySweepVolumeMapper::GetRenderModeAsString()
     default:
       return "MonteCarlo";
   }
-}
-
-const char* vtkVisibilitySweepVolumeMapper::GetCellModeAsString()
-{
-  return this->CellMode == TrilinearCells ? "TrilinearCells" : "StochasticCell";
 }
 
 void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)

@@ -228,20 +228,7 @@ public:
   void SetMultipleImportanceSamplingToBalanceHeuristic() { this->SetMultipleImportanceSampling(BalanceHeuristic); }
   void SetMultipleImportanceSamplingToLightSamplingOnly() { this->SetMultipleImportanceSampling(LightSamplingOnly); }
   void SetMultipleImportanceSamplingToPhaseSamplingOnly() { this->SetMultipleImportanceSampling(PhaseSamplingOnly); }
-  const char* GetMultipleImportanceSamplingAsString()
-  {
-    switch (this->MultipleImportanceSampling)
-    {
-      case LightSamplingOnly:
-        return "LightSamplingOnly";
-      case PhaseSamplingOnly:
-        return "PhaseSamplingOnly";
-      case BalanceHeuristic:
-        return "BalanceHeuristic";
-      default:
-        return "PowerHeuristic";
-    }
-  }
+  const char* GetMultipleImportanceSamplingAsString();
   ///@}
 
   ///@{
@@ -267,7 +254,7 @@ public:
   vtkGetMacro(CameraEstimator, int);
   void SetCameraEstimatorToCollision() { this->SetCameraEstimator(CollisionCamera); }
   void SetCameraEstimatorToReservoir() { this->SetCameraEstimator(ReservoirCamera); }
-  const char* GetCameraEstimatorAsString() { return this->CameraEstimator == ReservoirCamera ? "ReservoirCamera" : "CollisionCamera"; }
+  const char* GetCameraEstimatorAsString();
   ///@}
 
   enum Samplers
@@ -286,7 +273,7 @@ public:
   vtkGetMacro(Sampler, int);
   void SetSamplerToIndependent() { this->SetSampler(IndependentSampler); }
   void SetSamplerToSobol() { this->SetSampler(SobolSampler); }
-  const char* GetSamplerAsString() { return this->Sampler == SobolSampler ? "SobolSampler" : "IndependentSampler"; }
+  const char* GetSamplerAsString();
   ///@}
 
   enum ControlExtinctions
@@ -304,11 +291,7 @@ public:
    *  Default ShadowRayControl (docs/benchmarks.md: the camera's control saved nothing measured). */
   vtkSetClampMacro(ControlExtinction, int, NoControl, FullControl);
   vtkGetMacro(ControlExtinction, int);
-  const char* GetControlExtinctionAsString()
-  {
-    static const char* names[] = { "NoControl", "ShadowRayControl", "CameraRayControl", "FullControl" };
-    return names[this->ControlExtinction & 3];
-  }
+  const char* GetControlExtinctionAsString();
   ///@}
 
   enum TransmittanceEstimators
@@ -326,10 +309,7 @@ public:
   vtkGetMacro(TransmittanceEstimator, int);
   void SetTransmittanceEstimatorToRatioTracking() { this->SetTransmittanceEstimator(RatioTracking); }
   void SetTransmittanceEstimatorToRayMarching() { this->SetTransmittanceEstimator(RayMarching); }
-  const char* GetTransmittanceEstimatorAsString()
-  {
-    return this->TransmittanceEstimator == RayMarching ? "RayMarching" : "RatioTracking";
-  }
+  const char* GetTransmittanceEstimatorAsString();
   ///@}
 
   ///@{

@@ -294,33 +294,9 @@ Vec3 Normalized(const Vec3& d)
   return Vec3{ v[0] / length, v[1] / length, v[2] / length };
 }
 
-namespace
-{
-// "Two-Step", "two_step", "TwoStep" -> "twostep".
-std::string Folded(const std::string& name)
-{
-  std::string f;
-  for (const char c : name)
-  {
-    if (c != '-' && c != '_')
-    {
-      f += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    }
-  }
-  return f;
-}
-}
-
 int StrategyIndex(const std::string& name, const std::string& key)
 {
-  const auto& names = SceneStrategies();
-  auto it = std::find_if(
-    names.begin(), names.end(), [&](const std::string& n) { return Folded(n) == Folded(name); });
-  if (it == names.end())
-  {
-    Fail(key, "unknown strategy '" + name + "' (expected " + List(names) + ")");
-  }
-  return static_cast<int>(it - names.begin());
+  return NameIndex(SceneStrategies(), name, key, "strategy");
 }
 
 int ControlExtinctionIndex(const std::string& name, const std::string& key)

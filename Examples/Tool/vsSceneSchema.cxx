@@ -1,6 +1,8 @@
 // vsSceneSchema.cxx — the table of the scene file's keys (vsSceneSchema.h), the words of its
 // Word keys included.
 #include "vsSceneSchema.h"
+#include "sampling/mc_params.h"
+#include "vsKernelOptions.h"
 
 #include <limits>
 #include <stdexcept>
@@ -21,6 +23,12 @@ constexpr double kFloatMinNormal = double(std::numeric_limits<float>::min());
 
 using T = SceneType;
 using R = SceneRange;
+
+// The words of a kernel option, from its one table (vsKernelOptions.cxx).
+std::vector<std::string> KernelWords(vs::KernelOptionId id)
+{
+  return vs::KernelOptionWords(id);
+}
 }
 
 const std::vector<SceneKey>& SceneSchema()
@@ -76,19 +84,19 @@ const std::vector<SceneKey>& SceneSchema()
     { "render", "width", T::Integer, R::Closed, 1, 16384, "512", false, "width", "", {}, "pixels" },
     { "render", "height", T::Integer, R::Closed, 1, 16384, "512", false, "height", "", {}, "pixels" },
     { "render", "spp", T::Integer, R::Closed, 1, 1 << 30, "64", false, "samples per pixel", "", {}, "samples per pixel" },
-    { "render", "strategy", T::Word, R::Any, 0, 0, "\"auto\"", false, "strategy", "", { "uniform", "environment", "visibility", "combined", "two-step", "auto" }, "the sampling strategy (the API's spelling too: case, - and _ are ignored)" },
+    { "render", "strategy", T::Word, R::Any, 0, 0, "\"auto\"", false, "strategy", "", KernelWords(vs::KernelOptionId::Strategy), "the sampling strategy (the API's spelling too: case, - and _ are ignored)" },
     { "render", "seed", T::Integer, R::Closed, 0, kIntMax, "1", false, "seed", "", {}, "the random seed" },
     { "render", "exposure", T::Number, R::NonNegativeFloat, 0, kFloatMax, "1", false, "the exposure", "", {}, "the PNG's exposure" },
     { "render", "tone_mapping", T::Boolean, R::Any, 0, 0, "true", false, "", "", {}, "the PNG's filmic tone mapping" },
     { "render", "update_scheme", T::Word, R::Any, 0, 0, "\"round-robin\"", false, "update scheme", "", { "full", "round-robin", "environment-guided", "static" }, "for --frames: how the visibility follows the time steps" },
     { "render", "directions_per_frame", T::Integer, R::Closed, 1, 4096, "4", false, "directions per frame", "", {}, "the update schemes' k" },
     { "render", "static_interval", T::Integer, R::Closed, 1, kIntMax, "16", false, "frames between static updates", "", {}, "the static scheme's interval" },
-    { "render", "control_extinction", T::Word, R::Any, 0, 0, "\"shadow\"", false, "control extinction", "", { "none", "shadow", "camera", "both" }, "which rays integrate each brick's smallest extinction exactly" },
-    { "render", "transmittance_estimator", T::Word, R::Any, 0, 0, "\"ratio-tracking\"", false, "transmittance estimator", "", { "ratio-tracking", "ray-marching" }, "the shadow rays' transmittance estimator" },
-    { "render", "sampler", T::Word, R::Any, 0, 0, "\"sobol\"", false, "sampler", "", { "independent", "sobol" }, "where a sample's jitter and light direction come from" },
+    { "render", "control_extinction", T::Word, R::Any, 0, 0, "\"shadow\"", false, "control extinction", "", KernelWords(vs::KernelOptionId::ControlExtinction), "which rays integrate each brick's smallest extinction exactly" },
+    { "render", "transmittance_estimator", T::Word, R::Any, 0, 0, "\"ratio-tracking\"", false, "transmittance estimator", "", KernelWords(vs::KernelOptionId::Transmittance), "the shadow rays' transmittance estimator" },
+    { "render", "sampler", T::Word, R::Any, 0, 0, "\"sobol\"", false, "sampler", "", KernelWords(vs::KernelOptionId::Sampler), "where a sample's jitter and light direction come from" },
     { "render", "mode", T::Word, R::Any, 0, 0, "\"monte-carlo\"", false, "render mode", "", { "emission-absorption", "monte-carlo", "preview", "ambient-occlusion" }, "the mapper's RenderMode (the API's spelling too)" },
     { "render", "shadow_rays", T::Integer, R::Closed, 1, 64, "1", false, "shadow rays per scatter point", "", {}, "shadow rays per scatter point (splitting)" },
-    { "render", "max_scattering_events", T::Integer, R::Closed, 1, 100000, "1024", false, "scattering events", "", {}, "the most scattering events a path may have (1: single scattering)" },
+    { "render", "max_scattering_events", T::Integer, R::Closed, 1, double(vs::shared::VS_MAX_SCATTERING_EVENTS), "1024", false, "scattering events", "", {}, "the most scattering events a path may have (1: single scattering)" },
     { "render", "anisotropy", T::Number, R::Open, -1, 1, "0", false, "anisotropy", "", {}, "the Henyey-Greenstein phase function's g (> 0 forward, < 0 backward)" },
 
     // The mapper's settings: absent = the mapper's default (vtkVisibilitySweepVolumeMapper.h).
@@ -98,7 +106,7 @@ const std::vector<SceneKey>& SceneSchema()
     { "visibility", "filtering", T::Boolean, R::Any, 0, 0, nullptr, false, "", "", {}, "the mapper's Filtering" },
     { "visibility", "filter_angle_fraction", T::Number, R::Closed, 0, 1, nullptr, false, "fraction", "", {}, "the mapper's FilterAngleFraction" },
     { "visibility", "epsilon", T::Number, R::LeftOpen, 0, 1, nullptr, false, "epsilon", "", {}, "the mapper's Epsilon" },
-    { "visibility", "cell_mode", T::Word, R::Any, 0, 0, nullptr, false, "cell mode", "", { "trilinear", "stochastic" }, "the mapper's CellMode" },
+    { "visibility", "cell_mode", T::Word, R::Any, 0, 0, nullptr, false, "cell mode", "", KernelWords(vs::KernelOptionId::CellMode), "the mapper's CellMode" },
     { "visibility", "skip_unlit_directions", T::Boolean, R::Any, 0, 0, nullptr, false, "", "", {}, "directions without light are not swept" },
     { "visibility", "progressive", T::Boolean, R::Any, 0, 0, nullptr, false, "", "", {}, "the grid fills in between frames (ProgressiveVisibility)" },
     { "visibility", "sweep_frame_fraction", T::Number, R::Closed, 0, 1000, nullptr, false, "fraction", "", {}, "sweep time per frame over render time" },

@@ -363,10 +363,8 @@ std::string SceneSection::String(const std::string& key) const
   {
     return s;
   }
-  const std::vector<std::string>& words = e.Words;
-  // Strategies also in the API's spelling ("TwoStep"), stored as the scene file spells them.
-  const bool strategy = &e == &SceneSchemaKey("render", "strategy");
-  return words[strategy ? StrategyIndex(s, k) : NameIndex(words, s, k, e.Noun)];
+  // Words also in the API's spelling ("TwoStep"), stored as the scene file spells them.
+  return e.Words[NameIndex(e.Words, s, k, e.Noun)];
 }
 
 Vec3 SceneSection::Vector(const std::string& key) const

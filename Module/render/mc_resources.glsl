@@ -5,37 +5,38 @@
  */
 
 #include "bindings.h"
+#include "kernel_spec.h"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 /* Specialization constants: the host compiles one pipeline per combination it renders with, so the
  * code of the other strategies, the other cell mode and (where no brick is optically thick) the
  * cell walk is gone. That matters on lavapipe, which runs both sides of every `if` (masked) and
  * every loop body at least once: such code costs as if it were always taken. */
-layout(constant_id = 0) const uint VS_SPEC_STRATEGY = 4u;  /* VS_STRATEGY_*, = P.strategy */
-layout(constant_id = 1) const uint VS_SPEC_CELL_MODE = 1u; /* VS_CELL_*, = P.cellMode */
-layout(constant_id = 2) const uint VS_SPEC_REFINE = 1u;    /* 0: no majorant segment reaches the refinement depth */
-layout(constant_id = 3) const uint VS_SPEC_CAMERA = 0u;    /* VS_CAMERA_*, = P.cameraEstimator */
-layout(constant_id = 4) const uint VS_SPEC_INTERPOLATION = 0u; /* interpolation.h, = P.volume.interpolation */
-layout(constant_id = 5) const uint VS_SPEC_CROPPING = 0u;  /* 1: cropping regions (P.volume.cropFlags != 0) */
-layout(constant_id = 7) const uint VS_SPEC_DEFENSIVE = 0u; /* 1: TwoStep mixed with Environment sampling (P.defensiveWeight) */
-layout(constant_id = 8) const uint VS_SPEC_SKIP = 1u;      /* 1: empty space is crossed in one step (VS_MC_BRICKS' distance) */
-layout(constant_id = 9) const uint VS_SPEC_QUADS = 0u;     /* 1: trilinear samples read the volume's 8-bit quads
+layout(constant_id = VS_SPEC_ID_STRATEGY) const uint VS_SPEC_STRATEGY = 4u;  /* VS_STRATEGY_*, = P.strategy */
+layout(constant_id = VS_SPEC_ID_CELL_MODE) const uint VS_SPEC_CELL_MODE = 1u; /* VS_CELL_*, = P.cellMode */
+layout(constant_id = VS_SPEC_ID_REFINE) const uint VS_SPEC_REFINE = 1u;    /* 0: no majorant segment reaches the refinement depth */
+layout(constant_id = VS_SPEC_ID_CAMERA) const uint VS_SPEC_CAMERA = 0u;    /* VS_CAMERA_*, = P.cameraEstimator */
+layout(constant_id = VS_SPEC_ID_INTERPOLATION) const uint VS_SPEC_INTERPOLATION = 0u; /* interpolation.h, = P.volume.interpolation */
+layout(constant_id = VS_SPEC_ID_CROPPING) const uint VS_SPEC_CROPPING = 0u;  /* 1: cropping regions (P.volume.cropFlags != 0) */
+layout(constant_id = VS_SPEC_ID_DEFENSIVE) const uint VS_SPEC_DEFENSIVE = 0u; /* 1: TwoStep mixed with Environment sampling (P.defensiveWeight) */
+layout(constant_id = VS_SPEC_ID_SKIP) const uint VS_SPEC_SKIP = 1u;      /* 1: empty space is crossed in one step (VS_MC_BRICKS' distance) */
+layout(constant_id = VS_SPEC_ID_QUADS) const uint VS_SPEC_QUADS = 0u;     /* 1: trilinear samples read the volume's 8-bit quads
                                                              (binding 15, vsDeviceVolume.h) */
-layout(constant_id = 11) const uint VS_SPEC_SAMPLER = 0u;   /* VS_SAMPLER_* (mc_params.h), = P.pixelSampler */
+layout(constant_id = VS_SPEC_ID_SAMPLER) const uint VS_SPEC_SAMPLER = 0u;   /* VS_SAMPLER_* (mc_params.h), = P.pixelSampler */
 const bool VS_SPEC_SOBOL = VS_SPEC_SAMPLER == VS_SAMPLER_SOBOL;
-layout(constant_id = 10) const uint VS_SPEC_CONTROL = 0u;   /* VS_CONTROL_* bits (mc_params.h): the trackers
+layout(constant_id = VS_SPEC_ID_CONTROL) const uint VS_SPEC_CONTROL = 0u;   /* VS_CONTROL_* bits (mc_params.h): the trackers
                                                               split the extinction into the brick's control (uBricks.y) and the rest */
-layout(constant_id = 13) const uint VS_SPEC_TRANSMITTANCE = 0u; /* VS_TRANSMITTANCE_* (mc_params.h): the shadow
+layout(constant_id = VS_SPEC_ID_TRANSMITTANCE) const uint VS_SPEC_TRANSMITTANCE = 0u; /* VS_TRANSMITTANCE_* (mc_params.h): the shadow
                                                               rays' estimator, = P.transmittance */
-layout(constant_id = 12) const uint VS_SPEC_FACTOR = 0u;   /* 1: the extinction is scaled by the volume's factor
+layout(constant_id = VS_SPEC_ID_FACTOR) const uint VS_SPEC_FACTOR = 0u;   /* 1: the extinction is scaled by the volume's factor
                                                               (the gradient opacity, binding 16; = P.volume.extinctionFactor) */
-layout(constant_id = 14) const uint VS_SPEC_PATH = 0u;    /* 0: single scattering with the isotropic phase
+layout(constant_id = VS_SPEC_ID_PATH) const uint VS_SPEC_PATH = 0u;    /* 0: single scattering with the isotropic phase
                                                              (render_sample); 1: full transport, a path per
                                                              sample (mc_path.glsl), any event limit and phase */
-layout(constant_id = 15) const uint VS_SPEC_LOOP_BUDGET = VS_LOOP_BUDGET; /* the sample loop's budget of back-edges:
+layout(constant_id = VS_SPEC_ID_LOOP_BUDGET) const uint VS_SPEC_LOOP_BUDGET = VS_LOOP_BUDGET; /* the sample loop's budget of back-edges:
                                                              VS_LOOP_BUDGET where the driver has a loop limiter (lavapipe), else
                                                              none (1 << 30; vs::DeviceInfo::LoopLimited, vsMonteCarloPass) */
-layout(constant_id = 6) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
+layout(constant_id = VS_SPEC_ID_TABLE) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
                                                              table (binding 12), stochastic cell only */
 layout(binding = VS_MC_VOLUME, r32f) uniform readonly image3D uVolume;
 #define VS_TF_TEXELS

@@ -1,5 +1,6 @@
 #include "vsMonteCarloPass.h"
 #include "sampling/bindings.h"
+#include "sampling/kernel_spec.h"
 #include "sampling/strategies.h"
 #include "vsBatch.h"
 #include "vsBuffer.h"
@@ -9,6 +10,7 @@
 #include "vsDirectionTable.h"
 #include "vsError.h"
 #include "vsImage.h"
+#include "vsKernelOptions.h"
 #include "vsMajorantGrid.h"
 #include "vsPipeline.h"
 #include "vsRenderTargetLimits.h"
@@ -43,15 +45,6 @@ MonteCarloPass::MonteCarloPass(std::shared_ptr<Context> context)
 }
 
 MonteCarloPass::~MonteCarloPass() = default;
-
-namespace
-{
-const char* StrategyName(uint32_t s)
-{
-  static const char* names[] = { "uniform", "environment", "visibility", "combined", "two-step" };
-  return s < 5 ? names[s] : "?";
-}
-}
 
 const ComputePipeline& MonteCarloPass::PipelineFor(
   const VisibilityGrid* grid, const shared::VsMonteCarloParams& params, bool refine, bool table, bool quads)
@@ -88,11 +81,26 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   {
     format = 4;
   }
-  const std::vector<uint32_t> specialization{ strategy, cellMode, refine ? 1u : 0u, camera, interpolation, cropping,
-    table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u, quads ? 1u : 0u, control,
-    params.pixelSampler == shared::VS_SAMPLER_SOBOL ? 1u : 0u, factor, transmittance, FullTransport(params) ? 1u : 0u,
+  const uint32_t sampler = params.pixelSampler == shared::VS_SAMPLER_SOBOL ? shared::VS_SAMPLER_SOBOL : shared::VS_SAMPLER_INDEPENDENT;
+  KernelSpecialization spec;
+  spec.Set(shared::VS_SPEC_ID_STRATEGY, strategy)
+    .Set(shared::VS_SPEC_ID_CELL_MODE, cellMode)
+    .Set(shared::VS_SPEC_ID_REFINE, refine ? 1u : 0u)
+    .Set(shared::VS_SPEC_ID_CAMERA, camera)
+    .Set(shared::VS_SPEC_ID_INTERPOLATION, interpolation)
+    .Set(shared::VS_SPEC_ID_CROPPING, cropping)
+    .Set(shared::VS_SPEC_ID_TABLE, table ? 1u : 0u)
+    .Set(shared::VS_SPEC_ID_DEFENSIVE, defensive ? 1u : 0u)
+    .Set(shared::VS_SPEC_ID_SKIP, this->EmptySpaceSkipping_ ? 1u : 0u)
+    .Set(shared::VS_SPEC_ID_QUADS, quads ? 1u : 0u)
+    .Set(shared::VS_SPEC_ID_CONTROL, control)
+    .Set(shared::VS_SPEC_ID_SAMPLER, sampler)
+    .Set(shared::VS_SPEC_ID_FACTOR, factor)
+    .Set(shared::VS_SPEC_ID_TRANSMITTANCE, transmittance)
+    .Set(shared::VS_SPEC_ID_PATH, FullTransport(params) ? 1u : 0u)
     // The loop budget only where the driver has a loop limiter (lavapipe's), from its driver id.
-    this->Context_->Info().LoopLimited() ? shared::VS_LOOP_BUDGET : NoLoopBudget };
+    .Set(shared::VS_SPEC_ID_LOOP_BUDGET, this->Context_->Info().LoopLimited() ? shared::VS_LOOP_BUDGET : NoLoopBudget);
+  const std::vector<uint32_t> specialization = spec.Values();
   // A bounded set of variants (a host that churns settings would otherwise hold every pipeline it
   // ever used: issue 35, class 10): the least recently used goes, and the context's cache lets its
   // pipelines go once nothing holds them.
@@ -130,7 +138,8 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
         { shared::VS_MC_PATH_RADIANCE, B::StorageBuffer } });
     static const char* formats[] = { "r8 visibility", "r16 visibility", "r32f visibility",
       "r8 visibility, counting reads", "no grid" };
-    const std::string name = std::string("monte carlo (") + formats[format] + ", " + StrategyName(strategy) + ", " +
+    const std::string name = std::string("monte carlo (") + formats[format] + ", " +
+      KernelOptionWord(KernelOptionId::Strategy, strategy) + ", " +
       (cellMode == shared::VS_CELL_STOCHASTIC ? "stochastic cell" : "trilinear cells") +
       (refine ? ", cell walk" : "") + (camera == shared::VS_CAMERA_RESERVOIR ? ", reservoir camera" : "") +
       (interpolation != 0u ? ", nearest" : "") + (cropping ? ", cropping regions" : "") +
@@ -139,7 +148,7 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
       (transmittance == shared::VS_TRANSMITTANCE_RAY_MARCHING ? ", ray-marched shadow rays"
           : (control & shared::VS_CONTROL_SHADOW) ? ", residual ratio tracking" : "") +
       ((control & shared::VS_CONTROL_CAMERA) ? ", decomposition tracking" : "") +
-      (params.pixelSampler == shared::VS_SAMPLER_SOBOL ? ", Sobol" : "") + (factor ? ", gradient opacity" : "") +
+      (sampler == shared::VS_SAMPLER_SOBOL ? ", Sobol" : "") + (factor ? ", gradient opacity" : "") +
       (FullTransport(params) ? ", full transport" : "") + ")";
     if (format == 4)
     {
@@ -189,16 +198,7 @@ bool MonteCarloPass::FullTransport(const shared::VsMonteCarloParams& params)
 
 void MonteCarloPass::CheckScattering(const shared::VsMonteCarloParams& params)
 {
-  if (!(params.anisotropy > -1.0f && params.anisotropy < 1.0f))
-  {
-    throw InputError("the scattering anisotropy (Henyey-Greenstein g) must be in (-1, 1), got " +
-      std::to_string(params.anisotropy));
-  }
-  if (params.maxEvents < 1u || params.maxEvents > shared::VS_MAX_SCATTERING_EVENTS)
-  {
-    throw InputError("the maximum number of scattering events must be in [1, " +
-      std::to_string(shared::VS_MAX_SCATTERING_EVENTS) + "], got " + std::to_string(params.maxEvents));
-  }
+  CheckScatteringSettings(double(params.maxEvents), double(params.anisotropy));
   if (params.mis > shared::VS_MIS_BALANCE)
   {
     throw InputError("unknown multiple importance sampling mode " + std::to_string(params.mis));

@@ -391,7 +391,7 @@ TEST(FullTransport, BadSettingsAreErrors)
   }
   auto q = p;
   q.maxEvents = VS_MAX_SCATTERING_EVENTS + 1;
-  expectError(q, "scattering events must be in [1, 100000], got 100001");
+  expectError(q, "MaximumScatteringEvents must be in [1, 100000], got 100001");
 }
 
 // A pass asked for many variants holds at most kMaxPipelineVariants of them (issue 35, class 10: a host
