@@ -72,7 +72,7 @@ class ProjectFiles(unittest.TestCase):
         for rel in ("Module/vtk.module", "Bridge/vtk.module", "Filters/vtk.module", "Rendering/vtk.module", "vtk.module",
                     "Bridge/CMakeLists.txt",
                     "Module/CMakeLists.txt", "Filters/CMakeLists.txt", "Rendering/CMakeLists.txt",
-                    "Examples/Tool/CMakeLists.txt", "Benchmarks/CMakeLists.txt"):
+                    "Tool/CMakeLists.txt", "Benchmarks/CMakeLists.txt"):
             if os.path.isfile(os.path.join(SOURCE, rel)):
                 self.assertIsNone(test_only.search(read(rel)), rel + " uses a test-only VTK module")
         root = read("CMakeLists.txt")
