@@ -18,13 +18,15 @@ def main():
         out = os.path.join(d, "brain.png")
         p = subprocess.run([sys.executable, args.script, "--volume", args.data, "--output", out, "--size", "32",
                             "--spp", "24", "--strategy", "Environment"],
-                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=600)
-        print(p.stdout)
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=600)
+        # Bytes, decoded without newline translation (text=True would turn '\r' into '\n').
+        stdout = p.stdout.decode("utf-8", "replace")
+        print(stdout)
         if p.returncode != 0:
-            sys.exit(f"FAILED: render_brain.py exited {p.returncode}: {p.stderr[-2000:]}")
-        if "\r" in p.stdout:
+            sys.exit(f"FAILED: render_brain.py exited {p.returncode}: {p.stderr.decode('utf-8', 'replace')[-2000:]}")
+        if "\r" in stdout:
             sys.exit("FAILED: '\\r' in a log: the progress is redrawn in place instead of written as lines")
-        lines = p.stdout.splitlines()
+        lines = stdout.split("\n")
         # 8 samples per frame: 8 and 16 of 24 are progress lines, each a line of its own.
         for expected in ("8/24 samples per pixel", "16/24 samples per pixel"):
             if expected not in lines:
