@@ -9,10 +9,9 @@
  * StartEvent, the camera reset of a renderer that has none yet), clears its viewport to the
  * renderer's background and renders its visible volumes; each vtkVisibilitySweepVolumeMapper draws
  * its window image over it exactly as it does in an OpenGL window (premultiplied RGBA, blended
- * ONE, ONE_MINUS_SRC_ALPHA into 8 bits per channel, rounded as llvmpipe rounds), so the pixels are
- * those of the OpenGL window: bit for bit in every mode (Render.TestMapperHeadless), but for
- * translucent Monte Carlo pixels over a coloured background, of which about 1% of the values are 1
- * lower (of 255).
+ * ONE, ONE_MINUS_SRC_ALPHA into 8 bits per channel, rounded as llvmpipe rounds: half to even), so
+ * the pixels are those of the OpenGL window, bit for bit in every mode (Render.TestMapperHeadless,
+ * Render.TestHeadlessBlend).
  * GetPixelData(), GetRGBACharPixelData() and GetRGBAPixelData() read them back, so that
  * vtkWindowToImageFilter works as with any window:
  *

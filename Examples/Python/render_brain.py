@@ -11,6 +11,7 @@ view is still; --emission-absorption renders the classic ray-cast image instead.
 """
 import os
 import argparse
+import sys
 import time
 
 import vtk
@@ -120,6 +121,9 @@ def main():
         print(f"preview in {time.perf_counter() - t:.2f} s")
         win.SetDesiredUpdateRate(0.0001)
     first = True
+    # Progress: one line redrawn in place on a terminal; whole lines in a log or a pipe.
+    terminal = sys.stdout.isatty()
+    redrawn = False
     while True:
         win.Render()
         if mapper.GetLastError():
@@ -131,14 +135,21 @@ def main():
             break
         if args.seconds > 0 and time.perf_counter() - t >= args.seconds:
             break
-        print(f"\r{mapper.GetAccumulatedSamples()}/{args.spp} samples per pixel", end="", flush=True)
+        progress = f"{mapper.GetAccumulatedSamples()}/{args.spp} samples per pixel"
+        if terminal:
+            print("\r" + progress, end="", flush=True)
+            redrawn = True
+        else:
+            print(progress, flush=True)
     seconds = time.perf_counter() - t
+    if redrawn:
+        print()  # end the line redrawn in place
     if args.emission_absorption:
-        print(f"\nrendered {args.size}x{args.size} in {seconds:.2f} s")
+        print(f"rendered {args.size}x{args.size} in {seconds:.2f} s")
     else:
         share = mapper.GetLastPreviewShare()
         shown = f", shown blended with the preview (its share {share:.2f})" if share > 0 else ""
-        print(f"\nrendered {args.size}x{args.size}: {mapper.GetAccumulatedSamples()} spp "
+        print(f"rendered {args.size}x{args.size}: {mapper.GetAccumulatedSamples()} spp "
               f"({mapper.GetEffectiveStrategyAsString()}) in {seconds:.2f} s{shown}")
     grab = vtk.vtkWindowToImageFilter()
     grab.SetInput(win)

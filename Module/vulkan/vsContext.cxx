@@ -485,7 +485,11 @@ void Context::Initialize(const ContextOptions& options)
   {
     throw NoDeviceError(std::string("cannot create a logical device on '") + this->Info_.Name + "': " + e.what());
   }
-  VULKAN_HPP_DEFAULT_DISPATCHER.init(this->Device_);
+  // No VULKAN_HPP_DEFAULT_DISPATCHER.init(Device_): the dispatcher is one per process, and a device's
+  // own entry points (vkGetDeviceProcAddr) are valid for that device only. With them, every context's
+  // device calls went to the last device made: after a validation context (its layer's entry points)
+  // was destroyed, the default context's calls, its destruction at exit included, crashed in the layer.
+  // The instance's entry points (the loader's trampolines) dispatch each call by its device.
   this->Queue_ = this->Device_.getQueue(this->QueueFamily_, 0);
   vk::CommandPoolCreateInfo pci;
   pci.queueFamilyIndex = this->QueueFamily_;

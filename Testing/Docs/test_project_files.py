@@ -5,6 +5,8 @@
 - the README links docs/reference.md and docs/paraview.md, and it and the reference cite the
   paper by its authors and title;
 - the code has a LICENSE;
+- the README's images exist, and its gallery shows every example scene with its command, each image
+  under 100 KiB;
 - the library's modules and the command-line tool need no test-only VTK module (RenderingImage,
   TestingRendering), so they configure against a VTK without them (ParaView's, docs/paraview.md).
 
@@ -62,6 +64,23 @@ class ProjectFiles(unittest.TestCase):
             self.assertIn(PAPER_TITLE, text, rel + " cites the paper by its title")
             self.assertIn("von Radziewsky", text, rel + " cites the paper by its authors")
 
+    def test_readme_images_exist_and_the_gallery_is_small(self):
+        # Issue 37: the README's gallery shows each demo scene as the tool renders it, with its command;
+        # its images stay small (the repository carries them).
+        readme = read("README.md")
+        images = re.findall(r"!\[[^\]]*\]\(([^)]+)\)", readme)
+        for rel in images:
+            self.assertTrue(os.path.isfile(os.path.join(SOURCE, rel)), "README shows a missing image " + rel)
+        gallery = [rel for rel in images if rel.startswith("docs/gallery/")]
+        scenes = sorted(f[:-5] for f in os.listdir(os.path.join(SOURCE, "Examples", "Scenes")) if f.endswith(".json"))
+        for scene in scenes:
+            self.assertIn("docs/gallery/%s.png" % scene, gallery, "the gallery lacks Examples/Scenes/%s.json" % scene)
+            self.assertIn("vissweep render Examples/Scenes/%s.json -o docs/gallery/%s.png" % (scene, scene),
+                          readme, "the gallery gives no command for " + scene)
+        for rel in gallery:
+            size = os.path.getsize(os.path.join(SOURCE, rel))
+            self.assertLess(size, 100 << 10, "%s is %d bytes: keep the gallery's images under 100 KiB" % (rel, size))
+
     def test_license(self):
         text = read("LICENSE")
         self.assertIn("BSD 3-Clause", text)
@@ -72,7 +91,7 @@ class ProjectFiles(unittest.TestCase):
         for rel in ("Module/vtk.module", "Bridge/vtk.module", "Filters/vtk.module", "Rendering/vtk.module", "vtk.module",
                     "Bridge/CMakeLists.txt",
                     "Module/CMakeLists.txt", "Filters/CMakeLists.txt", "Rendering/CMakeLists.txt",
-                    "Examples/Tool/CMakeLists.txt", "Benchmarks/CMakeLists.txt"):
+                    "Tool/CMakeLists.txt", "Benchmarks/CMakeLists.txt"):
             if os.path.isfile(os.path.join(SOURCE, rel)):
                 self.assertIsNone(test_only.search(read(rel)), rel + " uses a test-only VTK module")
         root = read("CMakeLists.txt")

@@ -1,4 +1,4 @@
-// libFuzzer target: the scene-file parser (Examples/Tool/vsSceneFile). Contract under test:
+// libFuzzer target: the scene-file parser (Tool/vsSceneFile). Contract under test:
 // any byte string either parses into a Scene or throws std::runtime_error (with a message
 // naming the key path or the JSON position); nothing else escapes, nothing crashes. A scene
 // that parses also round-trips: ParseScene(ToJson(s)) == s (vsSceneFile.h promises it).

@@ -1,7 +1,8 @@
 # The README's C++ snippets, exactly as written, as a consumer of VisSweep: writes the
 # CMakeLists.txt and app.cxx of "### C++", configures them against the build tree
 # (VisSweep_DIR=<build>/, MODE=build) or an install prefix (CMAKE_PREFIX_PATH, MODE=install),
-# builds the app and runs it in a fresh folder holding only a link to Data/.
+# builds the app and runs it in a fresh folder holding only a link to Data/; its image must land
+# beside the app (WORK/build/brain.png).
 # Arguments: README, MODE, PACKAGE (the build dir or the prefix), WORK, DATA, CH2, GENERATOR, and
 # optionally EXTRA_CONFIGURE (one more -D for the app's configure: scripts/paraview-check.sh gives
 # the VTK_DIR of ParaView's VTK).
@@ -39,10 +40,15 @@ file(MAKE_DIRECTORY "${WORK}/run")
 file(CREATE_LINK "${DATA}" "${WORK}/run/Data" SYMBOLIC)
 execute_process(COMMAND "${WORK}/build/app" "${CH2}" "Data/envmaps/sunrise.exr" 48 2
   WORKING_DIRECTORY "${WORK}/run" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if (NOT rc EQUAL 0 OR NOT out MATCHES "wrote brain.png \\(2 spp\\)")
+string(FIND "${out}" "wrote ${WORK}/build/brain.png (2 spp)" wrote)
+if (NOT rc EQUAL 0 OR wrote EQUAL -1)
   message(FATAL_ERROR "the README's C++ app failed (${rc}): ${out}\n${err}")
 endif ()
-file(SIZE "${WORK}/run/brain.png" bytes)
+# The image lands beside the program, not in the folder it was run from (issue 37).
+if (EXISTS "${WORK}/run/brain.png" OR NOT EXISTS "${WORK}/build/brain.png")
+  message(FATAL_ERROR "the README's C++ app wrote its image into the folder it was run from, not beside itself")
+endif ()
+file(SIZE "${WORK}/build/brain.png" bytes)
 if (bytes LESS 1000)
   message(FATAL_ERROR "brain.png has only ${bytes} bytes")
 endif ()

@@ -1,4 +1,4 @@
-// The scene file's schema (Examples/Tool/vsSceneSchema.h) against its documentation and its
+// The scene file's schema (Tool/vsSceneSchema.h) against its documentation and its
 // parser: docs/reference.md ("The scene file") lists exactly the table's keys (and each Word
 // key's words), and a key set to the table's default parses as the key left out.
 #include "vsSceneFile.h"

@@ -2,20 +2,131 @@
 // size with finite, non-negative R, G, B everywhere and some light (used by the tool's ctest).
 // "framed": also the volume is in view and centred, as vtkRenderer::ResetCamera frames it: the
 // centre pixel is covered (alpha > 0.3) and the four corner pixels are not (alpha < 0.05).
+// vsCheckExr --header FILE.exr — prints the header's "vissweep.*" attributes, one "name=value" a line.
+// vsCheckExr --same A.exr B.exr — exits 0 when the two images have the same size and the same pixels
+// bit for bit (their headers may differ: the render time is in them).
 #include <ImfArray.h>
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfAttribute.h>
+#include <ImfDoubleAttribute.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfIntAttribute.h>
 #include <ImfRgbaFile.h>
+#include <ImfStringAttribute.h>
+#include <ImfVecAttribute.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <cstring>
 #include <string>
+#include <vector>
+
+namespace
+{
+int PrintHeader(const char* path)
+{
+  Imf::InputFile file(path);
+  const Imf::Header& header = file.header();
+  for (auto it = header.begin(); it != header.end(); ++it)
+  {
+    const std::string name = it.name();
+    if (name.rfind("vissweep.", 0) != 0)
+    {
+      continue;
+    }
+    const Imf::Attribute& a = it.attribute();
+    if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&a))
+    {
+      std::printf("%s=%s\n", name.c_str(), s->value().c_str());
+    }
+    else if (const auto* i = dynamic_cast<const Imf::IntAttribute*>(&a))
+    {
+      std::printf("%s=%d\n", name.c_str(), i->value());
+    }
+    else if (const auto* d = dynamic_cast<const Imf::DoubleAttribute*>(&a))
+    {
+      std::printf("%s=%.17g\n", name.c_str(), d->value());
+    }
+    else if (const auto* v = dynamic_cast<const Imf::V3dAttribute*>(&a))
+    {
+      std::printf("%s=%.17g,%.17g,%.17g\n", name.c_str(), v->value().x, v->value().y, v->value().z);
+    }
+    else
+    {
+      std::printf("%s=<%s>\n", name.c_str(), a.typeName());
+    }
+  }
+  return 0;
+}
+
+// Every channel's pixels as 32-bit floats' bit patterns (channel by channel, in the header's
+// order), with the channels' names and the size.
+std::vector<unsigned> Pixels(const char* path, int& w, int& h, std::string& channels)
+{
+  Imf::InputFile file(path);
+  const Imath::Box2i dw = file.header().dataWindow();
+  w = dw.max.x - dw.min.x + 1;
+  h = dw.max.y - dw.min.y + 1;
+  std::vector<std::vector<float>> planes;
+  Imf::FrameBuffer frame;
+  for (auto c = file.header().channels().begin(); c != file.header().channels().end(); ++c)
+  {
+    channels += std::string(c.name()) + " ";
+    planes.emplace_back(size_t(w) * size_t(h));
+    frame.insert(c.name(), Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(planes.back().data() - dw.min.x - dw.min.y * w),
+      sizeof(float), sizeof(float) * size_t(w)));
+  }
+  file.setFrameBuffer(frame);
+  file.readPixels(dw.min.y, dw.max.y);
+  std::vector<unsigned> bits;
+  for (const auto& plane : planes)
+  {
+    for (float v : plane)
+    {
+      unsigned u = 0;
+      std::memcpy(&u, &v, sizeof(u));
+      bits.push_back(u);
+    }
+  }
+  return bits;
+}
+}
 
 int main(int argc, char** argv)
 {
+  try
+  {
+    if (argc == 3 && std::strcmp(argv[1], "--header") == 0)
+    {
+      return PrintHeader(argv[2]);
+    }
+    if (argc == 4 && std::strcmp(argv[1], "--same") == 0)
+    {
+      int wa = 0, ha = 0, wb = 0, hb = 0;
+      std::string ca, cb;
+      const auto a = Pixels(argv[2], wa, ha, ca);
+      const auto b = Pixels(argv[3], wb, hb, cb);
+      if (wa != wb || ha != hb || ca != cb || a != b)
+      {
+        std::fprintf(stderr, "%s (%d x %d) and %s (%d x %d) differ\n", argv[2], wa, ha, argv[3], wb, hb);
+        return 1;
+      }
+      std::printf("%s and %s: the same %d x %d pixels\n", argv[2], argv[3], wa, ha);
+      return 0;
+    }
+  }
+  catch (const std::exception& e)
+  {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
   if (argc != 4 && !(argc == 5 && std::string(argv[4]) == "framed"))
   {
-    std::fprintf(stderr, "usage: vsCheckExr FILE.exr WIDTH HEIGHT [framed]\n");
+    std::fprintf(stderr, "usage: vsCheckExr FILE.exr WIDTH HEIGHT [framed] | --header FILE.exr | --same A.exr B.exr\n");
     return 2;
   }
   try

@@ -10,7 +10,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -152,11 +151,12 @@ int RunFrames(const RenderOptions& o)
   CheckOutputsForMode(allOutputs, scene.Render.Mode);
   const bool timed = o.TimeBudget > 0.0;
   const int target = timed ? (1 << 30) : scene.Render.Spp;
-  const bool bar = !o.Quiet && ::isatty(STDERR_FILENO);
+  const bool bar = !o.Quiet;
 
   scene.Volume.TimeStep = range.First;
   auto t0 = Clock::now();
   SceneObjects objects = BuildScene(scene);
+  ApplyCameraOptions(objects, o);
   CheckVolumeInView(objects);
   double readSeconds = Since(t0);
   nlohmann::json frames = nlohmann::json::array();
@@ -175,7 +175,7 @@ int RunFrames(const RenderOptions& o)
       names.push_back(FrameOutputName(out, step));
     }
     {
-      auto files = WriteOutputs(objects, scene, names);
+      auto files = WriteOutputs(objects, scene, names, Provenance(objects, scene, o.SceneFile, r, step));
       std::vector<PendingFile*> group;
       for (auto& file : files)
       {

@@ -3,16 +3,23 @@
 
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
+#include "vtkImageWriter.h"
+#include "vtkJPEGWriter.h"
 #include "vtkNew.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
+#include "vtkSmartPointer.h"
 #include "vtkRenderWindow.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <ImfChannelList.h>
+#include <ImfDoubleAttribute.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
+#include <ImfIntAttribute.h>
 #include <ImfOutputFile.h>
+#include <ImfStringAttribute.h>
+#include <ImfVecAttribute.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -30,6 +37,38 @@ std::string Lower(std::string s)
   std::transform(s.begin(), s.end(), s.begin(), ::tolower);
   return s;
 }
+
+bool IsJpeg(const std::string& ext)
+{
+  return ext == ".jpg" || ext == ".jpeg";
+}
+
+void AddProvenance(Imf::Header& header, const ImageProvenance& p)
+{
+  auto text = [&header](const char* name, const std::string& value) {
+    header.insert(std::string("vissweep.") + name, Imf::StringAttribute(value));
+  };
+  auto point = [&header](const char* name, const std::array<double, 3>& v) {
+    header.insert(std::string("vissweep.") + name, Imf::V3dAttribute(Imath::V3d(v[0], v[1], v[2])));
+  };
+  text("version", p.Version);
+  text("scene", p.SceneFile);
+  if (p.TimeStep >= 0)
+  {
+    header.insert("vissweep.timeStep", Imf::IntAttribute(p.TimeStep));
+  }
+  text("mode", p.Mode);
+  text("strategy", p.Strategy);
+  text("effectiveStrategy", p.EffectiveStrategy);
+  header.insert("vissweep.spp", Imf::IntAttribute(p.Spp));
+  header.insert("vissweep.seconds", Imf::DoubleAttribute(p.Seconds));
+  header.insert("vissweep.seed", Imf::IntAttribute(p.Seed));
+  point("cameraPosition", p.CameraPosition);
+  point("focalPoint", p.FocalPoint);
+  point("viewUp", p.ViewUp);
+  header.insert("vissweep.viewAngle", Imf::DoubleAttribute(p.ViewAngle));
+  text("device", p.Device);
+}
 }
 
 std::string Extension(const std::string& path)
@@ -40,14 +79,14 @@ std::string Extension(const std::string& path)
 void CheckOutputPath(const std::string& out)
 {
   const std::string ext = Extension(out);
-  if (ext != ".exr" && ext != ".png")
+  if (ext != ".exr" && ext != ".png" && !IsJpeg(ext))
   {
-    throw std::runtime_error("-o " + out + ": unknown output format '" + ext + "' (expected .exr or .png)");
+    throw std::runtime_error("-o " + out + ": unknown output format '" + ext + "' (expected .exr, .png or .jpg)");
   }
   CheckWritable("-o", out);
 }
 
-void WriteExr(vtkImageData* radiance, const std::string& path)
+void WriteExr(vtkImageData* radiance, const std::string& path, const ImageProvenance* provenance)
 {
   if (!radiance)
   {
@@ -80,6 +119,10 @@ void WriteExr(vtkImageData* radiance, const std::string& path)
   {
     Imf::Header header(w, h);
     header.compression() = Imf::ZIP_COMPRESSION;
+    if (provenance)
+    {
+      AddProvenance(header, *provenance);
+    }
     const char* names[4] = { "R", "G", "B", "A" };
     Imf::FrameBuffer frame;
     for (int c = 0; c < 4; ++c)
@@ -98,20 +141,32 @@ void WriteExr(vtkImageData* radiance, const std::string& path)
   }
 }
 
-void WritePng(vtkRenderWindow* window, const std::string& path)
+void WriteWindowImage(vtkRenderWindow* window, const std::string& path)
 {
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->ShouldRerenderOff(); // a re-render would add samples
   grab->SetInputBufferTypeToRGB();
   grab->Update();
-  vtkNew<vtkPNGWriter> writer;
+  const bool jpeg = IsJpeg(Extension(path));
+  vtkSmartPointer<vtkImageWriter> writer;
+  if (jpeg)
+  {
+    auto j = vtkSmartPointer<vtkJPEGWriter>::New();
+    j->SetQuality(95);
+    j->ProgressiveOff();
+    writer = j;
+  }
+  else
+  {
+    writer = vtkSmartPointer<vtkPNGWriter>::New();
+  }
   writer->SetInputConnection(grab->GetOutputPort());
   writer->SetFileName(path.c_str());
   writer->Write();
   if (writer->GetErrorCode() != 0)
   {
-    throw std::runtime_error("cannot write PNG '" + path + "'");
+    throw std::runtime_error(std::string("cannot write ") + (jpeg ? "JPEG '" : "PNG '") + path + "'");
   }
 }
 }

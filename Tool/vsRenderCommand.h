@@ -1,6 +1,7 @@
 // vsRenderCommand.h — `vissweep render SCENE.json -o OUT.(exr|png) ...`: renders the VTK
 // pipeline of a scene file (vsSceneFile.h, built by vsSceneBuild.h) progressively offscreen with
-// vtkVisibilitySweepVolumeMapper, writing linear EXR and/or tone-mapped PNG and stats.
+// vtkVisibilitySweepVolumeMapper, writing linear EXR (with what made it in its header) and/or
+// tone-mapped PNG or JPEG, and stats.
 #ifndef vsRenderCommand_h
 #define vsRenderCommand_h
 
@@ -20,6 +21,8 @@ class App;
 
 namespace vstool
 {
+struct ImageProvenance;
+
 /** The options of `vissweep render`. */
 struct RenderOptions
 {
@@ -39,6 +42,11 @@ struct RenderOptions
   std::string Json;
   bool Quiet = false;
   std::string Frames; // "A:B": a time range of a volume sequence (vsRenderFrames.h)
+  // The camera, each overriding the scene's (or the framing of a scene without one) when given:
+  // three numbers "X,Y,Z" (world coordinates; the view up a direction).
+  std::vector<double> CameraPosition;
+  std::vector<double> FocalPoint;
+  std::vector<double> ViewUp;
 };
 
 /** What a progressive render did. */
@@ -58,6 +66,10 @@ struct ProgressiveResult
 nlohmann::json DeviceJson();
 /** Reads the scene file and applies the command line's overrides (size, spp, strategy, seed). */
 Scene LoadScene(const RenderOptions& options);
+/** Sets the command line's camera (--camera-position, --focal-point, --view-up) on the built scene's
+ *  camera, after the scene's own or its framing; throws std::runtime_error naming the option when the
+ *  position is the focal point or the view up is zero or along the view direction. */
+void ApplyCameraOptions(SceneObjects& objects, const RenderOptions& options);
 /** The length of an automatic progressive frame (about two progress-bar updates a second). */
 constexpr double AutoFrameSeconds = 0.5;
 /** Renders until `target` spp (or `timeBudget` seconds when > 0), `samplesPerFrame` per frame, or
@@ -65,9 +77,14 @@ constexpr double AutoFrameSeconds = 0.5;
  *  std::runtime_error on a render error or when no samples accumulate. */
 ProgressiveResult RenderProgressively(
   SceneObjects& objects, int target, int samplesPerFrame, double timeBudget, bool progressBar);
-/** Writes the outputs (.exr: the radiance, .png: the window) under temporary names; commit them. */
-std::vector<std::unique_ptr<PendingFile>> WriteOutputs(
-  SceneObjects& objects, const Scene& scene, const std::vector<std::string>& outputs);
+/** What made the image, for the EXR's header: the scene file, the loop's result, the camera rendered
+ *  with; `timeStep` >= 0 for a step of --frames. */
+ImageProvenance Provenance(SceneObjects& objects, const Scene& scene, const std::string& sceneFile,
+  const ProgressiveResult& loop, int timeStep = -1);
+/** Writes the outputs (.exr: the radiance with `provenance` in its header, .png/.jpg: the window)
+ *  under temporary names; commit them. */
+std::vector<std::unique_ptr<PendingFile>> WriteOutputs(SceneObjects& objects, const Scene& scene,
+  const std::vector<std::string>& outputs, const ImageProvenance& provenance);
 
 /** Registers `render` on the tool's top-level app. */
 void AddRender(CLI::App& app);

@@ -9,8 +9,10 @@
 #include "vsToolCommand.h"
 #include "vsContext.h"
 
+#include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkVisibilitySweepVolumeMapper.h"
 
 #include <CLI/CLI.hpp>
@@ -29,6 +31,7 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <system_error>
 
 namespace vstool
 {
@@ -41,27 +44,46 @@ double Seconds(Clock::time_point a, Clock::time_point b)
   return std::chrono::duration<double>(b - a).count();
 }
 
-void Progress(int spp, int target, double elapsed, double budget, bool done)
+// The progress display on stderr. On a terminal one line redrawn in place ('\r'); otherwise (a
+// log, a pipe) whole lines, one each time a further tenth of the way is done and one at the end,
+// so that a log reads line by line instead of one run-together line.
+struct ProgressDisplay
 {
-  const int width = 30;
-  const double f = budget > 0.0 ? std::min(1.0, elapsed / budget) : std::min(1.0, double(spp) / std::max(target, 1));
-  const int filled = int(std::round(f * width));
-  std::string bar(size_t(filled), '#');
-  bar += std::string(size_t(width - filled), '.');
-  if (budget > 0.0)
+  bool Terminal = ::isatty(STDERR_FILENO) != 0;
+  int LastTenth = -1; // whole lines: the last tenth written
+
+  void Show(int spp, int target, double elapsed, double budget, bool done)
   {
-    std::fprintf(stderr, "\r[%s] %6d spp  %6.1f / %.1f s", bar.c_str(), spp, elapsed, budget);
+    const int width = 30;
+    const double f = budget > 0.0 ? std::min(1.0, elapsed / budget) : std::min(1.0, double(spp) / std::max(target, 1));
+    if (!Terminal)
+    {
+      const int tenth = int(std::floor(f * 10.0));
+      if (!done && tenth <= LastTenth)
+      {
+        return;
+      }
+      LastTenth = tenth;
+    }
+    const int filled = int(std::round(f * width));
+    std::string bar(size_t(filled), '#');
+    bar += std::string(size_t(width - filled), '.');
+    const char* start = Terminal ? "\r" : "";
+    if (budget > 0.0)
+    {
+      std::fprintf(stderr, "%s[%s] %6d spp  %6.1f / %.1f s", start, bar.c_str(), spp, elapsed, budget);
+    }
+    else
+    {
+      std::fprintf(stderr, "%s[%s] %6d / %d spp  %6.1f s", start, bar.c_str(), spp, target, elapsed);
+    }
+    if (done || !Terminal)
+    {
+      std::fprintf(stderr, "\n");
+    }
+    std::fflush(stderr);
   }
-  else
-  {
-    std::fprintf(stderr, "\r[%s] %6d / %d spp  %6.1f s", bar.c_str(), spp, target, elapsed);
-  }
-  if (done)
-  {
-    std::fprintf(stderr, "\n");
-  }
-  std::fflush(stderr);
-}
+};
 
 int Run(const RenderOptions& o)
 {
@@ -78,19 +100,20 @@ int Run(const RenderOptions& o)
   const int target = timed ? (1 << 30) : scene.Render.Spp;
 
   SceneObjects objects = BuildScene(scene);
+  ApplyCameraOptions(objects, o);
   CheckVolumeInView(objects);
   auto* mapper = objects.Mapper.Get();
   const double setupSeconds = Seconds(start, Clock::now());
 
-  const bool bar = !o.Quiet && ::isatty(STDERR_FILENO);
-  const ProgressiveResult loop = RenderProgressively(objects, target, o.SamplesPerFrame, o.TimeBudget, bar);
+  const ProgressiveResult loop = RenderProgressively(objects, target, o.SamplesPerFrame, o.TimeBudget, !o.Quiet);
   const int frames = loop.Frames, reached = loop.Spp;
   const double deviceSeconds = loop.DeviceSeconds, sweepSeconds = loop.SweepSeconds;
   const double firstFrameSeconds = loop.FirstFrameSeconds;
   const double renderSeconds = loop.Seconds;
 
   // Outputs: temporary names first, renamed only when all are written.
-  std::vector<std::unique_ptr<PendingFile>> pending = WriteOutputs(objects, scene, o.Outputs);
+  std::vector<std::unique_ptr<PendingFile>> pending =
+    WriteOutputs(objects, scene, o.Outputs, Provenance(objects, scene, o.SceneFile, loop));
 
   const double pixels = double(scene.Render.Width) * scene.Render.Height;
   nlohmann::json stats;
@@ -265,6 +288,7 @@ ProgressiveResult RenderProgressively(
   mapper->SetSamplesPerFrame(autoFrames ? 1 : std::min(samplesPerFrame, target));
   const bool timed = timeBudget > 0.0;
   ProgressiveResult r;
+  ProgressDisplay progress;
   const auto loopStart = Clock::now();
   if (mapper->GetRenderMode() != vtkVisibilitySweepVolumeMapper::MonteCarlo)
   {
@@ -281,11 +305,7 @@ ProgressiveResult RenderProgressively(
     r.DirectionsUpdated = mapper->GetDirectionsUpdatedLastFrame();
     r.DeviceSeconds = mapper->GetLastDeviceSeconds();
     r.SweepSeconds = mapper->GetLastFrameSweepSeconds();
-    if (bar)
-    {
-      Progress(target, target, r.Seconds, 0.0, true);
-    }
-    return r;
+    return r; // no progress to show: one frame, no samples (the summary line says what it took)
   }
   int stalled = 0, previousSpp = 0;
   while (true)
@@ -335,7 +355,7 @@ ProgressiveResult RenderProgressively(
     const bool done = r.Spp >= target || (timed && elapsed + nextFrameSeconds > timeBudget);
     if (bar)
     {
-      Progress(r.Spp, target, elapsed, timed ? timeBudget : 0.0, done);
+      progress.Show(r.Spp, target, elapsed, timed ? timeBudget : 0.0, done);
     }
     if (done)
     {
@@ -346,8 +366,73 @@ ProgressiveResult RenderProgressively(
   return r;
 }
 
-std::vector<std::unique_ptr<PendingFile>> WriteOutputs(
-  SceneObjects& objects, const Scene& scene, const std::vector<std::string>& outputs)
+ImageProvenance Provenance(SceneObjects& objects, const Scene& scene, const std::string& sceneFile,
+  const ProgressiveResult& loop, int timeStep)
+{
+  ImageProvenance p;
+  p.Version = VISSWEEP_VERSION;
+  std::error_code ec;
+  const std::filesystem::path absolute = std::filesystem::absolute(sceneFile, ec);
+  p.SceneFile = ec ? sceneFile : absolute.lexically_normal().string();
+  p.TimeStep = timeStep;
+  p.Mode = scene.Render.Mode;
+  p.Strategy = scene.Render.Strategy;
+  p.EffectiveStrategy = objects.Mapper->GetEffectiveStrategyAsString();
+  p.Spp = loop.Spp;
+  p.Seconds = loop.Seconds;
+  p.Seed = scene.Render.Seed;
+  vtkCamera* camera = objects.Renderer->GetActiveCamera();
+  camera->GetPosition(p.CameraPosition.data());
+  camera->GetFocalPoint(p.FocalPoint.data());
+  camera->GetViewUp(p.ViewUp.data());
+  p.ViewAngle = camera->GetViewAngle();
+  p.Device = vs::Context::Default()->Info().Name;
+  return p;
+}
+
+void ApplyCameraOptions(SceneObjects& objects, const RenderOptions& o)
+{
+  if (o.CameraPosition.empty() && o.FocalPoint.empty() && o.ViewUp.empty())
+  {
+    return;
+  }
+  vtkCamera* camera = objects.Renderer->GetActiveCamera();
+  if (!o.CameraPosition.empty())
+  {
+    camera->SetPosition(o.CameraPosition.data());
+  }
+  if (!o.FocalPoint.empty())
+  {
+    camera->SetFocalPoint(o.FocalPoint.data());
+  }
+  Vec3 position, focal, up;
+  camera->GetPosition(position.data());
+  camera->GetFocalPoint(focal.data());
+  camera->GetViewUp(up.data());
+  if (!o.ViewUp.empty())
+  {
+    up = { o.ViewUp[0], o.ViewUp[1], o.ViewUp[2] };
+  }
+  const char* which = !o.CameraPosition.empty() ? "--camera-position" : "--focal-point";
+  const Vec3 d = Normalized({ focal[0] - position[0], focal[1] - position[1], focal[2] - position[2] });
+  if (d[0] == 0.0 && d[1] == 0.0 && d[2] == 0.0)
+  {
+    throw std::runtime_error(std::string(which) + ": the camera's position and focal point are the same point");
+  }
+  const Vec3 u = Normalized(up);
+  const double along = u[0] * d[0] + u[1] * d[1] + u[2] * d[2];
+  if ((u[0] == 0.0 && u[1] == 0.0 && u[2] == 0.0) || std::abs(along) > 0.999)
+  {
+    throw std::runtime_error(std::string(o.ViewUp.empty() ? which : "--view-up") +
+      ": the view up is zero or along the view direction; give --view-up across it");
+  }
+  camera->SetViewUp(u.data());
+  camera->OrthogonalizeViewUp();
+  objects.Renderer->ResetCameraClippingRange();
+}
+
+std::vector<std::unique_ptr<PendingFile>> WriteOutputs(SceneObjects& objects, const Scene& scene,
+  const std::vector<std::string>& outputs, const ImageProvenance& provenance)
 {
   std::vector<std::unique_ptr<PendingFile>> pending;
   for (const auto& out : outputs)
@@ -367,11 +452,11 @@ std::vector<std::unique_ptr<PendingFile>> WriteOutputs(
             std::to_string(scene.Render.Height));
         }
       }
-      WriteExr(radiance, pending.back()->Path());
+      WriteExr(radiance, pending.back()->Path(), &provenance);
     }
     else
     {
-      WritePng(objects.Window, pending.back()->Path());
+      WriteWindowImage(objects.Window, pending.back()->Path());
     }
   }
   return pending;
@@ -381,12 +466,14 @@ std::vector<std::unique_ptr<PendingFile>> WriteOutputs(
 void AddRender(CLI::App& app)
 {
   auto o = std::make_shared<RenderOptions>();
-  auto* cmd = app.add_subcommand("render", "render a scene file (Monte Carlo, progressive) to EXR and/or PNG");
+  auto* cmd = app.add_subcommand("render", "render a scene file (Monte Carlo, progressive) to EXR, PNG and/or JPEG");
   cmd->add_option("scene", o->SceneFile,
        "the scene file (JSON; its format and the conventions: docs/reference.md, installed as "
        "share/doc/vissweep/reference.md)")
     ->required();
-  cmd->add_option("-o,--output", o->Outputs, "output image: .exr (linear float RGBA) or .png (tone mapped); repeat for both")
+  cmd->add_option("-o,--output", o->Outputs,
+       "output image: .exr (linear float RGBA, with what made it in its header), .png or .jpg (tone mapped); "
+       "repeat for several")
     ->required();
   cmd->add_option("--width", o->Width, "image width (overrides the scene)")->check(CLI::Range(1, 16384));
   cmd->add_option("--height", o->Height, "image height (overrides the scene)")->check(CLI::Range(1, 16384));
@@ -419,11 +506,26 @@ void AddRender(CLI::App& app)
   cmd->add_option("--samples-per-frame", o->SamplesPerFrame,
       "samples per pixel added by each progressive frame (default 0: as many as take about 0.5 s)")
     ->check(CLI::Range(0, 1 << 16));
+  cmd->add_option("--camera-position", o->CameraPosition,
+       "the camera's position X,Y,Z in world coordinates (overrides the scene's camera.position)")
+    ->expected(3)
+    ->delimiter(',')
+    ->check(FiniteNumber());
+  cmd->add_option("--focal-point", o->FocalPoint, "the point looked at, X,Y,Z (overrides camera.focal_point)")
+    ->expected(3)
+    ->delimiter(',')
+    ->check(FiniteNumber());
+  cmd->add_option("--view-up", o->ViewUp, "the camera's up direction X,Y,Z (overrides camera.view_up)")
+    ->expected(3)
+    ->delimiter(',')
+    ->check(FiniteNumber());
   cmd->add_option("--json", o->Json, "write the statistics as JSON to this file ('-' = stdout)");
   cmd->add_option("--frames", o->Frames,
-    "render time steps A:B (inclusive) of a volume 'files' sequence, one image per step per -o: OUT with a "
+    "render time steps A:B (inclusive; 0-based indices into the scene's volume.files) of a volume sequence, "
+    "one image per step per -o: OUT with a "
     "printf pattern (frame_%04d.png) or OUT with _NNNN inserted before the extension");
-  cmd->add_flag("-q,--quiet", o->Quiet, "no progress bar");
+  cmd->add_flag("-q,--quiet", o->Quiet,
+    "no progress display (on stderr: a bar redrawn in place on a terminal, whole lines in a log or pipe)");
   cmd->callback([o]() {
     int status = 2;
     try
