@@ -190,6 +190,7 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
+  I.LastFrame.Clear();
   vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
   I.RenderStamp = vs::NewestModification({ this, input, vol,
     this->GetNumberOfInputConnections(1) > 0 ? this->GetInputAlgorithm(1, 0) : nullptr });
@@ -239,6 +240,8 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
       I.Scene->Update(input, scalars, vol ? vol->GetProperty() : nullptr, vol ? vol->GetMatrix() : nullptr,
         this->DensityScale);
     this->LastUpdateSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - updateStart).count();
+    I.LastFrame.Add("scene", this->LastUpdateSeconds);
+    I.LastFrame.Append("scene.", I.Scene->LastPhases());
     if (changes.Data)
     {
       ++this->VolumeUploadCount;
@@ -294,6 +297,23 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
   {
     this->ReportError(std::string("VisSweep cannot render: ") + e.what());
   }
+}
+
+int vtkVisibilitySweepVolumeMapper::GetNumberOfLastFramePhases()
+{
+  return int(this->Impl->LastFrame.Phases().size());
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetLastFramePhaseName(int i)
+{
+  const auto& phases = this->Impl->LastFrame.Phases();
+  return i >= 0 && size_t(i) < phases.size() ? phases[size_t(i)].first.c_str() : nullptr;
+}
+
+double vtkVisibilitySweepVolumeMapper::GetLastFramePhaseSeconds(int i)
+{
+  const auto& phases = this->Impl->LastFrame.Phases();
+  return i >= 0 && size_t(i) < phases.size() ? phases[size_t(i)].second : 0.0;
 }
 
 const char* vtkVisibilitySweepVolumeMapper::GetSamplingStrategyName(int strategy)
