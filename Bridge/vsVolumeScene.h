@@ -16,6 +16,7 @@
 
 #if !defined(__VTK_WRAP__)
 #include "vissweepBridgeModule.h"
+#include "vsPhaseTimes.h"
 #include "vsVolumeGeometry.h"
 
 #include "vtkType.h"
@@ -36,7 +37,6 @@ namespace vs
 class Context;
 class DeviceVolume;
 class MajorantGrid;
-class PhaseTimes;
 class TransferFunctionTable;
 struct TransferFunctionSamples;
 

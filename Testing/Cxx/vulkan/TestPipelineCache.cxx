@@ -170,7 +170,7 @@ TEST(PipelineCache, BadFilesAreIgnoredWithAMessageAndRewritten)
     Compile(ctx);
     good = ReadFile(path);
   }
-  ASSERT_GT(good.size(), 24u + 32u);
+  ASSERT_GE(good.size(), 24u + 32u); // VisSweep's header and at least the driver's (lavapipe 22.3 keeps only that)
   vk::PhysicalDeviceProperties props = ContextIn("off")->Physical().getProperties();
   auto otherDevice = props;
   otherDevice.pipelineCacheUUID[0] ^= 0xff;
