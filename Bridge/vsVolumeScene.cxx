@@ -4,6 +4,7 @@
 #include "vsError.h"
 #include "vsGradientOpacity.h"
 #include "vsMajorantGrid.h"
+#include "vsPhaseTimes.h"
 #include "vsTransferFunctionTable.h"
 #include "vsVolumeInput.h"
 #include "sampling/interpolation.h"
@@ -20,6 +21,7 @@ namespace vs
 {
 VolumeScene::VolumeScene(std::shared_ptr<Context> context)
   : Context_(std::move(context))
+  , LastPhases_(std::make_unique<PhaseTimes>())
 {
 }
 
@@ -63,6 +65,8 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
     throw InputError(problem);
   }
   Changes changes;
+  this->LastPhases_->Clear();
+  auto lap = PhaseTimes::Clock::now();
   VolumeGeometry geometry = ComputeGeometry(image, volumeMatrix);
   problem = CheckGeometry(geometry);
   if (!problem.empty())
@@ -86,12 +90,15 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
     this->TF_.reset();
     DeviceVolume::CheckFits(*this->Context_, geometry.Dims);
     values = ScalarsAsFloat(scalars);
+    lap = this->LastPhases_->Lap("convert", lap);
     this->Volume_ = std::make_unique<DeviceVolume>(this->Context_, values.data(), geometry.Dims);
+    lap = this->LastPhases_->Lap("upload", lap);
     if (!this->Majorants_)
     {
       this->Majorants_ = std::make_unique<MajorantGrid>(this->Context_);
     }
     this->Majorants_->UpdateRanges(*this->Volume_, values.data());
+    lap = this->LastPhases_->Lap("ranges", lap);
     this->DataTime_ = dataTime;
     this->Scalars_ = scalars;
     ++this->Uploads_;
@@ -133,6 +140,7 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
         ++this->FactorBuilds_;
       }
     }
+    lap = this->LastPhases_->Lap("factor", lap);
   }
 
   if (changes.Data || changes.TransferFunction)
@@ -164,10 +172,12 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
       this->TF_ = std::make_unique<TransferFunctionTable>(this->Context_, samples);
       ++this->TableBuilds_;
     }
+    lap = this->LastPhases_->Lap("table", lap);
     changes.Extinction = changes.Extinction || factorChanged;
     if (changes.Extinction)
     {
       this->Majorants_->UpdateMajorants(samples);
+      lap = this->LastPhases_->Lap("majorants", lap);
     }
     this->PropertyTime_ = property->GetMTime();
     this->DensityScale_ = densityScale;

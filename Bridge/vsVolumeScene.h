@@ -16,6 +16,7 @@
 
 #if !defined(__VTK_WRAP__)
 #include "vissweepBridgeModule.h"
+#include "vsPhaseTimes.h"
 #include "vsVolumeGeometry.h"
 
 #include "vtkType.h"
@@ -98,6 +99,10 @@ public:
   int FactorBuilds() const { return this->FactorBuilds_; }
   /** Host seconds the last factor computation took (gradients, GO and upload). */
   double LastFactorSeconds() const { return this->LastFactorSeconds_; }
+  /** The last Update()'s work by phase (vsPhaseTimes.h), host wall seconds: convert (the scalars to
+   *  float), upload (the device volume and its 8-bit quads), ranges (the bricks' scalar ranges),
+   *  factor, table, majorants; only the phases that ran. */
+  const PhaseTimes& LastPhases() const { return *this->LastPhases_; }
 
 private:
   std::shared_ptr<Context> Context_;
@@ -115,6 +120,7 @@ private:
   std::vector<float> HostFactor_;
   double LastFactorSeconds_ = 0.0;
   uint32_t Interpolation_ = 0;
+  std::unique_ptr<PhaseTimes> LastPhases_;
 };
 }
 #endif

@@ -18,6 +18,7 @@
 #include "vsMapperEnvironment.h"
 #include "vsMonteCarloPass.h"
 #include "vsPeelingDeferral.h"
+#include "vsPhaseTimes.h"
 #include "vsPipelinePrewarm.h"
 #include "vsPropertyChecks.h"
 #include "vsStrategySelector.h"
@@ -51,6 +52,7 @@ struct vtkVisibilitySweepVolumeMapper::Internals
    *  first TwoStep frame does not wait for its creation (a TwoStep frame that comes first waits in
    *  the context's pipeline cache). */
   vs::PipelinePrewarm GridPrewarm;
+  vs::PhaseTimes LastFrame; // the last Render()'s host time by phase (GetLastFramePhaseName)
   ~Internals()
   {
     this->Prewarm.Join();

@@ -147,6 +147,7 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume
 void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
+  auto lap = vs::PhaseTimes::Clock::now();
   this->LastRenderComplete = false;
   I.SwitchView(ren); // one accumulator per renderer
   const vs::VolumeGeometry geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
@@ -157,6 +158,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   vs::FrameGeometry::CheckViewport(*I.Context, view.Port);
 
   this->UpdateEnvironmentInput();
+  lap = I.LastFrame.Lap("environment", lap);
 
   // The visibility grid, only for the strategies that use it.
   const std::vector<glm::dvec4> planes = vs::FrameGeometry::WorldPlanes(this->ClippingPlanes, geometry);
@@ -170,6 +172,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   const bool needGrid = this->SamplingStrategy >= Visibility && !emptyVolume && !(autoStrategy && thinVolume);
   I.GridGeometry = geometry;
   this->UpdateVisibilityGrid(needGrid, autoStrategy);
+  lap = I.LastFrame.Lap("grid", lap);
 
   // Parameters of this frame.
   vtkRenderWindow* win = ren->GetRenderWindow();
@@ -275,7 +278,9 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     p.grid.cellSize = grid->CellSize();
   }
 
+  lap = I.LastFrame.Lap("frame", lap);
   I.Prewarm.Join();
+  lap = I.LastFrame.Lap("pipeline", lap);
   if (autoStrategy && grid && !I.GridPrewarm.Started() && I.Grid->SweptDirections() > 0)
   {
     I.GridPrewarm.MarkStarted();
@@ -385,8 +390,10 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     // build is paid for; a complete grid's table is always current, so its image is reproducible.
     pass->SetTableRebuildRatio(
       I.Grid && I.Grid->PendingDirections() > 0 ? vs::MonteCarloPass::kTableRebuildRatio : 0.0);
+    lap = I.LastFrame.Lap("frame", lap);
     pass->Render(I.Scene->Volume(), I.Scene->TF(), I.Scene->Majorants(), gridFrame ? grid : nullptr,
       I.Environment.Device(), p, depth);
+    lap = I.LastFrame.Lap("render", lap);
     this->LastDeviceSeconds = pass->LastSeconds();
     if (!tiled)
     {
@@ -490,6 +497,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   {
     vs::WindowCompositor::DrawScaled(ren, vp, display, int(w), int(h));
   }
+  I.LastFrame.Lap("display", lap);
   (void)vol;
 }
 

@@ -193,6 +193,7 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume* vol)
 {
   Internals& I = *this->Impl;
+  I.LastFrame.Clear();
   vtkImageData* input = vtkImageData::SafeDownCast(this->GetInput());
   I.RenderStamp = vs::NewestModification({ this, input, vol,
     this->GetNumberOfInputConnections(1) > 0 ? this->GetInputAlgorithm(1, 0) : nullptr });
@@ -242,6 +243,8 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
       I.Scene->Update(input, scalars, vol ? vol->GetProperty() : nullptr, vol ? vol->GetMatrix() : nullptr,
         this->DensityScale);
     this->LastUpdateSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - updateStart).count();
+    I.LastFrame.Add("scene", this->LastUpdateSeconds);
+    I.LastFrame.Append("scene.", I.Scene->LastPhases());
     if (changes.Data)
     {
       ++this->VolumeUploadCount;
@@ -330,6 +333,23 @@ static_assert(vtkVisibilitySweepVolumeMapper::PowerHeuristic == int(vs::shared::
     vtkVisibilitySweepVolumeMapper::PhaseSamplingOnly == int(vs::shared::VS_MIS_PHASE_ONLY) &&
     vtkVisibilitySweepVolumeMapper::BalanceHeuristic == int(vs::shared::VS_MIS_BALANCE),
   "the mapper's MIS modes are the kernel's");
+
+int vtkVisibilitySweepVolumeMapper::GetNumberOfLastFramePhases()
+{
+  return int(this->Impl->LastFrame.Phases().size());
+}
+
+const char* vtkVisibilitySweepVolumeMapper::GetLastFramePhaseName(int i)
+{
+  const auto& phases = this->Impl->LastFrame.Phases();
+  return i >= 0 && size_t(i) < phases.size() ? phases[size_t(i)].first.c_str() : nullptr;
+}
+
+double vtkVisibilitySweepVolumeMapper::GetLastFramePhaseSeconds(int i)
+{
+  const auto& phases = this->Impl->LastFrame.Phases();
+  return i >= 0 && size_t(i) < phases.size() ? phases[size_t(i)].second : 0.0;
+}
 
 const char* vtkVisibilitySweepVolumeMapper::GetSamplingStrategyName(int strategy)
 {

@@ -626,6 +626,20 @@ public:
   vtkGetMacro(LastMajorantSeconds, double);
 
   ///@{
+  /** Where the last Render()'s host wall-clock time went, phase by phase in the order they ran (a
+   *  first frame's fixed cost, issue 39): "scene" (bringing the volume and transfer function to the
+   *  device; when it did work, its parts follow as "scene.convert", "scene.upload", "scene.ranges",
+   *  "scene.table", "scene.majorants"), then in the Monte Carlo mode "environment", "grid" (the
+   *  visibility grid's update), "frame" (the frame's parameters and depth), "pipeline" (waiting for
+   *  the render pipeline made on another thread), "render" (the render pass: its pipeline, the
+   *  dispatch and the wait for it) and "display" (the mean, tone mapping, the window's image).
+   *  The parts ("scene.*") are inside "scene": sum only the names without a dot. */
+  int GetNumberOfLastFramePhases();
+  const char* GetLastFramePhaseName(int i);
+  double GetLastFramePhaseSeconds(int i);
+  ///@}
+
+  ///@{
   /** Benchmarks: render Monte Carlo frames with an instrumented kernel that counts its reads
    *  (same samples, slower; r8 visibility grids only; 32-bit counters, so count frames of a
    *  few samples per pixel). LastLookupCounts = (trilinear volume samples, majorant-brick

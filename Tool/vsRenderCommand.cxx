@@ -148,6 +148,15 @@ int Run(const RenderOptions& o)
   stats["setup_seconds"] = setupSeconds;       // reading the volume and the environment
   stats["render_seconds"] = renderSeconds;     // the progressive loop, first frame's sweeps included
   stats["first_frame_seconds"] = firstFrameSeconds;
+  // Where the first frame's host time went (the mapper's GetLastFramePhaseName; "scene.*" are parts
+  // of "scene"), and the share of the loop's time the render passes took on the device.
+  nlohmann::json phases = nlohmann::json::object();
+  for (const auto& [name, seconds] : loop.FirstFramePhases)
+  {
+    phases[name] = seconds;
+  }
+  stats["first_frame_phases"] = phases;
+  stats["render_device_share"] = renderSeconds > 0.0 ? deviceSeconds / renderSeconds : 0.0;
   // The product of visibility and light is made once per grid state (the direction table, whose
   // builds are part of "render": direction_table_seconds below) or per scatter event inside the
   // render kernel (trilinear cells); bench overhead separates the variants per strategy.
@@ -322,6 +331,10 @@ ProgressiveResult RenderProgressively(
     if (r.Frames == 1)
     {
       r.FirstFrameSeconds = frameSeconds;
+      for (int i = 0; i < mapper->GetNumberOfLastFramePhases(); ++i)
+      {
+        r.FirstFramePhases.emplace_back(mapper->GetLastFramePhaseName(i), mapper->GetLastFramePhaseSeconds(i));
+      }
       r.UpdateSeconds = mapper->GetLastUpdateSeconds();
       r.DirectionsUpdated = mapper->GetDirectionsUpdatedLastFrame();
     }

@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CLI
@@ -60,6 +61,8 @@ struct ProgressiveResult
   int DirectionsUpdated = 0;    // directions swept by the first frame
   double DeviceSeconds = 0.0;   // render passes on the device
   double SweepSeconds = 0.0;    // sweeps on the device
+  // The first frame's host time by phase (the mapper's GetLastFramePhaseName), in the order they ran.
+  std::vector<std::pair<std::string, double>> FirstFramePhases;
 };
 
 /** The Vulkan device the renders run on (name, type, driver, Vulkan version), for --json. */

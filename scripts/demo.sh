@@ -7,9 +7,12 @@ build="${VISSWEEP_BUILD_DIR:-$root/build}"
 ms() { echo $(( $(date +%s%N) / 1000000 )); }
 secs() { printf "%d.%01d" $(( $1 / 1000 )) $(( ($1 % 1000) / 100 )); }
 t0=$(ms)
-"$root/scripts/setup-debian.sh"
+# The demo installs and builds only what it needs (issue 39, item 2): no fuzzing toolchain or
+# validation layers (setup-debian.sh --demo), no tests, benchmarks or tool (the vissweep_demo target:
+# the libraries and the Python package). scripts/test.sh adds the rest to the same build/.
+"$root/scripts/setup-debian.sh" --demo
 t1=$(ms)
-"$root/scripts/build.sh"
+"$root/scripts/build.sh" vissweep_demo
 t2=$(ms)
 mkdir -p "$build/demo"
 export LP_NUM_THREADS="${LP_NUM_THREADS:-$(nproc)}"

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs VisSweep's build and test dependencies from Debian 12 packages.
+# scripts/setup-debian.sh [--demo]: with --demo only what the demo needs (below).
 # Idempotent: runs `apt-get update` and `apt-get install` only when a package is missing.
 set -euo pipefail
 
@@ -14,6 +15,21 @@ PACKAGES=(
   clang libclang-rt-14-dev
   mricron-data
 )
+# `--demo` (scripts/demo.sh): what configuring, building and running the demo needs. Left out:
+# clang and its runtimes (the fuzz targets, scripts/fuzz.sh), the validation layers
+# (scripts/validation.sh), matplotlib (the benchmarks' plots) and vulkan-tools: about 40 MB of
+# downloads and 200 MB installed (apt-cache show). scripts/test.sh installs them all.
+DEMO_LEAVES_OUT=(clang libclang-rt-14-dev vulkan-validationlayers python3-matplotlib vulkan-tools)
+if [ "${1:-}" = "--demo" ]; then
+  kept=()
+  for p in "${PACKAGES[@]}"; do
+    case " ${DEMO_LEAVES_OUT[*]} " in
+      *" $p "*) ;;
+      *) kept+=("$p") ;;
+    esac
+  done
+  PACKAGES=("${kept[@]}")
+fi
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -2,6 +2,7 @@
 #include "vsContext.h"
 #include "vsError.h"
 #include "vsImage.h"
+#include "vsParallelSlabs.h"
 #include "vsSerial.h"
 
 #include <algorithm>
@@ -23,30 +24,64 @@ DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const float* scalar
   CheckFits(*context, dims);
   this->Image_ = std::make_unique<Image3D>(context, dims[0], dims[1], dims[2], vk::Format::eR32Sfloat, "volume");
   const uint64_t slice = uint64_t(dims[0]) * dims[1];
-  std::vector<float> staging(slice);
-  float lo = std::numeric_limits<float>::max(), hi = -std::numeric_limits<float>::max();
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  bool integral = true;
-  for (uint32_t z = 0; z < dims[2]; ++z)
+  // Slabs of slices on the host's threads (vsParallelSlabs.h), each checking, staging and uploading its
+  // own slices; the range, the integer test and the count combine over the slabs.
+  struct Part
   {
-    const float* src = scalars + slice * z;
-    for (uint64_t i = 0; i < slice; ++i)
+    float Lo = std::numeric_limits<float>::max(), Hi = -std::numeric_limits<float>::max();
+    bool Integral = true;
+    uint64_t NonFinite = 0;
+  };
+  std::vector<Part> parts(SlabCount(dims[2]));
+  ForSlabs(dims[2], [&](unsigned p, uint64_t z0, uint64_t z1) {
+    Part& part = parts[p];
+    std::vector<float> staging(slice);
+    for (uint64_t z = z0; z < z1; ++z)
     {
-      float v = src[i];
-      if (std::isfinite(v))
+      const float* src = scalars + slice * z;
+      float lo = part.Lo, hi = part.Hi;
+      bool integral = part.Integral;
+      uint64_t nonFinite = 0;
+      for (uint64_t i = 0; i < slice; ++i)
       {
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-        integral = integral && v == std::trunc(v);
-        staging[i] = v;
+        float v = src[i];
+        if (std::isfinite(v))
+        {
+          lo = std::min(lo, v);
+          hi = std::max(hi, v);
+          integral = integral && v == std::trunc(v);
+        }
+        else
+        {
+          ++nonFinite;
+        }
       }
-      else
+      part.Lo = lo;
+      part.Hi = hi;
+      part.Integral = integral;
+      part.NonFinite += nonFinite;
+      // A slice of finite voxels goes up as it is; non-finite ones become NaN in a copy.
+      const float* upload = src;
+      if (nonFinite)
       {
-        staging[i] = nan;
-        ++this->NonFinite_;
+        for (uint64_t i = 0; i < slice; ++i)
+        {
+          staging[i] = std::isfinite(src[i]) ? src[i] : nan;
+        }
+        upload = staging.data();
       }
+      this->Image_->UploadSlices(upload, uint32_t(z), 1);
     }
-    this->Image_->UploadSlices(staging.data(), z, 1);
+  });
+  float lo = std::numeric_limits<float>::max(), hi = -std::numeric_limits<float>::max();
+  bool integral = true;
+  for (const Part& part : parts)
+  {
+    lo = std::min(lo, part.Lo);
+    hi = std::max(hi, part.Hi);
+    integral = integral && part.Integral;
+    this->NonFinite_ += part.NonFinite;
   }
   if (lo <= hi)
   {
@@ -76,28 +111,33 @@ void DeviceVolume::MakeQuads(const std::shared_ptr<Context>& context, const floa
   this->Quads_ = std::make_unique<Image3D>(context, dims[0], dims[1], dims[2], vk::Format::eR32Uint, "volume quads");
   this->QuadOffset_ = offset;
   const uint64_t slice = uint64_t(dims[0]) * dims[1];
-  std::vector<uint8_t> codes(slice);
-  std::vector<uint32_t> quads(slice);
-  for (uint32_t z = 0; z < dims[2]; ++z)
-  {
-    const float* src = scalars + slice * z;
-    for (uint64_t i = 0; i < slice; ++i)
+  ForSlabs(dims[2], [&](unsigned, uint64_t z0, uint64_t z1) {
+    std::vector<uint8_t> codes(slice);
+    std::vector<uint32_t> quads(slice);
+    for (uint64_t z = z0; z < z1; ++z)
     {
-      codes[i] = uint8_t(src[i] - offset);
-    }
-    for (uint32_t y = 0; y < dims[1]; ++y)
-    {
-      const uint8_t* row = codes.data() + uint64_t(y) * dims[0];
-      const uint8_t* next = codes.data() + uint64_t(std::min(y + 1, dims[1] - 1)) * dims[0];
-      uint32_t* out = quads.data() + uint64_t(y) * dims[0];
-      for (uint32_t x = 0; x < dims[0]; ++x)
+      const float* src = scalars + slice * z;
+      for (uint64_t i = 0; i < slice; ++i)
       {
-        const uint32_t x1 = std::min(x + 1, dims[0] - 1);
-        out[x] = uint32_t(row[x]) | uint32_t(row[x1]) << 8 | uint32_t(next[x]) << 16 | uint32_t(next[x1]) << 24;
+        codes[i] = uint8_t(src[i] - offset);
       }
+      for (uint32_t y = 0; y < dims[1]; ++y)
+      {
+        const uint8_t* row = codes.data() + uint64_t(y) * dims[0];
+        const uint8_t* next = codes.data() + uint64_t(std::min(y + 1, dims[1] - 1)) * dims[0];
+        uint32_t* out = quads.data() + uint64_t(y) * dims[0];
+        const uint32_t last = dims[0] - 1;
+        for (uint32_t x = 0; x < last; ++x)
+        {
+          out[x] = uint32_t(row[x]) | uint32_t(row[x + 1]) << 8 | uint32_t(next[x]) << 16 | uint32_t(next[x + 1]) << 24;
+        }
+        // The last column's right neighbour is itself (clamped).
+        out[last] = uint32_t(row[last]) | uint32_t(row[last]) << 8 | uint32_t(next[last]) << 16 |
+          uint32_t(next[last]) << 24;
+      }
+      this->Quads_->UploadSlices(quads.data(), uint32_t(z), 1);
     }
-    this->Quads_->UploadSlices(quads.data(), z, 1);
-  }
+  });
 }
 
 DeviceVolume::~DeviceVolume() = default;

@@ -9,6 +9,7 @@
 #include "vsExtinctionRangeQuery.h"
 #include "vsError.h"
 #include "vsImage.h"
+#include "vsParallelSlabs.h"
 #include "vsPipeline.h"
 #include "vsTransferFunctionTable.h"
 
@@ -55,67 +56,75 @@ std::vector<float> HostRanges(const float* v, std::array<uint32_t, 3> dims, std:
   const size_t bx = bricks[0], by = bricks[1], bz = bricks[2];
   auto lo = [&](size_t b) { return b * B; };
   auto hi = [&](size_t b, size_t n) { return std::min<size_t>(b * B + B, n - 1); };
+  // Each pass in slabs on the host's threads (vsParallelSlabs.h): every output element is made by one
+  // slab from inputs the passes before finished, so the result does not depend on the split.
   std::vector<Span> rows(bx * ny * nz); // (brick x, y, z)
-  for (size_t z = 0; z < nz; ++z)
-  {
-    for (size_t y = 0; y < ny; ++y)
+  ForSlabs(nz, [&](unsigned, uint64_t z0, uint64_t z1) {
+    for (size_t z = z0; z < z1; ++z)
     {
-      const float* row = v + (z * ny + y) * nx;
-      for (size_t b = 0; b < bx; ++b)
+      for (size_t y = 0; y < ny; ++y)
       {
-        Span s;
-        for (size_t x = lo(b); x <= hi(b, nx); ++x)
+        const float* row = v + (z * ny + y) * nx;
+        for (size_t b = 0; b < bx; ++b)
         {
-          const float f = row[x];
-          if (!std::isfinite(f)) // stored as NaN on the device: empty space
+          Span s;
+          for (size_t x = lo(b); x <= hi(b, nx); ++x)
           {
-            s.Gap = true;
+            const float f = row[x];
+            if (!std::isfinite(f)) // stored as NaN on the device: empty space
+            {
+              s.Gap = true;
+            }
+            else
+            {
+              s.Min = std::min(s.Min, f);
+              s.Max = std::max(s.Max, f);
+            }
           }
-          else
-          {
-            s.Min = std::min(s.Min, f);
-            s.Max = std::max(s.Max, f);
-          }
+          rows[(z * ny + y) * bx + b] = s;
         }
-        rows[(z * ny + y) * bx + b] = s;
       }
     }
-  }
+  });
   std::vector<Span> planes(bx * by * nz); // (brick x, brick y, z)
-  for (size_t z = 0; z < nz; ++z)
-  {
-    for (size_t b = 0; b < by; ++b)
+  ForSlabs(nz, [&](unsigned, uint64_t z0, uint64_t z1) {
+    for (size_t z = z0; z < z1; ++z)
     {
-      for (size_t y = lo(b); y <= hi(b, ny); ++y)
+      for (size_t b = 0; b < by; ++b)
+      {
+        for (size_t y = lo(b); y <= hi(b, ny); ++y)
+        {
+          for (size_t x = 0; x < bx; ++x)
+          {
+            planes[(z * by + b) * bx + x].Add(rows[(z * ny + y) * bx + x]);
+          }
+        }
+      }
+    }
+  });
+  std::vector<float> ranges(4 * bx * by * bz);
+  ForSlabs(bz, [&](unsigned, uint64_t b0, uint64_t b1) {
+    for (size_t b = b0; b < b1; ++b)
+    {
+      for (size_t y = 0; y < by; ++y)
       {
         for (size_t x = 0; x < bx; ++x)
         {
-          planes[(z * by + b) * bx + x].Add(rows[(z * ny + y) * bx + x]);
+          Span s;
+          for (size_t z = lo(b); z <= hi(b, nz); ++z)
+          {
+            s.Add(planes[(z * by + y) * bx + x]);
+          }
+          float* r = &ranges[4 * ((b * by + y) * bx + x)];
+          const bool any = s.Min <= s.Max;
+          r[0] = any ? s.Min : 1.0f;
+          r[1] = any ? s.Max : 0.0f;
+          r[2] = s.Gap ? 1.0f : 0.0f;
+          r[3] = 0.0f;
         }
       }
     }
-  }
-  std::vector<float> ranges(4 * bx * by * bz);
-  for (size_t b = 0; b < bz; ++b)
-  {
-    for (size_t y = 0; y < by; ++y)
-    {
-      for (size_t x = 0; x < bx; ++x)
-      {
-        Span s;
-        for (size_t z = lo(b); z <= hi(b, nz); ++z)
-        {
-          s.Add(planes[(z * by + y) * bx + x]);
-        }
-        float* r = &ranges[4 * ((b * by + y) * bx + x)];
-        const bool any = s.Min <= s.Max;
-        r[0] = any ? s.Min : 1.0f;
-        r[1] = any ? s.Max : 0.0f;
-        r[2] = s.Gap ? 1.0f : 0.0f;
-        r[3] = 0.0f;
-      }
-    }
-  }
+  });
   return ranges;
 }
 }

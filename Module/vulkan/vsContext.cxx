@@ -1,6 +1,7 @@
 #include "vsContext.h"
 #include "vsError.h"
 #include "vsPipeline.h"
+#include "vsPipelineCache.h"
 
 #include <algorithm>
 #include <cctype>
@@ -495,11 +496,26 @@ void Context::Initialize(const ContextOptions& options)
   pci.queueFamilyIndex = this->QueueFamily_;
   pci.flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer;
   this->CommandPool_ = this->Device_.createCommandPool(pci);
+  try
+  {
+    this->PipelineCache_ = std::make_unique<PipelineCache>(
+      this->Device_, this->Physical_.getProperties(), PipelineCache::DefaultDirectory());
+  }
+  catch (const vk::SystemError&)
+  {
+    // Without a cache pipelines are compiled as before.
+  }
+}
+
+vk::PipelineCache Context::PipelineCacheHandle() const
+{
+  return this->PipelineCache_ ? this->PipelineCache_->Handle() : vk::PipelineCache();
 }
 
 Context::~Context()
 {
   this->Pipelines_.clear(); // before the device they live on
+  this->PipelineCache_.reset();
   if (this->Device_)
   {
     this->Device_.waitIdle();
@@ -543,6 +559,10 @@ std::shared_ptr<ComputePipeline> Context::Pipeline(
     });
   if (made)
   {
+    if (this->PipelineCache_)
+    {
+      this->PipelineCache_->Save(); // the next process finds it (a failure only costs that compile)
+    }
     ++this->PipelineBuilds_;
     std::lock_guard<std::mutex> lock(this->PipelineMutex_);
     this->TrimPipelines(key);

@@ -23,6 +23,7 @@
 namespace vs
 {
 class ComputePipeline;
+class PipelineCache;
 
 /** What a device is and the limits that matter to VisSweep. */
 struct VISSWEEPCORE_EXPORT DeviceInfo
@@ -134,6 +135,11 @@ public:
   /** Counts messages (called by the debug messenger). */
   void CountValidationMessage();
 
+  /** The driver's pipeline cache every pipeline of this context is created with, kept on disk across
+   *  runs (vsPipelineCache.h; saved after each compile); null when the driver could not make one. */
+  PipelineCache* GetPipelineCache() const { return this->PipelineCache_.get(); }
+  vk::PipelineCache PipelineCacheHandle() const;
+
 private:
   Context() = default;
   void Initialize(const ContextOptions& options);
@@ -165,6 +171,7 @@ private:
   std::atomic<uint64_t> PipelineBuilds_{ 0 };
   mutable std::mutex PipelineMutex_; // guards the map, not the compiles
   std::map<std::string, std::shared_ptr<PipelineSlot>> Pipelines_;
+  std::unique_ptr<PipelineCache> PipelineCache_;
 };
 }
 

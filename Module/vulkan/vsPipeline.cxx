@@ -115,7 +115,7 @@ ComputePipeline::ComputePipeline(std::shared_ptr<Context> context, const uint32_
   spec.pData = specialization.data();
   cpci.stage.pSpecializationInfo = specialization.empty() ? nullptr : &spec;
   cpci.layout = this->Layout_;
-  auto result = device.createComputePipeline(nullptr, cpci);
+  auto result = device.createComputePipeline(context->PipelineCacheHandle(), cpci);
   if (result.result != vk::Result::eSuccess)
   {
     throw VulkanCallError("cannot create compute pipeline '" + name + "': " + vk::to_string(result.result));

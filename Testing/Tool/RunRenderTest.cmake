@@ -129,6 +129,19 @@ if (MODE STREQUAL "good" OR MODE STREQUAL "budget" OR MODE STREQUAL "preview")
     message(FATAL_ERROR "stats: spp ${spp}")
   endif ()
   message(STATUS "spp ${spp}, paths/s ${pps}")
+  # The first frame's phases (issue 39): a Monte Carlo render names where its time went, the scene's
+  # parts inside "scene"; each is a lap of the frame, so none is longer than the frame.
+  if (NOT MODE STREQUAL "preview")
+    string(JSON first GET "${json}" first_frame_seconds)
+    foreach (phase IN ITEMS scene scene.convert scene.upload scene.ranges scene.table scene.majorants environment
+        grid frame pipeline render display)
+      string(JSON seconds ERROR_VARIABLE missing GET "${json}" first_frame_phases ${phase})
+      if (missing OR seconds LESS 0 OR seconds GREATER first)
+        message(FATAL_ERROR "stats: first_frame_phases.${phase} missing, negative or longer than the first frame "
+          "(${seconds} s of ${first} s): ${missing}")
+      endif ()
+    endforeach ()
+  endif ()
   check_no_leftovers()
 elseif (MODE STREQUAL "frames")
   execute_process(
