@@ -1,6 +1,9 @@
 #include "vtkVisSweepOpenVDBReader.h"
 
 #include "vtkImageData.h"
+#include "vtkInformationDoubleVectorKey.h"
+#include "vtkInformationInformationVectorKey.h"
+#include "vtkInformationIntegerVectorKey.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
@@ -8,7 +11,6 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
-#include <initializer_list>
 
 vtkStandardNewMacro(vtkVisSweepOpenVDBReader);
 
@@ -71,22 +73,16 @@ int vtkVisSweepOpenVDBReader::RequestInformation(
   this->Reader->UpdateInformation();
   vtkInformation* readerInfo = this->Reader->GetOutputInformation(0);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  for (vtkInformationKey* key : { static_cast<vtkInformationKey*>(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()),
-         static_cast<vtkInformationKey*>(vtkDataObject::ORIGIN()), static_cast<vtkInformationKey*>(vtkDataObject::SPACING()),
-         static_cast<vtkInformationKey*>(vtkDataObject::DIRECTION()),
-         static_cast<vtkInformationKey*>(vtkStreamingDemandDrivenPipeline::TIME_STEPS()),
-         static_cast<vtkInformationKey*>(vtkStreamingDemandDrivenPipeline::TIME_RANGE()),
-         static_cast<vtkInformationKey*>(vtkDataObject::POINT_DATA_VECTOR()) })
-  {
-    if (readerInfo->Has(key))
-    {
-      outInfo->CopyEntry(readerInfo, key, 1);
-    }
-    else
-    {
-      outInfo->Remove(key);
-    }
-  }
+  // The reader's whole extent, geometry, time steps and scalar type (what it has of them).
+  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  outInfo->CopyEntry(readerInfo, vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
+  outInfo->CopyEntry(readerInfo, vtkDataObject::ORIGIN());
+  outInfo->CopyEntry(readerInfo, vtkDataObject::SPACING());
+  outInfo->CopyEntry(readerInfo, vtkDataObject::DIRECTION());
+  outInfo->CopyEntry(readerInfo, vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  outInfo->CopyEntry(readerInfo, vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  outInfo->CopyEntry(readerInfo, vtkDataObject::POINT_DATA_VECTOR(), 1);
   // Each process keeps the piece it is asked for (RequestData crops the grid read).
   outInfo->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
   return 1;

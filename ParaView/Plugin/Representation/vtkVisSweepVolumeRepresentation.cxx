@@ -8,6 +8,7 @@
 #include "vtkInformationVector.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
+#include "vtkOutlineSource.h"
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 #include "vtkVisibilitySweepVolumeMapper.h"
