@@ -119,6 +119,7 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   // drops it, so GetRadiance() is never an earlier mode's image.
   int RadianceMode = -1;
   uint32_t Frame = 0;
+  RadianceCombiner Combiner; // distributed rendering (SetRadianceCombiner); empty: none
 };
 
 #endif

@@ -447,6 +447,13 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     I.Selector.Record(estimator, spp, I.LastRenderSeconds, uint64_t(w) * h, double(pass->Samples()), pass->SquareSum(),
       meanSquare);
   }
+  // Distributed rendering (SetRadianceCombiner): from here on the mean of every process's samples.
+  // (Auto's selector above measured this process's own.)
+  uint32_t combinedSamples = interactive || tiled ? uint32_t(pass->Samples()) : this->AccumulatedSamplesOf(autoStrategy);
+  if (I.Combiner && !interactive)
+  {
+    combinedSamples = I.Combiner(mean, combinedSamples);
+  }
   if (!interactive && !tiled) // GetRadiance() stays the view's
   {
     if (!I.Radiance)
@@ -461,9 +468,9 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   this->LastPreviewShare = 0.0;
   if (I.HandOver.Active && !interactive && !tiled)
   {
-    const uint32_t n = this->AccumulatedSamplesOf(autoStrategy);
+    const uint32_t n = combinedSamples; // the samples behind `mean` (all processes' when combined)
     double share = 0.0;
-    if (I.HandOver.Width == w && I.HandOver.Height == h && n < uint32_t(this->MaximumSamples))
+    if (I.HandOver.Width == w && I.HandOver.Height == h && this->AccumulatedSamplesOf(autoStrategy) < uint32_t(this->MaximumSamples))
     {
       share = vs::PreviewHandOver::PreviewShare(I.HandOver.Rgba, mean, this->CombinedVariance(autoStrategy), n);
     }

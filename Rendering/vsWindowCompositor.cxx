@@ -8,6 +8,22 @@
 
 namespace vs
 {
+namespace
+{
+int suppressed = 0; // Suppress scopes alive (rendering is single threaded, as VTK's is)
+}
+
+WindowCompositor::Suppress::Suppress(bool on)
+  : On(on)
+{
+  suppressed += on ? 1 : 0;
+}
+
+WindowCompositor::Suppress::~Suppress()
+{
+  suppressed -= this->On ? 1 : 0;
+}
+
 Viewport WindowCompositor::GetViewport(vtkRenderer* ren)
 {
   Viewport vp;
@@ -38,7 +54,7 @@ bool WindowCompositor::Draw(vtkRenderer* ren, const Viewport& vp, const std::vec
 bool WindowCompositor::DrawScaled(
   vtkRenderer* ren, const Viewport& vp, const std::vector<float>& rgba, int width, int height)
 {
-  if (vp.Width <= 0 || vp.Height <= 0)
+  if (vp.Width <= 0 || vp.Height <= 0 || suppressed > 0)
   {
     return false;
   }

@@ -30,6 +30,18 @@ public:
   /** Draws a smaller `rgba` (width x height) stretched over the viewport (interactive frames). */
   static bool DrawScaled(
     vtkRenderer* ren, const Viewport& vp, const std::vector<float>& rgba, int width, int height);
+  /** While one lives, Draw() and DrawScaled() draw nothing (a mapper with DrawImage off renders). */
+  class Suppress
+  {
+  public:
+    explicit Suppress(bool on);
+    ~Suppress();
+    Suppress(const Suppress&) = delete;
+    Suppress& operator=(const Suppress&) = delete;
+
+  private:
+    bool On;
+  };
 };
 }
 

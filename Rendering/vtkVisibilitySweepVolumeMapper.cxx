@@ -186,6 +186,7 @@ void vtkVisibilitySweepVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
   const auto start = std::chrono::steady_clock::now();
+  vs::WindowCompositor::Suppress suppress(!this->DrawImage);
   this->RenderAndCheck(ren, vol);
   this->TimeToDraw = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -610,6 +611,12 @@ const char* vtkVisibilitySweepVolumeMapper::GetRenderModeAsString()
   }
 }
 
+void vtkVisibilitySweepVolumeMapper::SetRadianceCombiner(RadianceCombiner combiner)
+{
+  this->Impl->Combiner = std::move(combiner);
+  this->Modified();
+}
+
 void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -668,6 +675,8 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VolumeUploadCount: " << this->VolumeUploadCount << "\n";
   os << indent << "SelectionRenderCount: " << this->SelectionRenderCount << "\n";
   os << indent << "TileRenderCount: " << this->TileRenderCount << "\n";
+  os << indent << "DrawImage: " << (this->DrawImage ? "On" : "Off") << "\n";
+  os << indent << "RadianceCombiner: " << (this->Impl->Combiner ? "set" : "none") << "\n";
   os << indent << "LastDeviceSeconds: " << this->LastDeviceSeconds << "\n";
   os << indent << "LastMajorantSeconds: " << this->LastMajorantSeconds << "\n";
   os << indent << "GradientOpacity: "

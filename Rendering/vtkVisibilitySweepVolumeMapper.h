@@ -66,6 +66,7 @@
 #include "vtkVolumeMapper.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -677,6 +678,30 @@ public:
    *  not restart, before or after). TileRenderCount: tiles rendered so far. */
   vtkGetMacro(TileRenderCount, int);
   ///@}
+#if !defined(__VTK_WRAP__)
+  ///@{
+  /** Distributed rendering: several processes render the same view of the whole volume, each with
+   *  its own Seed, and show the mean of all their samples (ParaView's pvbatch or pvserver under MPI,
+   *  ParaView/Plugin/Representation). A combiner, when set, is called after each still Monte Carlo
+   *  frame and each tile with this process's mean radiance (RGBA per pixel, as GetRadiance() holds it,
+   *  rows bottom-up) and the samples per pixel behind it; it replaces the mean with the mean of all
+   *  processes' samples (each process's weighted by its samples) and returns their total. The image
+   *  drawn, GetRadiance() and the preview hand-over then use the combined mean; GetAccumulatedSamples()
+   *  and IsConverged() stay this process's own. It is called in every such frame, so a combiner that
+   *  communicates needs every process to render the frame. Not called in interactive frames, nor in
+   *  the other modes (their images are deterministic, or drawn by one process). Default: none. */
+  using RadianceCombiner = std::function<uint32_t(std::vector<float>& meanRgba, uint32_t samples)>;
+  void SetRadianceCombiner(RadianceCombiner combiner);
+  ///@}
+#endif
+  ///@{
+  /** Off: render (and accumulate) as usual but draw nothing of the volume's image into the window:
+   *  the processes of a distributed render other than the one that shows the combined image. A
+   *  skybox added for EnvironmentAsBackground is still drawn: turn that off too. Default on. */
+  vtkSetMacro(DrawImage, bool);
+  vtkGetMacro(DrawImage, bool);
+  vtkBooleanMacro(DrawImage, bool);
+  ///@}
   /** The last error reported with vtkErrorMacro, or "" after a successful render. */
   const char* GetLastError();
 
@@ -762,6 +787,7 @@ protected:
   int VolumeUploadCount = 0;
   int SelectionRenderCount = 0;
   int TileRenderCount = 0;
+  bool DrawImage = true;
 
 private:
   vtkVisibilitySweepVolumeMapper(const vtkVisibilitySweepVolumeMapper&) = delete;

@@ -3,7 +3,7 @@
 # runs its pvbatch test. docs/paraview.md says how it works and why. Run as root on Debian 12.
 #
 #   scripts/paraview-plugin.sh          # build: build-pv/ (VisSweep on ParaView's VTK), build-pv-plugin/
-#   scripts/paraview-plugin.sh --test   # build, then the pvbatch and GUI tests (under xvfb-run)
+#   scripts/paraview-plugin.sh --test   # build, then the pvbatch, GUI and MPI tests (under xvfb-run)
 #
 # The plugin is build-pv-plugin/lib/paraview-5.11/plugins/VisSweep/VisSweep.so: load it with
 # Tools > Manage Plugins, `paraview --plugin-search-paths=<that folder's parent>`, PV_PLUGIN_PATH or
@@ -56,4 +56,6 @@ if [ "${1:-}" = "--test" ]; then
     "$root/ParaView/Testing/run-pvbatch-test.sh" "$root" "$pvbuild" "$pvroot" "$plugin" "$build/test"
   LP_NUM_THREADS="${LP_NUM_THREADS:-1}" xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
     "$root/ParaView/Testing/run-gui-test.sh" "$root" "$plugin" "$build/test-gui"
+  LP_NUM_THREADS="${LP_NUM_THREADS:-1}" xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
+    "$root/ParaView/Testing/run-mpi-test.sh" "$root" "$pvroot" "$plugin" "$build/test-mpi"
 fi

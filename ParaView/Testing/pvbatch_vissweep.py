@@ -7,7 +7,7 @@ i.e. the white sky) with the "VisSweep Volume" representation, renders it at 64 
 samples per pixel and compares the image with the vissweep tool's renders of the same scene
 (seeds 1 and 2): the means must agree within 4 standard errors (estimated from the two tool
 renders' difference), and the pixels as closely as two tool renders agree. Then checks that
-properties reach the mapper (Exposure brightens the image), that a missing environment file
+properties reach the mapper (Exposure brightens the image, single scattering darkens it), that a missing environment file
 is an error, not a crash, after which the volume renders again, and that renders refine
 progressively. Writes "N failure(s)" to OUTDIR/result.txt.
 """
@@ -96,6 +96,21 @@ check(bright.mean() > a.mean() + 5, "Exposure 4 brightens the image (%.1f -> %.1
       % (a.mean(), bright.mean()))
 display.Exposure = 1.0
 
+# The scattering settings reach the mapper: single scattering (one event) loses the light of the
+# longer paths, so the sphere darkens; an anisotropy outside (-1, 1) is a warning naming it (the
+# driver checks stderr) and the mapper's error, then the volume renders again.
+display.MaximumScatteringEvents = 1
+pvs.Render(view)
+pvs.SaveScreenshot(outdir + "/pv-single-scattering.png", view, ImageResolution=[64, 64])
+single = png(outdir + "/pv-single-scattering.png")
+check(single.mean() < a.mean() - 2, "MaximumScatteringEvents 1 darkens the image (%.1f -> %.1f)"
+      % (a.mean(), single.mean()))
+display.MaximumScatteringEvents = 1024
+display.ScatteringAnisotropy = 1.5
+pvs.Render(view)
+print("rendered with ScatteringAnisotropy 1.5", flush=True)
+display.ScatteringAnisotropy = 0.0
+
 # Bad input: a missing environment file is reported (the driver checks the message), no crash.
 display.EnvironmentFileName = outdir + "/missing-sky.exr"
 pvs.Render(view)
@@ -137,16 +152,51 @@ check([c[0] for c in counts] == [20, 24, 28, 28, 28] and [c[1] for c in counts] 
 display.Exposure = 2.5
 display.VisSweepRenderMode = "Preview"
 display.EnvironmentRotation = 30
+display.MaximumScatteringEvents = 8
+display.ScatteringAnisotropy = 0.25
+display.MultipleImportanceSampling = "Balance Heuristic"
 pvs.SaveState(outdir + "/state.pvsm")
 pvs.ResetSession()
 pvs.LoadState(outdir + "/state.pvsm")
 loaded_view = pvs.GetActiveViewOrCreate("RenderView")
 loaded = pvs.GetDisplayProperties(pvs.FindSource("XMLImageDataReader1"), loaded_view)
 values = (loaded.Representation, loaded.Exposure, loaded.VisSweepRenderMode,
-          loaded.EnvironmentRotation, loaded.SamplesPerFrame, loaded.MaximumSamples)
+          loaded.EnvironmentRotation, loaded.SamplesPerFrame, loaded.MaximumSamples,
+          loaded.MaximumScatteringEvents, loaded.ScatteringAnisotropy, loaded.MultipleImportanceSampling)
 print("after LoadState:", values)
-check(values == ("VisSweep Volume", 2.5, "Preview", 30.0, 4, 28),
+check(values == ("VisSweep Volume", 2.5, "Preview", 30.0, 4, 28, 8, 0.25, "Balance Heuristic"),
       "a saved state (.pvsm) loads back with the VisSweep representation and its settings")
+
+# VisSweep's OpenVDB reader: File > Open (OpenDataFile) reads a .vdb file with it, the smoke renders
+# with VisSweep, and a grid the file does not have is an error naming it (the driver checks stderr).
+import os
+smoke_file = os.path.join(os.path.dirname(volume), "..", "..", "Data", "smoke", "smoke_0004.vdb")
+smoke = pvs.OpenDataFile(smoke_file)
+check(smoke is not None and smoke.GetXMLName() == "VisSweepOpenVDBReader",
+      "OpenDataFile reads a .vdb file with VisSweep's reader (%s)" % (smoke and smoke.GetXMLName()))
+if smoke is not None:
+    smoke.UpdatePipeline()
+    points = smoke.GetDataInformation().GetNumberOfPoints()
+    arrays = [smoke.PointData[i].GetName() for i in range(len(smoke.PointData))]
+    print("the smoke: %d points, arrays %s" % (points, arrays))
+    check(points > 1000 and "density" in arrays, "the smoke's density grid is read")
+    smoke_view = pvs.CreateView("RenderView")
+    smoke_view.ViewSize = [32, 32]
+    smoke_view.OrientationAxesVisibility = 0
+    smoke_display = pvs.Show(smoke, smoke_view)
+    smoke_display.Representation = "VisSweep Volume"
+    pvs.ColorBy(smoke_display, ("POINTS", "density"))
+    smoke_display.SamplesPerFrame = 4
+    smoke_display.MaximumSamples = 4
+    smoke_display.EnvironmentVisible = 0
+    smoke_view.ResetCamera()
+    pvs.Render(smoke_view)
+    pvs.SaveScreenshot(outdir + "/smoke.png", smoke_view, ImageResolution=[32, 32])
+    smoke_image = png(outdir + "/smoke.png")
+    check(smoke_image.std() > 2, "the smoke renders (pixel deviation %.1f)" % smoke_image.std())
+    smoke.GridName = "no-such-grid"
+    smoke.UpdatePipeline()
+    print("read a grid the file does not have", flush=True)
 
 print("%d failure(s)" % len(failures))
 # The verdict goes to a file, not the exit status: sys.exit() in a pvbatch script ends pvbatch with

@@ -1,8 +1,19 @@
 #include "vtkVisSweepVolumeRepresentation.h"
 
+#include "vtkCommunicator.h"
 #include "vtkEnvironmentMapReader.h"
+#include "vtkImageAppend.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
+#include "vtkOutlineSource.h"
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
 #include "vtkVisibilitySweepVolumeMapper.h"
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkVisSweepVolumeRepresentation);
 
@@ -28,6 +39,23 @@ vtkVisSweepVolumeRepresentation::vtkVisSweepVolumeRepresentation()
   // this->VolumeMapper wherever it passes ParaView's volume settings on).
   this->VolumeMapper = vtkSmartPointer<vtkVisibilitySweepVolumeMapper>::New();
   this->EnvironmentReader = vtkEnvironmentMapReader::New();
+  // Under MPI (pvbatch, pvserver) every process of the global controller renders the view; a client
+  // has a controller of its own process only.
+  if (vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController())
+  {
+    this->Processes = std::max(1, controller->GetNumberOfProcesses());
+    this->ProcessId = controller->GetLocalProcessId();
+  }
+  if (this->Processes > 1)
+  {
+    vtkVisibilitySweepVolumeMapper* mapper = this->GetVisSweepMapper();
+    mapper->SetRadianceCombiner(
+      [this](std::vector<float>& mean, uint32_t samples) { return this->CombineRadiance(mean, samples); });
+    // The first process draws the mean of all; the others' images would be composited over it.
+    mapper->SetDrawImage(this->ProcessId == 0);
+    mapper->SetEnvironmentVisible(false);
+    this->UpdateDistributedSettings();
+  }
 }
 
 vtkVisSweepVolumeRepresentation::~vtkVisSweepVolumeRepresentation()
@@ -52,6 +80,122 @@ void vtkVisSweepVolumeRepresentation::SetSamplingStrategy(int strategy)
   this->GetVisSweepMapper()->SetSamplingStrategy(strategy);
 }
 
+void vtkVisSweepVolumeRepresentation::UpdateDistributedSettings()
+{
+  vtkVisibilitySweepVolumeMapper* mapper = this->GetVisSweepMapper();
+  if (this->Processes <= 1)
+  {
+    mapper->SetSeed(this->Seed);
+    mapper->SetMaximumSamples(this->MaximumSamples);
+    return;
+  }
+  // Each process its own random numbers (the first the user's seed, so one process renders as
+  // before) and its share of the samples: together MaximumSamples (at least one each).
+  const long long seed = (static_cast<long long>(this->Seed) + 104729LL * this->ProcessId) % VTK_INT_MAX;
+  mapper->SetSeed(static_cast<int>(seed));
+  const int share = this->MaximumSamples / this->Processes + (this->ProcessId < this->MaximumSamples % this->Processes ? 1 : 0);
+  mapper->SetMaximumSamples(std::max(1, share));
+}
+
+uint32_t vtkVisSweepVolumeRepresentation::CombineRadiance(std::vector<float>& mean, uint32_t samples)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (!controller || controller->GetNumberOfProcesses() != this->Processes)
+  {
+    return samples;
+  }
+  // The same image size everywhere (a view's windows are), else each keeps its own.
+  const int size[2] = { static_cast<int>(mean.size()), -static_cast<int>(mean.size()) };
+  int largest[2] = { 0, 0 };
+  controller->AllReduce(size, largest, 2, vtkCommunicator::MAX_OP);
+  if (largest[0] != -largest[1])
+  {
+    vtkErrorMacro(<< "the processes rendered images of different sizes; each shows its own samples");
+    return samples;
+  }
+  // Sum over processes of samples x mean (each mean weighted by the samples behind it), then / total.
+  std::vector<float> weighted(mean.size() + 1);
+  for (size_t i = 0; i < mean.size(); ++i)
+  {
+    weighted[i] = mean[i] * static_cast<float>(samples);
+  }
+  weighted.back() = static_cast<float>(samples);
+  std::vector<float> sum(weighted.size(), 0.0f);
+  controller->AllReduce(weighted.data(), sum.data(), static_cast<vtkIdType>(weighted.size()), vtkCommunicator::SUM_OP);
+  const float total = sum.back();
+  if (total > 0.0f)
+  {
+    for (size_t i = 0; i < mean.size(); ++i)
+    {
+      mean[i] = sum[i] / total;
+    }
+  }
+  this->CombinedSamples = static_cast<int>(total + 0.5f);
+  this->CombinedLocalSamples = this->GetVisSweepMapper()->GetAccumulatedSamples();
+  return static_cast<uint32_t>(this->CombinedSamples);
+}
+
+int vtkVisSweepVolumeRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestData(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (this->Processes <= 1 || !controller || inputVector[0]->GetNumberOfInformationObjects() != 1)
+  {
+    return 1;
+  }
+  // Every process renders the whole volume: gather the pieces (ghost cells already cropped by the
+  // superclass) from all processes and put each at its extent. Every process runs this (ParaView
+  // updates a representation's pipeline on all of them).
+  vtkImageData* piece = vtkImageData::SafeDownCast(this->Cache);
+  vtkNew<vtkImageData> empty;
+  std::vector<vtkSmartPointer<vtkDataObject>> pieces;
+  controller->AllGather(piece ? piece : empty.GetPointer(), pieces);
+  vtkNew<vtkImageAppend> append;
+  append->PreserveExtentsOn();
+  int appended = 0;
+  for (const auto& object : pieces)
+  {
+    vtkImageData* image = vtkImageData::SafeDownCast(object);
+    if (image && image->GetNumberOfPoints() > 0)
+    {
+      append->AddInputData(image);
+      ++appended;
+    }
+  }
+  if (appended == 0 || !piece)
+  {
+    return 1;
+  }
+  append->Update();
+  vtkNew<vtkImageData> whole;
+  whole->ShallowCopy(append->GetOutput());
+  whole->SetDirectionMatrix(piece->GetDirectionMatrix());
+  this->Cache = whole.GetPointer();
+  this->VolumeMapper->SetInputData(whole.GetPointer());
+  this->OutlineSource->SetBounds(whole->GetBounds());
+  this->OutlineSource->GetBounds(this->DataBounds);
+  this->OutlineSource->Update();
+  this->DataSize = whole->GetActualMemorySize();
+  return 1;
+}
+
+void vtkVisSweepVolumeRepresentation::UpdateMapperParameters()
+{
+  this->Superclass::UpdateMapperParameters();
+  if (this->Processes > 1 && this->EnvironmentVisible && !this->WarnedEnvironment)
+  {
+    vtkWarningMacro(<< "EnvironmentVisible: with " << this->Processes
+                    << " processes the environment lights the volume but is not drawn behind it "
+                       "(ParaView's compositing keeps of each process's image only the pixels "
+                       "inside its data's bounds); the background is the view's.");
+    this->WarnedEnvironment = true;
+  }
+}
+
 void vtkVisSweepVolumeRepresentation::SetSamplesPerFrame(int samples)
 {
   WarnOutOfRange(this, "SamplesPerFrame", samples, 1, 1 << 16);
@@ -61,7 +205,8 @@ void vtkVisSweepVolumeRepresentation::SetSamplesPerFrame(int samples)
 void vtkVisSweepVolumeRepresentation::SetMaximumSamples(int samples)
 {
   WarnOutOfRange(this, "MaximumSamples", samples, 1, 1 << 30);
-  this->GetVisSweepMapper()->SetMaximumSamples(samples);
+  this->MaximumSamples = std::min(std::max(samples, 1), 1 << 30);
+  this->UpdateDistributedSettings();
 }
 
 void vtkVisSweepVolumeRepresentation::SetEnvironmentIntensity(double intensity)
@@ -75,7 +220,11 @@ void vtkVisSweepVolumeRepresentation::SetEnvironmentIntensity(double intensity)
 
 void vtkVisSweepVolumeRepresentation::SetEnvironmentVisible(bool visible)
 {
-  this->GetVisSweepMapper()->SetEnvironmentVisible(visible);
+  this->EnvironmentVisible = visible;
+  this->WarnedEnvironment = false;
+  // Distributed, the environment is not drawn (the class documentation says why).
+  this->GetVisSweepMapper()->SetEnvironmentVisible(visible && this->Processes <= 1);
+  this->Modified();
 }
 
 void vtkVisSweepVolumeRepresentation::SetExposure(double exposure)
@@ -95,7 +244,31 @@ void vtkVisSweepVolumeRepresentation::SetToneMapping(bool toneMapping)
 void vtkVisSweepVolumeRepresentation::SetSeed(int seed)
 {
   WarnOutOfRange(this, "Seed", seed, 0, VTK_INT_MAX);
-  this->GetVisSweepMapper()->SetSeed(seed);
+  this->Seed = std::max(seed, 0);
+  this->UpdateDistributedSettings();
+}
+
+void vtkVisSweepVolumeRepresentation::SetMaximumScatteringEvents(int events)
+{
+  // The mapper refuses a value outside its range at render time, naming the setting.
+  WarnOutOfRange(this, "MaximumScatteringEvents", events, 1, 100000);
+  this->GetVisSweepMapper()->SetMaximumScatteringEvents(events);
+}
+
+void vtkVisSweepVolumeRepresentation::SetScatteringAnisotropy(double g)
+{
+  if (!(g > -1.0 && g < 1.0))
+  {
+    vtkWarningMacro(<< "ScatteringAnisotropy " << g
+                    << " is outside (-1, 1): the mapper refuses to render with it.");
+  }
+  this->GetVisSweepMapper()->SetScatteringAnisotropy(g);
+}
+
+void vtkVisSweepVolumeRepresentation::SetMultipleImportanceSampling(int mode)
+{
+  WarnOutOfRange(this, "MultipleImportanceSampling", mode, 0, 3);
+  this->GetVisSweepMapper()->SetMultipleImportanceSampling(mode);
 }
 
 void vtkVisSweepVolumeRepresentation::SetEnvironmentFileName(const char* fileName)
@@ -131,12 +304,21 @@ void vtkVisSweepVolumeRepresentation::SetEnvironmentRotation(double degrees)
 
 int vtkVisSweepVolumeRepresentation::GetAccumulatedSamples()
 {
-  return this->GetVisSweepMapper()->GetAccumulatedSamples();
+  const int local = this->GetVisSweepMapper()->GetAccumulatedSamples();
+  // Distributed: all processes' samples behind the image shown, while it is this one's last frame.
+  return this->CombinedSamples >= 0 && local == this->CombinedLocalSamples ? this->CombinedSamples : local;
 }
 
 bool vtkVisSweepVolumeRepresentation::IsConverged()
 {
-  return this->GetVisSweepMapper()->IsConverged();
+  const bool local = this->GetVisSweepMapper()->IsConverged();
+  if (this->CombinedSamples >= 0 && this->GetVisSweepMapper()->GetAccumulatedSamples() == this->CombinedLocalSamples &&
+    this->GetVisSweepMapper()->GetRenderMode() == vtkVisibilitySweepVolumeMapper::MonteCarlo)
+  {
+    // Every process's share reached (the first's is the largest, but Auto's probes may lag another).
+    return local && this->CombinedSamples >= this->MaximumSamples;
+  }
+  return local;
 }
 
 const char* vtkVisSweepVolumeRepresentation::GetLastError()
@@ -150,6 +332,8 @@ void vtkVisSweepVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EnvironmentFileName: "
      << (this->EnvironmentFileName.empty() ? "(none: white sky)" : this->EnvironmentFileName) << "\n";
   os << indent << "EnvironmentRotation: " << this->EnvironmentRotation << "\n";
+  os << indent << "Processes: " << this->Processes << " (this one " << this->ProcessId << ")\n";
+  os << indent << "Seed: " << this->Seed << ", MaximumSamples: " << this->MaximumSamples << "\n";
   os << indent << "Mapper:\n";
   this->VolumeMapper->PrintSelf(os, indent.GetNextIndent());
 }

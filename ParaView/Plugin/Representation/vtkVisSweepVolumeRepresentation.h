@@ -12,6 +12,17 @@
  * emission (docs/reference.md). Each still render adds SamplesPerFrame samples per pixel until
  * MaximumSamples; GetAccumulatedSamples() and IsConverged() say how far it got.
  *
+ * Distributed (pvbatch or pvserver under MPI, N > 1 processes): light transport needs the whole
+ * volume at every scattering event, so every process gathers the pieces ParaView gives the others
+ * (RequestData) and renders the whole volume with a seed of its own and its share of
+ * MaximumSamples (MaximumSamples / N, the first MaximumSamples % N one more); after each still
+ * frame the processes average their mean radiance (weighted by their samples) and only the first
+ * draws it, so ParaView's compositing passes it through. N processes thus add N x SamplesPerFrame
+ * samples per pixel per frame, and AccumulatedSamples and Converged report all of them. The
+ * environment lights the volume but is not drawn behind it (EnvironmentVisible is taken as off,
+ * with a warning): ParaView's compositing keeps of each process's image only the pixels inside its
+ * data's projected bounds. docs/paraview.md says more.
+ *
  * Bad settings are reported in ParaView's output window and crash nothing: an environment file
  * that cannot be read is an error of the reader and the mapper (the volume is not drawn until the
  * name is fixed or cleared), a value the device cannot hold (NaN, infinite) an error of the mapper
@@ -24,7 +35,9 @@
 #include "vissweepParaViewRepresentationModule.h"
 #include "vtkImageVolumeRepresentation.h"
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 class vtkEnvironmentMapReader;
 class vtkVisibilitySweepVolumeMapper;
@@ -48,6 +61,9 @@ public:
   void SetExposure(double exposure);
   void SetToneMapping(bool toneMapping);
   void SetSeed(int seed);
+  void SetMaximumScatteringEvents(int events);
+  void SetScatteringAnisotropy(double g);
+  void SetMultipleImportanceSampling(int mode);
   ///@}
 
   ///@{
@@ -58,7 +74,8 @@ public:
   void SetEnvironmentRotation(double degrees);
   ///@}
 
-  /** Samples per pixel accumulated in the view rendered last, and whether they reached MaximumSamples. */
+  /** Samples per pixel accumulated in the view rendered last (all processes' when distributed),
+   *  and whether they reached MaximumSamples. */
   int GetAccumulatedSamples();
   bool IsConverged();
   /** The mapper's last error ("" after a successful render). */
@@ -69,14 +86,35 @@ public:
   vtkVisibilitySweepVolumeMapper* GetVisSweepMapper();
 #endif
 
+  /** The processes that render the view together (1 unless under MPI). */
+  int GetNumberOfRenderingProcesses() { return this->Processes; }
+
 protected:
   vtkVisSweepVolumeRepresentation();
   ~vtkVisSweepVolumeRepresentation() override;
+
+  /** The superclass's piece, then, when distributed, the whole volume gathered from every process. */
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /** The superclass's settings, then EnvironmentVisible off when distributed. */
+  void UpdateMapperParameters() override;
 
 private:
   vtkVisSweepVolumeRepresentation(const vtkVisSweepVolumeRepresentation&) = delete;
   void operator=(const vtkVisSweepVolumeRepresentation&) = delete;
 
+  /** The mapper's Seed and MaximumSamples for this process's share. */
+  void UpdateDistributedSettings();
+  /** Distributed: all processes' mean radiance and samples (the mapper's RadianceCombiner). */
+  uint32_t CombineRadiance(std::vector<float>& mean, uint32_t samples);
+
+  int Processes = 1;   // rendering together (the global controller's, 1 on a client)
+  int ProcessId = 0;
+  int Seed = 1;        // as the user set them; the mapper holds this process's share
+  int MaximumSamples = 4096;
+  int CombinedSamples = -1;       // all processes' samples behind the last combined image (-1: none)
+  int CombinedLocalSamples = -1;  // this process's then
+  bool EnvironmentVisible = true;
+  bool WarnedEnvironment = false;
   std::string EnvironmentFileName;
   double EnvironmentRotation = 0.0;
   vtkEnvironmentMapReader* EnvironmentReader = nullptr;

@@ -1,0 +1,140 @@
+"""The VisSweep plugin under MPI (run by run-mpi-test.sh, which says how).
+
+  pvbatch pvbatch_mpi.py PLUGIN VOLUME OUTDIR single
+  mpiexec -n 2 pvbatch --mpi pvbatch_mpi.py PLUGIN VOLUME OUTDIR mpi
+
+Shows VOLUME (Examples/Scenes/tiny.json's sphere, its transfer functions and camera) with the
+"VisSweep Volume" representation under the white sky at 64 x 64.
+
+single: one process renders 16 samples per pixel with seeds 1 and 2 (EnvironmentVisible off, as
+  it is taken under MPI) into OUTDIR/single-seed1.png and single-seed2.png, then times frames.
+mpi: two processes (each given half of the volume by ParaView) render with SamplesPerFrame 8 and
+  MaximumSamples 16: one frame must bring all 16 samples per pixel (8 per process, averaged), and
+  the image must be the single process's within its noise (the mean within 4 standard errors
+  estimated from the two seeds, the pixels as close as the two seeds' are). Then times frames.
+Writes "N failure(s)" to OUTDIR/result-MODE.txt and the frame times to OUTDIR/timing-MODE.txt.
+"""
+import sys
+import time
+
+import paraview.simple as pvs
+from paraview.modules.vtkRemotingCore import vtkProcessModule
+from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.util.numpy_support import vtk_to_numpy
+import numpy as np
+
+plugin, volume, outdir, mode = sys.argv[1:5]
+failures = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what, flush=True)
+    if not ok:
+        failures.append(what)
+
+
+def png(path):
+    r = vtkPNGReader()
+    r.SetFileName(path)
+    r.Update()
+    img = r.GetOutput()
+    w, h, _ = img.GetDimensions()
+    a = vtk_to_numpy(img.GetPointData().GetScalars()).astype(np.float64)
+    return a.reshape(h, w, -1)[:, :, :3]
+
+
+pvs.LoadPlugin(plugin, remote=False, ns=globals())
+pvs._DisableFirstRenderCameraReset()
+processes = vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+print("%s: %d process(es)" % (mode, processes), flush=True)
+
+reader = pvs.XMLImageDataReader(FileName=[volume])
+view = pvs.CreateView("RenderView")
+view.ViewSize = [64, 64]
+view.OrientationAxesVisibility = 0
+display = pvs.Show(reader, view)
+display.Representation = "VisSweep Volume"
+pvs.ColorBy(display, ("POINTS", "density"))
+lut = pvs.GetColorTransferFunction("density")
+lut.AutomaticRescaleRangeMode = "Never"
+lut.ColorSpace = "RGB"
+lut.Discretize = 0
+lut.RGBPoints = [0, 0.9, 0.9, 0.9, 255, 0.8, 0.5, 0.3]
+otf = pvs.GetOpacityTransferFunction("density")
+otf.Points = [0, 0.0, 0.5, 0.0, 20, 0.0, 0.5, 0.0, 120, 0.5, 0.5, 0.0, 255, 0.9, 0.5, 0.0]
+display.ScalarOpacityUnitDistance = 1.0
+display.VisSweepRenderMode = "Monte Carlo"
+display.SamplingStrategy = "Two-Step"
+display.Seed = 1
+view.CameraPosition = [7.5, -40, 12]
+view.CameraFocalPoint = [7.5, 7.5, 7.5]
+view.CameraViewUp = [0, 0, 1]
+view.CameraViewAngle = 30
+view.DepthPeelingForVolumes = 0
+
+
+def samples():
+    display.UpdatePropertyInformation()
+    return display.GetPropertyValue("AccumulatedSamples"), display.GetPropertyValue("Converged")
+
+
+def timing(frames=3):
+    """Seconds per frame of SamplesPerFrame 16 at 128 x 128 (after one frame of warm-up)."""
+    view.ViewSize = [128, 128]
+    display.SamplesPerFrame = 16
+    display.MaximumSamples = 1 << 20
+    pvs.Render(view)
+    start = time.perf_counter()
+    for _ in range(frames):
+        pvs.Render(view)
+    seconds = (time.perf_counter() - start) / frames
+    count = samples()[0]
+    with open("%s/timing-%s.txt" % (outdir, mode), "w") as f:
+        f.write("%d %.4f %d\n" % (processes, seconds, count))
+    print("%s: %.3f s per frame of 16 spp per process at 128 x 128 (%d processes, %d spp after %d frames)"
+          % (mode, seconds, processes, count, frames + 1), flush=True)
+
+
+if mode == "single":
+    check(processes == 1, "one process")
+    display.EnvironmentVisible = 0
+    display.SamplesPerFrame = 16
+    display.MaximumSamples = 16
+    for seed in (1, 2):
+        display.Seed = seed
+        pvs.Render(view)
+        pvs.SaveScreenshot("%s/single-seed%d.png" % (outdir, seed), view, ImageResolution=[64, 64])
+        check(samples() == (16, 1), "seed %d: 16 samples per pixel in one frame, converged" % seed)
+    display.Seed = 1
+    timing()
+else:
+    check(processes == 2, "two processes (mpiexec -n 2 pvbatch --mpi)")
+    # EnvironmentVisible stays on (the default): under MPI it is taken as off, with a warning
+    # (the driver checks stderr), and the image must be the single process's with it off.
+    display.SamplesPerFrame = 8
+    display.MaximumSamples = 16
+    pvs.Render(view)
+    pvs.SaveScreenshot(outdir + "/mpi.png", view, ImageResolution=[64, 64])
+    counts = samples()
+    print("after one frame of 8 samples per process: accumulated, converged =", counts, flush=True)
+    check(counts == (16, 1), "one frame of 8 samples per pixel per process gives 16, converged")
+    a, b1, b2 = png(outdir + "/mpi.png"), png(outdir + "/single-seed1.png"), png(outdir + "/single-seed2.png")
+    noise = (b1 - b2).mean(axis=2)
+    stderr = noise.std() / np.sqrt(noise.size)
+    diff = a.mean() - b1.mean()
+    print("means: 2 processes %.3f, 1 process %.3f (seed 2: %.3f); standard error %.3f"
+          % (a.mean(), b1.mean(), b2.mean(), stderr), flush=True)
+    check(abs(diff) <= 4 * stderr + 0.5,
+          "the 2-process image's mean is the 1-process one's within 4 standard errors (%.3f)" % diff)
+    pix, pix_noise = np.abs(a - b1).mean(), np.abs(b1 - b2).mean()
+    print("mean |pixel difference|: 2 processes - 1 process %.3f, seed 1 - seed 2 %.3f" % (pix, pix_noise))
+    check(pix <= 1.5 * pix_noise + 1.0, "its pixels agree with the 1-process image's as two seeds' do")
+    check(a.std() > 5, "the image is not flat (the volume is drawn)")
+    pvs.Render(view)
+    check(samples() == (16, 1), "a further render adds nothing (converged)")
+    timing()
+
+print("%d failure(s)" % len(failures))
+# The verdict goes to a file (pvbatch_vissweep.py says why).
+with open("%s/result-%s.txt" % (outdir, mode), "w") as f:
+    f.write("%d failure(s)\n" % len(failures))
