@@ -137,7 +137,8 @@ def main():
         print(f"\nrendered {args.size}x{args.size} in {seconds:.2f} s")
     else:
         share = mapper.GetLastPreviewShare()
-        shown = f", shown blended with the preview (its share {share:.2f})" if share > 0 else ""
+        shown = (f", shown blended with the preview (its share {share:.2f})" if share > 0
+                 else (", the estimate alone (past the hand-over from the preview)" if args.preview_first else ""))
         print(f"\nrendered {args.size}x{args.size}: {mapper.GetAccumulatedSamples()} spp "
               f"({mapper.GetEffectiveStrategyAsString()}) in {seconds:.2f} s{shown}")
     grab = vtk.vtkWindowToImageFilter()
