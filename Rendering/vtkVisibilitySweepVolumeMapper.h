@@ -755,7 +755,7 @@ protected:
   double InteractiveUpdateRate = 1.0;
   int InteractiveSubsampling = 4;
   bool InteractivePreview = true;
-  double PreviewHandOverSeconds = 5.0;
+  double PreviewHandOverSeconds = 3.0;
   double LastPreviewShare = 0.0;
   int AccumulatedSamples = 0;
   bool LastRenderComplete = false; // the last render was emission-absorption or a projection

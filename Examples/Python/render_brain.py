@@ -46,7 +46,8 @@ def main():
                     choices=["Uniform", "Environment", "Visibility", "Combined", "TwoStep", "Auto"])
     ap.add_argument("--rotation", type=float, default=200.0, help="environment rotation about the up axis, degrees")
     ap.add_argument("--seconds", type=float, default=0.0,
-                    help="stop refining after this many seconds even below --spp (0: no limit)")
+                    help="stop refining before a frame that would end after this many seconds, even below "
+                         "--spp (0: no limit)")
     ap.add_argument("--preview-first", action="store_true",
                     help="start from the noise-free preview and hand over to the estimate as it converges "
                          "(the image shown blends the two by their measured errors; see README)")
@@ -120,8 +121,11 @@ def main():
         print(f"preview in {time.perf_counter() - t:.2f} s")
         win.SetDesiredUpdateRate(0.0001)
     first = True
+    frame_seconds = 0.0
     while True:
+        frame_start = time.perf_counter()
         win.Render()
+        frame_seconds = time.perf_counter() - frame_start
         if mapper.GetLastError():
             raise SystemExit(f"render failed: {mapper.GetLastError()}")
         if first and not args.emission_absorption:
@@ -129,7 +133,8 @@ def main():
             first = False
         if args.emission_absorption or mapper.IsConverged():
             break
-        if args.seconds > 0 and time.perf_counter() - t >= args.seconds:
+        # Within the budget: no frame that would end after it (a frame of 8 samples takes seconds).
+        if args.seconds > 0 and time.perf_counter() - t + frame_seconds > args.seconds:
             break
         print(f"\r{mapper.GetAccumulatedSamples()}/{args.spp} samples per pixel", end="", flush=True)
     seconds = time.perf_counter() - t

@@ -36,7 +36,12 @@ struct VsLightScatterParams
   uint cellsX;
   uint cellsY;
   uint cellsZ;
-  uint unused;
+  uint stride;  /* the directions this order marches: texels (stride i + offsetX, stride j + offsetY) of the
+                   D x D grid, each standing for stride^2 texels (1: all) */
+  uint offsetX;
+  uint offsetY;
+  uint unused0;
+  uint unused1;
 };
 
 VS_NAMESPACE_END
@@ -47,7 +52,7 @@ static_assert(sizeof(vs::shared::VsLightVolumeParams) == 12, "VsLightVolumeParam
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsX) == 0, "VsLightVolumeParams layout");
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsY) == 4, "VsLightVolumeParams layout");
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsZ) == 8, "VsLightVolumeParams layout");
-static_assert(sizeof(vs::shared::VsLightScatterParams) == 16, "VsLightScatterParams: 4 uints");
+static_assert(sizeof(vs::shared::VsLightScatterParams) == 32, "VsLightScatterParams: 8 uints");
 static_assert(offsetof(vs::shared::VsLightAlbedoParams, cellSize) == sizeof(vs::shared::VsVolumeParams),
   "VsLightAlbedoParams layout");
 static_assert(sizeof(vs::shared::VsLightAlbedoParams) == sizeof(vs::shared::VsVolumeParams) + 32,

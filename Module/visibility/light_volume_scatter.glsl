@@ -18,6 +18,9 @@
  * nearest cells' V need not be monotone along the ray), the march steps 1 cell four times, then
  * lengthens by 1.5x up to 8 cells, stops where all but 1e-3 of the weight is spent and gives what is
  * left, t - V(c, n), to the last cell it read (so the weights still sum to 1 - V(c, n)).
+ * With P.stride > 1 the order marches one direction of each stride x stride block of texels (the
+ * orders take turns over the block's texels, P.offset*), standing for the block: multiply scattered
+ * light varies slowly with direction, and the march is stride^2 times cheaper.
  * Writes I_{k+1} into the total (rgb += ; alpha, the mean visibility, untouched), and E_{k+1} and
  * I_{k+1} for the next order (the orders not computed are added on the host: vsLightVolume.cxx).
  * Included by light_volume_scatter_<format>.comp, which defines VS_VIS_FORMAT.
@@ -64,8 +67,11 @@ void main()
     return;
   vec4 own = imageLoad(uEmitIn, ivec3(cell));
   vec3 sum = vec3(0.0);
-  for (uint n = 0u; n < DD; ++n)
+  uint stride = max(P.stride, 1u);
+  uint side = D / stride;
+  for (uint m = 0u; m < side * side; ++m)
   {
+    uint n = (m % side) * stride + P.offsetX + ((m / side) * stride + P.offsetY) * D;
     float v0 = visibility_texel(cell, n, D);
     vec3 s = sSteps[n];
     vec4 previous = own;
@@ -110,7 +116,7 @@ void main()
       acc += (max(t - v0, 0.0) + pending) * lastLit;
     sum += acc;
   }
-  vec3 light = sum / float(DD);
+  vec3 light = sum / float(side * side);
   vec4 albedo = imageLoad(uAlbedo, ivec3(cell));
   vec4 total = imageLoad(uLight, ivec3(cell));
   imageStore(uLight, ivec3(cell), vec4(total.rgb + light, total.a));

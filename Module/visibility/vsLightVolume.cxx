@@ -168,7 +168,7 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
     h = Hash(h, &tf.ScalarMax, sizeof(float));
     h = Hash(h, tf.Entries.data(), tf.Entries.size() * sizeof(float));
     h = Hash(h, &m.Params, sizeof(m.Params));
-    const uint32_t counts[3] = { std::min(m.Orders, m.Events), m.Events, m.AlbedoSamples };
+    const uint32_t counts[4] = { std::min(m.Orders, m.Events), m.Events, m.AlbedoSamples, m.DirectionStride };
     h = Hash(h, counts, sizeof(counts));
     h = Hash(h, &m.MaxRatio, sizeof(m.MaxRatio));
     s.Scattering = h | 1u; // never 0
@@ -296,6 +296,11 @@ void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& 
   };
   const uint32_t gx = (cells[0] + 3) / 4, gy = (cells[1] + 3) / 4, gz = (cells[2] + 3) / 4;
   const uint32_t orders = std::min(m.Orders, m.Events);
+  uint32_t stride = 1;
+  while (stride * 2 <= std::min(m.DirectionStride, side / 2))
+  {
+    stride *= 2; // a power of two that divides D
+  }
   Batch batch(this->Context_);
   batch.BeginTimer("scatter");
   // The sets live until the batch is submitted.
@@ -316,6 +321,9 @@ void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& 
     params.cellsX = cells[0];
     params.cellsY = cells[1];
     params.cellsZ = cells[2];
+    params.stride = stride;
+    params.offsetX = stride > 1 ? (k - 2) % stride : 0u;
+    params.offsetY = stride > 1 ? ((k - 2) / stride) % stride : 0u;
     batch.Dispatch(*scatter, *sets.back(), &params, sizeof(params), gx, gy, gz);
     std::swap(in, out);
     std::swap(orderIn, orderOut);

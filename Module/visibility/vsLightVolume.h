@@ -67,6 +67,10 @@ public:
     shared::VsVolumeParams Params{};
     uint32_t Orders = 4;
     uint32_t Events = 1024;
+    /** The orders march every DirectionStride-th direction per axis of the grid's D x D, each standing
+     *  for its DirectionStride^2 block, the orders taking turns over the block (1: every direction;
+     *  at most D / 2). */
+    uint32_t DirectionStride = 2;
     /** Samples per axis of each cell for its albedo. */
     uint32_t AlbedoSamples = 4;
     /** The tail's ratio between successive orders is clamped to this (< 1). */

@@ -410,9 +410,10 @@ void SetAlbedo(VisibilityScene& scene, double sigmaAtOne, glm::dvec3 albedo)
 }
 
 vs::LightVolume::MultipleScattering Scattering(const VisibilityScene& scene, const vs::shared::VsEmissionAbsorptionParams& p,
-  uint32_t orders, uint32_t events)
+  uint32_t orders, uint32_t events, uint32_t stride = vs::LightVolume::MultipleScattering().DirectionStride)
 {
   vs::LightVolume::MultipleScattering m;
+  m.DirectionStride = stride;
   m.Volume = scene.Volume.get();
   m.TF = scene.TF.get();
   m.Params = p.volume;
@@ -475,11 +476,14 @@ double ReflectedHalfSpace(double a, double mu)
 // transport, isotropic phase): the in-scattered light is 4 pi L at every point, and a pixel shows
 // L (1 - T) from the volume plus T L from the sky behind. The light volume's scattering conserves
 // light exactly (light_volume_scatter.glsl: each direction's weights sum to 1 - V(c, n)), so
-//   (a) with orders enough (64; no tail) every cell holds 4 pi L to float precision (1e-3 relative),
-//       whatever the grid's V (here a heterogeneous medium: a ball with a dense lobe);
-//   (b) with the default 4 orders and the geometric tail to 1024 events, every cell within 2%;
-//   (c) the preview's pixels, L alpha, within the same 2% (the light volume is then ~flat: its
-//       interpolation adds nothing);
+//   (a) with orders enough (64; no tail) and every direction every order, every cell holds 4 pi L to
+//       float precision (1e-3 relative), whatever the grid's V (here a heterogeneous medium: a ball
+//       with a dense lobe);
+//   (b) with the defaults, 4 orders (every second direction per axis, the orders taking turns: each
+//       order's quarter of the directions conserves light only approximately) and the geometric tail
+//       to 1024 events, every cell within 5% (4.5% measured; 0.2% with every direction);
+//   (c) the preview's pixels, L alpha, within 3% (2.2% measured; the light volume is then ~flat: its
+//       interpolation adds little);
 //   (d) the single-scattering preview (1 order) is darker by more than 20% on the covered pixels: the
 //       test can tell.
 TEST(PreviewFullTransport, WhiteFurnaceIsInvisible)
@@ -498,7 +502,7 @@ TEST(PreviewFullTransport, WhiteFurnaceIsInvisible)
         worst = std::max(worst, std::abs(light[i + k] / (4.0 * Pi * L[k]) - 1.0));
     return worst;
   };
-  box.Light.Update(box.Grid, *box.Env, 1.0, Scattering(box.Scene, box.Params, 64, 64));
+  box.Light.Update(box.Grid, *box.Env, 1.0, Scattering(box.Scene, box.Params, 64, 64, 1));
   const double exact = cellsOff(box.Light.Download());
   std::printf("64 orders: worst cell %.2e off 4 pi L (device %.1f ms)\n", exact, 1e3 * box.Light.LastSeconds());
   EXPECT_LT(exact, 1e-3);
@@ -506,7 +510,7 @@ TEST(PreviewFullTransport, WhiteFurnaceIsInvisible)
   box.Light.Update(box.Grid, *box.Env, 1.0, Scattering(box.Scene, box.Params, 4, 1024));
   const double tail = cellsOff(box.Light.Download());
   std::printf("4 orders + tail: worst cell %.2e off 4 pi L\n", tail);
-  EXPECT_LT(tail, 0.02);
+  EXPECT_LT(tail, 0.05);
   const std::vector<float> full = box.Render(vs::shared::VS_EA_LIGHTING_PREVIEW);
   double worstPixel = 0.0;
   int covered = 0;
@@ -520,7 +524,7 @@ TEST(PreviewFullTransport, WhiteFurnaceIsInvisible)
   }
   std::printf("4 orders + tail: worst pixel %.2e off L alpha (%d pixels)\n", worstPixel, covered);
   EXPECT_GT(covered, 100);
-  EXPECT_LT(worstPixel, 0.02);
+  EXPECT_LT(worstPixel, 0.03);
 
   box.Light.Update(box.Grid, *box.Env, 1.0);
   const std::vector<float> single = box.Render(vs::shared::VS_EA_LIGHTING_PREVIEW);
