@@ -1,5 +1,5 @@
 """The demo's image (issue 39): render_brain.py with scripts/demo.sh's render flags (read from it; at
-128^2 instead of 384^2 to keep the suite short) writes the estimate, past the hand-over from the preview
+128^2 instead of 384^2 to keep the suite short, and at least 20 s of budget: see below) writes the estimate, past the hand-over from the preview
 (it says so: the preview's share is below 0.05, then 0), and the image has no periodic pattern: the
 power spectrum of its difference from a render of more samples (no preview) has no peak far above its
 neighbours (the fixed offsets of the preview drew a moire of curved bands; noise has a flat spectrum).
@@ -97,8 +97,14 @@ def main():
         raise SystemExit("the demo no longer starts from the preview: this test checks its hand-over")
     out = tempfile.mkdtemp(dir=a.output if os.path.isdir(a.output) else None)
     demo = os.path.join(out, "demo.png")
+    # The suite runs lavapipe on 1 thread, often beside other work: the fixed costs of the first frames
+    # (pipelines, the grid's sweeps, the light volume) can then take the demo's whole budget, and the
+    # image is whatever frame ended last. A budget of at least 20 s leaves the hand-over (3 s after the
+    # view is still) its frames (the preview's first frame took 10.6 s here on a loaded machine); the
+    # demo's 10 s on 2 threads at 384^2 is a benchmark figure.
+    seconds = str(max(float(flags["seconds"]), 20.0))
     text = render(a.data, demo, ["--rotation", flags["rotation"], "--strategy", flags["strategy"],
-                                 "--spp", flags["spp"], "--seconds", flags["seconds"], "--preview-first"])
+                                 "--spp", flags["spp"], "--seconds", seconds, "--preview-first"])
     m = re.search(r"rendered \d+x\d+: (\d+) spp \((\w+)\) in ([0-9.]+) s(.*)", text)
     if not m:
         raise SystemExit("render_brain.py did not print spp, strategy and time")
@@ -108,7 +114,7 @@ def main():
         failures.append(f"the demo's image is not the estimate alone: '{shown.strip()}'")
     reference = os.path.join(out, "reference.png")
     render(a.data, reference, ["--rotation", flags["rotation"], "--strategy", flags["strategy"],
-                               "--spp", str(max(4 * spp, 64))])
+                               "--spp", str(min(max(4 * spp, 64), 256))])
     diff = load(demo) - load(reference)
     noise = diff.std()
     peak, where = largest_peak(diff)
