@@ -43,6 +43,7 @@ struct PreviewOptions
   int ReferenceSpp = 1024;
   int Repeats = 3;
   double SampleDistance = 0.0;
+  std::vector<int> PreviewOrders; // the preview again at each of these PreviewScatteringOrders
   std::string Json, ContactSheet, Plot;
 };
 
@@ -241,6 +242,18 @@ int Run(const PreviewOptions& o)
   deterministic("ambient occlusion", vtkVisibilitySweepVolumeMapper::AmbientOcclusion, false);
   deterministic("preview", vtkVisibilitySweepVolumeMapper::Preview, false);
   deterministic("preview while dragging", vtkVisibilitySweepVolumeMapper::Preview, false, true);
+  const int defaultOrders = mapper->GetPreviewScatteringOrders();
+  std::vector<std::string> orderNames;
+  for (int k : o.PreviewOrders)
+  {
+    // The first frame builds the light volume with k orders (the grid is made already).
+    mapper->SetPreviewScatteringOrders(k);
+    orderNames.push_back("preview, " + std::to_string(k) + " orders");
+    deterministic(orderNames.back().c_str(), vtkVisibilitySweepVolumeMapper::Preview, false);
+    orderNames.push_back("preview, " + std::to_string(k) + " orders, dragging");
+    deterministic(orderNames.back().c_str(), vtkVisibilitySweepVolumeMapper::Preview, false, true);
+  }
+  mapper->SetPreviewScatteringOrders(defaultOrders);
   monteCarlo(1, 1); // the Monte Carlo pipelines, compiled before anything is timed
   for (int spp : { 1, 4, 16, 64 })
   {
@@ -333,6 +346,10 @@ void AddBenchPreview(CLI::App& bench)
   cmd->add_option("--sample-distance", o->SampleDistance,
       "the deterministic modes' ray-marching step in world units (default 0: the mapper's default)")
     ->check(CLI::Range(0.0, 1e30));
+  cmd->add_option("--preview-orders", o->PreviewOrders,
+    "also the preview with each of these PreviewScatteringOrders (1: single scattering), still and while dragging")
+    ->delimiter(',')
+    ->check(CLI::Range(1, 64));
   cmd->add_option("--json", o->Json, "write the table as JSON");
   cmd->add_option("--contact-sheet", o->ContactSheet, "write the window after each mode side by side to this PNG");
   cmd->add_option("--plot", o->Plot, "draw error against frame time (log-log) to this PNG (matplotlib)");

@@ -76,7 +76,13 @@ void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, 
 // The light volume is made again only when the grid's values, the environment or its intensity
 // change, never for a camera move. A volume without extinction (or cropped away) needs neither: its
 // lit image is transparent, and the preview shows the environment alone.
-void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol, bool preview, bool interactive)
+//
+// With ditherFrame > 0 (an interactive preview only): a frame of the hand-over's preview with its pixels'
+// offsets rotated (dither.h vs_dither_offset), averaged into the preview the hand-over blends
+// (PreviewImage::Frames), nothing drawn: the fixed offsets' moire averages out while the view is still,
+// the drag frames stay deterministic (frame 0).
+void vtkVisibilitySweepVolumeMapper::RenderLit(
+  vtkRenderer* ren, vtkVolume* vol, bool preview, bool interactive, uint32_t ditherFrame)
 {
   Internals& I = *this->Impl;
   if (interactive)
@@ -101,17 +107,29 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol,
   {
     this->CompleteVisibilityGrid();
     grid = I.Grid->Grid();
-    if (!I.Light)
-    {
-      I.Light = std::make_unique<vs::LightVolume>(I.Context);
-    }
-    I.Light->Update(*grid, I.Environment.Device(), this->EnvironmentIntensity);
-    this->LightVolumeBuildCount = int(I.Light->Builds());
   }
   const std::vector<float> depth = vs::WindowCompositor::ReadDepth(ren, vp);
   bool shade = false;
   vs::shared::VsEmissionAbsorptionParams p =
     EmissionAbsorptionFrame::Params(this, ren, vol, geometry, view, *I.Scene, I.Frame++, shade);
+  if (grid)
+  {
+    if (!I.Light)
+    {
+      I.Light = std::make_unique<vs::LightVolume>(I.Context);
+    }
+    // The preview carries the multiple scattering the Monte Carlo estimate has (MaximumScatteringEvents
+    // events in all, PreviewScatteringOrders of them on the cell grid, the rest as their geometric
+    // tail; vsLightVolume.h); ambient occlusion reads only the mean visibility.
+    vs::LightVolume::MultipleScattering scattering;
+    scattering.Volume = &I.Scene->Volume();
+    scattering.TF = &I.Scene->TF();
+    scattering.Params = p.volume;
+    scattering.Events = uint32_t(std::clamp(this->MaximumScatteringEvents, 1, int(vs::shared::VS_MAX_SCATTERING_EVENTS)));
+    scattering.Orders = preview ? uint32_t(std::max(this->PreviewScatteringOrders, 1)) : 1u;
+    I.Light->Update(*grid, I.Environment.Device(), this->EnvironmentIntensity, scattering);
+    this->LightVolumeBuildCount = int(I.Light->Builds());
+  }
   if (grid)
   {
     const auto c = grid->Cells();
@@ -129,6 +147,7 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol,
   {
     p.step = float(geometry.MinSpacing);
   }
+  p.ditherFrame = ditherFrame;
   if (interactive || this->IsInteractiveFrame(ren))
   {
     // While the user drags (the Monte Carlo mode's preview, or the Preview and AmbientOcclusion modes
@@ -177,10 +196,25 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(vtkRenderer* ren, vtkVolume* vol,
     vs::WindowCompositor::Draw(ren, vp, rgba); // as the emission-absorption image
     return;
   }
+  if (interactive && ditherFrame > 0)
+  {
+    // A refinement of the hand-over's preview: the running mean of its frames.
+    if (I.HandOver.Active && I.HandOver.Width == w && I.HandOver.Height == h && rgba.size() == I.HandOver.Rgba.size())
+    {
+      const float k = float(I.HandOver.Frames);
+      for (size_t i = 0; i < rgba.size(); ++i)
+      {
+        I.HandOver.Rgba[i] += (rgba[i] - I.HandOver.Rgba[i]) / (k + 1.0f);
+      }
+      ++I.HandOver.Frames;
+    }
+    return;
+  }
   if (interactive)
   {
     // GetRadiance() stays the view's estimate; the accumulation restarts once the view is still, and
     // the window hands over from this image to it (vsPreviewHandOver.h).
+    I.HandOver.Frames = 1;
     I.HandOver.Rgba = std::move(rgba);
     I.HandOver.Width = w;
     I.HandOver.Height = h;

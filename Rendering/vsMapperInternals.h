@@ -32,6 +32,7 @@
 
 #include <glm/glm.hpp>
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <utility>
@@ -84,6 +85,8 @@ struct vtkVisibilitySweepVolumeMapper::Internals
     std::vector<float> Rgba;
     uint32_t Width = 0, Height = 0;
     bool Pending = false, Active = false;
+    std::chrono::steady_clock::time_point Start; // when it became Active (PreviewHandOverSeconds)
+    uint32_t Frames = 1; // preview frames averaged in Rgba (their offsets rotated: dither.h vs_dither_offset)
   } HandOver;
   // One accumulator per renderer (two views of one volume): MC, MCGrid, Interactive, ImageSignature
   // and Selector above are the current view's; the other views' wait here (SwitchView).

@@ -355,6 +355,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       // restart (a new transfer function, say) ends it: the preview is of another image.
       I.HandOver.Active = I.HandOver.Pending;
       I.HandOver.Pending = false;
+      I.HandOver.Start = std::chrono::steady_clock::now();
     }
     pass = gridFrame && autoStrategy ? I.MCGrid.get() : I.MC.get();
     if (pass == I.MCGrid.get())
@@ -473,6 +474,10 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     if (I.HandOver.Width == w && I.HandOver.Height == h && this->AccumulatedSamplesOf(autoStrategy) < uint32_t(this->MaximumSamples))
     {
       share = vs::PreviewHandOver::PreviewShare(I.HandOver.Rgba, mean, this->CombinedVariance(autoStrategy), n);
+      // At most 1 - t / PreviewHandOverSeconds: the estimate is shown alone within the documented time,
+      // however close the preview is.
+      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - I.HandOver.Start).count();
+      share = std::min(share, vs::PreviewHandOver::ShareCap(t, this->PreviewHandOverSeconds));
     }
     if (share < vs::PreviewHandOver::EndShare)
     {
@@ -506,6 +511,52 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   }
   I.LastFrame.Lap("display", lap);
   (void)vol;
+}
+
+// A still Monte Carlo frame of a view that has no accumulation yet nor a preview to hand over from, in a
+// window with an interactor (one the user can drag; an offscreen script or the command-line tool has
+// none, and pays nothing for a preview it would not show).
+bool vtkVisibilitySweepVolumeMapper::StartsWithoutPreview(vtkRenderer* ren)
+{
+  Internals& I = *this->Impl;
+  vtkRenderWindow* win = ren ? ren->GetRenderWindow() : nullptr;
+  if (!win || !win->GetInteractor() || !this->InteractivePreview || this->InteractiveUpdateRate <= 0.0)
+  {
+    return false;
+  }
+  int tileScale[2] = { 1, 1 };
+  win->GetTileScale(tileScale);
+  if (tileScale[0] > 1 || tileScale[1] > 1)
+  {
+    return false;
+  }
+  I.SwitchView(ren);
+  return I.ImageSignature.empty() && !I.HandOver.Pending && !I.HandOver.Active;
+}
+
+// While the hand-over shows the preview, its first frames refine it: HandOverRefinements preview frames
+// in all, each with the pixels' offsets rotated (dither.h), averaged (RenderLit with a ditherFrame).
+namespace
+{
+const uint32_t HandOverRefinements = 8;
+}
+
+bool vtkVisibilitySweepVolumeMapper::RefinesHandOverPreview(vtkRenderer* ren)
+{
+  Internals& I = *this->Impl;
+  vtkRenderWindow* win = ren ? ren->GetRenderWindow() : nullptr;
+  if (!win || !this->InteractivePreview || !I.HandOver.Active || I.HandOver.Frames >= HandOverRefinements)
+  {
+    return false;
+  }
+  int tileScale[2] = { 1, 1 };
+  win->GetTileScale(tileScale);
+  return tileScale[0] <= 1 && tileScale[1] <= 1;
+}
+
+uint32_t vtkVisibilitySweepVolumeMapper::HandOverPreviewFrames() const
+{
+  return this->Impl->HandOver.Frames;
 }
 
 bool vtkVisibilitySweepVolumeMapper::IsInteractiveFrame(vtkRenderer* ren) const

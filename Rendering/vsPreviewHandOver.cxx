@@ -1,6 +1,7 @@
 // vsPreviewHandOver.cxx — see vsPreviewHandOver.h.
 #include "vsPreviewHandOver.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -35,6 +36,15 @@ double PreviewHandOver::PreviewShare(const std::vector<float>& preview, const st
   const double V = meanVariance / n / double(samples);
   const double B = std::max(0.0, difference / n - V);
   return V + B > 0.0 ? V / (V + B) : 0.0; // identical images without variance: the estimate
+}
+
+double PreviewHandOver::ShareCap(double seconds, double duration)
+{
+  if (!(duration > 0.0) || !(seconds >= 0.0))
+  {
+    return duration > 0.0 ? 1.0 : 0.0; // a negative or NaN time: not begun
+  }
+  return std::min(1.0, std::max(0.0, 1.0 - seconds / duration));
 }
 
 void PreviewHandOver::Blend(std::vector<float>& mean, const std::vector<float>& preview, double share)

@@ -30,6 +30,11 @@ public:
   static double PreviewShare(const std::vector<float>& preview, const std::vector<float>& mean,
     const std::vector<double>& variance, uint32_t samples);
 
+  /** The largest share `seconds` after the hand-over began, for a hand-over of `duration` seconds:
+   *  1 - seconds / duration, clamped to [0, 1] (0 for a duration of 0 or less). The blend of least
+   *  expected error keeps a close preview for hundreds of samples; this bounds how long it is shown. */
+  static double ShareCap(double seconds, double duration);
+
   /** mean = (1 - share) mean + share preview, every channel. */
   static void Blend(std::vector<float>& mean, const std::vector<float>& preview, double share);
 };

@@ -290,6 +290,16 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     }
     else
     {
+      // The first still view of a window the user can drag starts from the preview, as a still view
+      // after a drag does (issue 39): the preview, then the hand-over from it.
+      if (this->InteractivePreview && this->StartsWithoutPreview(ren))
+      {
+        this->RenderLit(ren, vol, true, true);
+      }
+      else if (this->RefinesHandOverPreview(ren))
+      {
+        this->RenderLit(ren, vol, true, true, this->HandOverPreviewFrames());
+      }
       this->RenderMonteCarlo(ren, vol);
     }
     I.LastError.clear();
@@ -634,6 +644,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DirectionTable: " << (this->DirectionTable ? "on" : "off") << "\n";
   os << indent << "DefensiveWeight: " << this->DefensiveWeight << "\n";
   os << indent << "MaximumScatteringEvents: " << this->MaximumScatteringEvents << "\n";
+  os << indent << "PreviewScatteringOrders: " << this->PreviewScatteringOrders << "\n";
   os << indent << "ScatteringAnisotropy: " << this->ScatteringAnisotropy << "\n";
   os << indent << "CameraEstimator: " << this->GetCameraEstimatorAsString() << "\n";
   os << indent << "ControlExtinction: " << this->GetControlExtinctionAsString() << "\n";
@@ -667,6 +678,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "InteractiveSubsampling: " << this->InteractiveSubsampling << "\n";
   os << indent << "InteractivePreview: " << (this->InteractivePreview ? "On" : "Off") << "\n";
+  os << indent << "PreviewHandOverSeconds: " << this->PreviewHandOverSeconds << "\n";
   os << indent << "LastPreviewShare: " << this->LastPreviewShare << "\n";
   os << indent << "SampleDistance: " << this->SampleDistance
      << " (EmissionAbsorption, Preview and AmbientOcclusion: MonteCarlo tracking is exact and needs no step)\n";

@@ -21,8 +21,9 @@
  * - EmissionAbsorption: ray casting of VTK's transfer functions (opacity per
  *   ScalarOpacityUnitDistance, colour as emission), a jittered sample per step.
  * - Preview: a noise-free, deterministic ray march of the camera rays (the emission-absorption
- *   pass without jitter) with single scattering from the light volume, the environment light
- *   reaching each visibility cell (vs::LightVolume, interpolated trilinearly): per step,
+ *   pass without jitter) lit from the light volume, the environment light reaching each visibility
+ *   cell directly and after up to MaximumScatteringEvents - 1 scatterings in the volume
+ *   (vs::LightVolume, PreviewScatteringOrders; interpolated trilinearly): per step,
  *   T (1 - exp(-sigma_t dt)) albedo I / (4 pi), plus T x the environment behind. Biased only by
  *   the grid's resolution and the step; the image the Monte Carlo mode converges to, at the cost
  *   of one emission-absorption render once the grid is swept. The grid (at DirectionResolution)
@@ -203,6 +204,16 @@ public:
    *  (-1, 1) or not finite is an error at render time naming the setting. Default 0. */
   vtkSetMacro(ScatteringAnisotropy, double);
   vtkGetMacro(ScatteringAnisotropy, double);
+  ///@}
+
+  ///@{
+  /** The preview's multiple scattering (RenderMode Preview, and the Monte Carlo mode's preview while
+   *  the user drags): the orders of scattering its light volume computes on the visibility grid's
+   *  cells, the orders beyond (up to MaximumScatteringEvents) added as their geometric tail
+   *  (vs::LightVolume). 1: single scattering. Made again when it changes, never for a camera move.
+   *  Values below 1 count as 1. Default 4 (docs/benchmarks.md, "The preview under full transport"). */
+  vtkSetMacro(PreviewScatteringOrders, int);
+  vtkGetMacro(PreviewScatteringOrders, int);
   ///@}
 
   ///@{
@@ -424,8 +435,13 @@ public:
    *  preview, the window shows the blend (1 - s) x estimate + s x preview of least expected error:
    *  s = V / (V + B), V the estimate's variance, B the preview's squared bias measured as the two
    *  images' mean squared difference less V. s falls as samples come in; below 0.05 the hand-over
-   *  ends and the estimate is shown as it is (GetLastPreviewShare() is then 0). GetRadiance() is
-   *  always the estimate alone. */
+   *  ends and the estimate is shown as it is (GetLastPreviewShare() is then 0). The share is also at
+   *  most 1 - t / PreviewHandOverSeconds, t the seconds since the still view's accumulation restarted:
+   *  however close the preview (under full transport it carries multiple scattering, and its bias can
+   *  stay below the estimate's variance for hundreds of samples), the estimate is shown alone within
+   *  0.95 PreviewHandOverSeconds (and at the first frame after that). The first still view of a window
+   *  with an interactor (a window the user can drag) starts from the preview too, as a still view
+   *  after a drag does. GetRadiance() is always the estimate alone. */
   virtual void SetInteractiveUpdateRate(double value); // clamped to [0.0, VTK_DOUBLE_MAX]; NaN is refused (an error, the setting kept)
   vtkGetMacro(InteractiveUpdateRate, double);
   vtkSetClampMacro(InteractiveSubsampling, int, 1, 16);
@@ -433,6 +449,8 @@ public:
   vtkSetMacro(InteractivePreview, bool);
   vtkGetMacro(InteractivePreview, bool);
   vtkBooleanMacro(InteractivePreview, bool);
+  vtkSetClampMacro(PreviewHandOverSeconds, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(PreviewHandOverSeconds, double);
   /** The preview's share s in the image shown last (1 for an interactive preview frame, 0 when
    *  the Monte Carlo estimate is shown alone). */
   vtkGetMacro(LastPreviewShare, double);
@@ -730,6 +748,7 @@ protected:
   bool DirectionTable = true;
   double DefensiveWeight = 0.0;
   int MaximumScatteringEvents = 1024;
+  int PreviewScatteringOrders = 4;
   double ScatteringAnisotropy = 0.0;
   int DirectionTableBuildCount = 0;
   int LightVolumeBuildCount = 0;
@@ -755,6 +774,7 @@ protected:
   double InteractiveUpdateRate = 1.0;
   int InteractiveSubsampling = 4;
   bool InteractivePreview = true;
+  double PreviewHandOverSeconds = 3.0;
   double LastPreviewShare = 0.0;
   int AccumulatedSamples = 0;
   bool LastRenderComplete = false; // the last render was emission-absorption or a projection
@@ -807,10 +827,13 @@ private:
    *  volume, at three times the step in an interactive frame. `interactive`: a preview frame while the
    *  user drags in the MonteCarlo mode (GetRadiance() is left as it is, the image kept for the
    *  hand-over). */
-  void RenderLit(vtkRenderer* ren, vtkVolume* vol, bool preview, bool interactive);
+  void RenderLit(vtkRenderer* ren, vtkVolume* vol, bool preview, bool interactive, uint32_t ditherFrame = 0);
   /** Whether this frame of `ren` is an interactive one (the window's desired update rate at least
    *  InteractiveUpdateRate, not a tile of a tiled render). */
   bool IsInteractiveFrame(vtkRenderer* ren) const;
+  bool StartsWithoutPreview(vtkRenderer* ren);
+  bool RefinesHandOverPreview(vtkRenderer* ren);
+  uint32_t HandOverPreviewFrames() const;
   /** Port 1's environment (or the white sky) on the device at DirectionResolution. */
   void UpdateEnvironmentInput();
   /** Starts making the first frame's render pipeline on another thread (the scene's conversion

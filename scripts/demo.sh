@@ -19,7 +19,7 @@ export LP_NUM_THREADS="${LP_NUM_THREADS:-$(nproc)}"
 PYTHONPATH="$build${PYTHONPATH:+:$PYTHONPATH}" xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
   /usr/bin/python3 "$root/Examples/Python/render_brain.py" \
   --volume /usr/share/mricron/templates/ch2.nii.gz --output "$build/demo/brain.png" --size 384 \
-  --rotation 110 --strategy Auto --spp 1024 --seconds 4 --preview-first
+  --rotation 110 --strategy Auto --spp 1024 --seconds 10 --preview-first
 t3=$(ms)
 echo "stages: setup $(secs $((t1 - t0))) s, build $(secs $((t2 - t1))) s, render $(secs $((t3 - t2))) s"
 echo "demo image: $build/demo/brain.png"

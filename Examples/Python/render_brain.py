@@ -47,7 +47,8 @@ def main():
                     choices=["Uniform", "Environment", "Visibility", "Combined", "TwoStep", "Auto"])
     ap.add_argument("--rotation", type=float, default=200.0, help="environment rotation about the up axis, degrees")
     ap.add_argument("--seconds", type=float, default=0.0,
-                    help="stop refining after this many seconds even below --spp (0: no limit)")
+                    help="stop refining before a frame that would end after this many seconds, even below "
+                         "--spp (0: no limit)")
     ap.add_argument("--preview-first", action="store_true",
                     help="start from the noise-free preview and hand over to the estimate as it converges "
                          "(the image shown blends the two by their measured errors; see README)")
@@ -124,8 +125,11 @@ def main():
     # Progress: one line redrawn in place on a terminal; whole lines in a log or a pipe.
     terminal = sys.stdout.isatty()
     redrawn = False
+    frame_seconds = 0.0
     while True:
+        frame_start = time.perf_counter()
         win.Render()
+        frame_seconds = time.perf_counter() - frame_start
         if mapper.GetLastError():
             raise SystemExit(f"render failed: {mapper.GetLastError()}")
         if first and not args.emission_absorption:
@@ -133,7 +137,8 @@ def main():
             first = False
         if args.emission_absorption or mapper.IsConverged():
             break
-        if args.seconds > 0 and time.perf_counter() - t >= args.seconds:
+        # Within the budget: no frame that would end after it (a frame of 8 samples takes seconds).
+        if args.seconds > 0 and time.perf_counter() - t + frame_seconds > args.seconds:
             break
         progress = f"{mapper.GetAccumulatedSamples()}/{args.spp} samples per pixel"
         if terminal:
@@ -148,7 +153,8 @@ def main():
         print(f"rendered {args.size}x{args.size} in {seconds:.2f} s")
     else:
         share = mapper.GetLastPreviewShare()
-        shown = f", shown blended with the preview (its share {share:.2f})" if share > 0 else ""
+        shown = (f", shown blended with the preview (its share {share:.2f})" if share > 0
+                 else (", the estimate alone (past the hand-over from the preview)" if args.preview_first else ""))
         print(f"rendered {args.size}x{args.size}: {mapper.GetAccumulatedSamples()} spp "
               f"({mapper.GetEffectiveStrategyAsString()}) in {seconds:.2f} s{shown}")
     grab = vtk.vtkWindowToImageFilter()

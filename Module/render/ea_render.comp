@@ -239,7 +239,7 @@ void main()
   }
   if (t.x < t.y)
   {
-    float jitter = VS_EA_LIGHTING == VS_EA_LIGHTING_NONE ? vs_rng_float(rng) : vs_interleaved_gradient_noise(pix);
+    float jitter = VS_EA_LIGHTING == VS_EA_LIGHTING_NONE ? vs_rng_float(rng) : vs_dither_offset(pix, P.ditherFrame);
     bool skip = P.volume.majorantBrickSize > 0.0;
     vec3 invDi = 1.0 / di;
     float walkScale = vs_walk_scale(oi, di);

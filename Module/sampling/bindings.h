@@ -116,6 +116,23 @@ VS_CONST uint VS_LIGHT_RADIANCE = 2u;    /* storage buffer: vec4 per direction, 
 VS_CONST uint VS_LIGHT_OUTPUT = 3u;      /* rgba32f image, one texel per cell: the light volume */
 VS_CONST uint VS_LIGHT_BINDING_COUNT = 4u;
 
+/* The light volume's multiple scattering (vsLightVolume.h): the per-cell albedo (light_volume_albedo.comp)
+ * and one order of scattering per dispatch (light_volume_scatter.glsl). */
+VS_CONST uint VS_LIGHTMS_VOLUME = 0u;     /* r32f image: the volume (albedo pass) */
+VS_CONST uint VS_LIGHTMS_TF = 1u;         /* texel buffer of rgba32f entries: the transfer function (albedo pass) */
+VS_CONST uint VS_LIGHTMS_PARAMS = 2u;     /* storage buffer: VsLightAlbedoParams (albedo pass) */
+VS_CONST uint VS_LIGHTMS_ALBEDO = 3u;     /* rgba32f image per cell: rgb the albedo, a the mean extinction */
+VS_CONST uint VS_LIGHTMS_LIGHT = 4u;      /* rgba32f image per cell: the light volume (the total; a untouched) */
+VS_CONST uint VS_LIGHTMS_EMIT_IN = 5u;    /* rgba32f image per cell: rgb mean extinction x albedo x I_k, a the
+                                             mean extinction */
+VS_CONST uint VS_LIGHTMS_EMIT_OUT = 6u;   /* the same of order k + 1 */
+VS_CONST uint VS_LIGHTMS_VISIBILITY = 7u; /* the visibility grid (scatter pass; its storage format) */
+VS_CONST uint VS_LIGHTMS_SOURCES = 8u;    /* storage buffer: VisibilityGrid::DirectionSources */
+VS_CONST uint VS_LIGHTMS_STEPS = 9u;      /* storage buffer: vec4 per direction, xyz its step in cells */
+VS_CONST uint VS_LIGHTMS_ORDER_IN = 10u;  /* rgba32f image per cell: rgb I_k (the tail's ratio) */
+VS_CONST uint VS_LIGHTMS_ORDER_OUT = 11u; /* the same of order k + 1 */
+VS_CONST uint VS_LIGHTMS_BINDING_COUNT = 12u;
+
 /* The majorant bricks' scalar ranges (volume/majorant_minmax.comp, volume/vsMajorantGrid.cxx). */
 VS_CONST uint VS_RANGES_VOLUME = 0u;
 VS_CONST uint VS_RANGES_OUTPUT = 1u;

@@ -65,7 +65,8 @@ struct VsEmissionAbsorptionParams
      scaled by environmentScale (the intensity). */
   uint environmentSize;
   float environmentScale;
-  uint unused3;
+  uint ditherFrame; /* the lit modes' offsets: the pixel's fixed pattern rotated by this frame's share of
+                       the golden ratio (dither.h vs_dither_offset; 0: the pattern itself) */
   uint unused4;
 };
 

@@ -6,6 +6,7 @@
 #ifndef VS_LIGHT_VOLUME_PARAMS_H
 #define VS_LIGHT_VOLUME_PARAMS_H
 #include "vs_prelude.h"
+#include "volume_params.h"
 
 VS_NAMESPACE_BEGIN
 
@@ -18,6 +19,31 @@ struct VsLightVolumeParams
 /* The grid's D (directions per side) is the shader's specialization constant 0, not a field: its
  * loop over the D x D directions then has a constant trip count (3x faster on lavapipe). */
 
+/* Multiple scattering (vsLightVolume.h): the per-cell albedo's pass (light_volume_albedo.comp), its
+ * parameters in a storage buffer (the volume's, as every pass sees them, and the cells). */
+struct VsLightAlbedoParams
+{
+  VsVolumeParams volume; /* volume.boxMin: the grid's origin (index space) */
+  vec3 cellSize;         /* index units per cell */
+  uint samplesPerAxis;   /* the cell's samples per axis (stratified, fixed: deterministic) */
+  uvec3 cells;
+  uint unused;
+};
+
+/* One order of scattering (light_volume_scatter.glsl): push constants. */
+struct VsLightScatterParams
+{
+  uint cellsX;
+  uint cellsY;
+  uint cellsZ;
+  uint stride;  /* the directions this order marches: texels (stride i + offsetX, stride j + offsetY) of the
+                   D x D grid, each standing for stride^2 texels (1: all) */
+  uint offsetX;
+  uint offsetY;
+  uint unused0;
+  uint unused1;
+};
+
 VS_NAMESPACE_END
 
 #ifdef __cplusplus
@@ -26,6 +52,11 @@ static_assert(sizeof(vs::shared::VsLightVolumeParams) == 12, "VsLightVolumeParam
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsX) == 0, "VsLightVolumeParams layout");
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsY) == 4, "VsLightVolumeParams layout");
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsZ) == 8, "VsLightVolumeParams layout");
+static_assert(sizeof(vs::shared::VsLightScatterParams) == 32, "VsLightScatterParams: 8 uints");
+static_assert(offsetof(vs::shared::VsLightAlbedoParams, cellSize) == sizeof(vs::shared::VsVolumeParams),
+  "VsLightAlbedoParams layout");
+static_assert(sizeof(vs::shared::VsLightAlbedoParams) == sizeof(vs::shared::VsVolumeParams) + 32,
+  "VsLightAlbedoParams layout");
 #endif
 
 #endif

@@ -10,10 +10,23 @@
 // visibility over the sphere. Built on the device (light_volume.glsl) and kept until the grid's
 // values (VisibilityGrid::ContentSerial), the environment (DeviceEnvironment::Serial) or the
 // intensity change: a camera move changes none of them.
+//
+// Multiple scattering (issue 39: the preview of full transport). Update with a MultipleScattering
+// adds the light that arrives after further scattering in the volume, order by order on the cell grid
+// (light_volume_scatter.glsl: the grid's V(c, n) / V(x, n) is the transmittance from c to x upstream,
+// so one order is a march along each of the grid's directions, nothing random), with an isotropic
+// phase and each cell's extinction-weighted albedo (light_volume_albedo.comp):
+//   I = I_1 + I_2 + ... + I_K + the orders K+1 .. Events as a geometric series of I_K's ratio to I_{K-1}
+//   (per cell, at most the whole volume's ratio: AddTail).
+// The preview's sigma_s I / (4 pi) is then the in-scattered radiance of full transport (Events
+// scattering events in all, as the Monte Carlo kernel's MaximumScatteringEvents). It is built again
+// when the albedo or the volume's parameters (MultipleScattering::Key), the orders or the events change
+// too, never for a camera move. Its bias against Monte Carlo: TestPreview's furnace and box.
 #ifndef vsLightVolume_h
 #define vsLightVolume_h
 
 #include "vissweepCoreModule.h"
+#include "sampling/volume_params.h"
 
 #include <glm/glm.hpp>
 
@@ -27,7 +40,9 @@ namespace vs
 class Buffer;
 class Context;
 class DeviceEnvironment;
+class DeviceVolume;
 class Image3D;
+class TransferFunctionTable;
 class VisibilityGrid;
 
 class VISSWEEPCORE_EXPORT LightVolume
@@ -40,6 +55,31 @@ public:
    *  it unless it was built from exactly these. Returns whether it built. Throws InputError for a grid
    *  not computed yet, an environment coarser than the grid's directions or a bad intensity. */
   bool Update(const VisibilityGrid& grid, const DeviceEnvironment& environment, double intensity = 1.0);
+
+  /** What multiple scattering needs: the volume and transfer function the grid was computed from,
+   *  their parameters as every pass sees them (Params.boxMin: the grid's origin), the orders computed
+   *  on the grid (1: single scattering, as Update above) and the scattering events in all (the orders
+   *  beyond `Orders` up to `Events` are a geometric tail). */
+  struct MultipleScattering
+  {
+    const DeviceVolume* Volume = nullptr;
+    const TransferFunctionTable* TF = nullptr;
+    shared::VsVolumeParams Params{};
+    uint32_t Orders = 4;
+    uint32_t Events = 1024;
+    /** The orders march every DirectionStride-th direction per axis of the grid's D x D, each standing
+     *  for its DirectionStride^2 block, the orders taking turns over the block (1: every direction;
+     *  at most D / 2). */
+    uint32_t DirectionStride = 2;
+    /** Samples per axis of each cell for its albedo. */
+    uint32_t AlbedoSamples = 4;
+    /** The tail's ratio between successive orders is clamped to this (< 1). */
+    float MaxRatio = 0.98f;
+  };
+  /** Update with multiple scattering (Orders >= 2 and Events >= 2; else as Update above). Throws
+   *  InputError as Update, and for a missing volume or transfer function. */
+  bool Update(const VisibilityGrid& grid, const DeviceEnvironment& environment, double intensity,
+    const MultipleScattering& scattering);
 
   /** Per direction n of a side x side grid, E_n: the environment's RGB radiance (times `intensity`)
    *  integrated over the solid angle of texel n, 4 pi / side^2. Throws InputError as Update. */
@@ -59,25 +99,35 @@ public:
    *  dispatch, wait). */
   double LastSeconds() const { return this->LastSeconds_; }
   double LastWallSeconds() const { return this->LastWallSeconds_; }
+  /** Device seconds of the last build's multiple scattering (0 for single scattering). */
+  double LastScatterSeconds() const { return this->LastScatterSeconds_; }
 
 private:
   struct Signature
   {
     uint64_t Grid = 0, Environment = 0;
     double Intensity = -1.0;
+    uint64_t Scattering = 0; // 0: single scattering; else a hash of MultipleScattering's inputs
     bool operator==(const Signature& o) const
     {
-      return Grid == o.Grid && Environment == o.Environment && Intensity == o.Intensity;
+      return Grid == o.Grid && Environment == o.Environment && Intensity == o.Intensity &&
+        Scattering == o.Scattering;
     }
   };
+  void Scatter(const VisibilityGrid& grid, const MultipleScattering& scattering);
+  void AddTail(const Image3D& last, const Image3D& before, uint32_t events, float maxRatio);
 
   std::shared_ptr<Context> Context_;
   std::unique_ptr<Image3D> Image_;
   std::unique_ptr<Buffer> Radiance_; // E_n, one vec4 per direction
+  // Multiple scattering: per cell the albedo, two orders' emission and light (ping-pong); the steps per
+  // direction, the albedo pass's parameters.
+  std::unique_ptr<Image3D> Albedo_, EmitA_, EmitB_, OrderA_, OrderB_;
+  std::unique_ptr<Buffer> Steps_, AlbedoParams_;
   std::array<uint32_t, 3> Cells_{ { 0, 0, 0 } };
   Signature Built_;
   uint64_t Builds_ = 0;
-  double LastSeconds_ = 0.0, LastWallSeconds_ = 0.0;
+  double LastSeconds_ = 0.0, LastWallSeconds_ = 0.0, LastScatterSeconds_ = 0.0;
 };
 }
 

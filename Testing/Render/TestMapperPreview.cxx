@@ -8,6 +8,7 @@
 #include "vtkVisibilitySweepVolumeMapper.h"
 
 #include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkEnvironmentMapReader.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
@@ -129,6 +130,40 @@ int TestMapperPreview(int argc, char* argv[])
   win->Render();
   Check(mapper->GetLightVolumeBuildCount() == 2, "a new intensity builds the light volume again");
   mapper->SetEnvironmentIntensity(1.0);
+  // Under full transport (issue 39) the light volume carries multiple scattering: what it reads builds
+  // it again (the albedo, the events, the orders), a camera move does not (above); with one order (single
+  // scattering) the preview is darker.
+  win->Render();
+  Check(mapper->GetLightVolumeBuildCount() == 3, "the intensity back builds again");
+  const std::vector<double> full = RadianceOf(mapper);
+  mapper->SetPreviewScatteringOrders(1);
+  win->Render();
+  Check(mapper->GetLightVolumeBuildCount() == 4, "one order builds the light volume again");
+  const std::vector<double> single = RadianceOf(mapper);
+  double sumFull = 0.0, sumSingle = 0.0;
+  for (size_t i = 0; i < full.size() && i < single.size(); ++i)
+  {
+    if (full[i] != single[i]) // the volume's pixels (those of the environment alone are the same)
+    {
+      sumFull += full[i];
+      sumSingle += single[i];
+    }
+  }
+  std::cout << "preview radiance: single scattering " << sumSingle / sumFull << " of full transport\n";
+  Check(sumSingle < 0.8 * sumFull, "the single-scattering preview is darker than full transport's");
+  mapper->SetPreviewScatteringOrders(4);
+  mapper->SetMaximumScatteringEvents(2);
+  win->Render();
+  Check(mapper->GetLightVolumeBuildCount() == 5, "new events build the light volume again");
+  mapper->SetMaximumScatteringEvents(1024);
+  vtkColorTransferFunction* albedo = property->GetRGBTransferFunction();
+  albedo->AddRGBPoint(128, 0.5, 0.5, 0.5);
+  win->Render();
+  Check(mapper->GetLightVolumeBuildCount() == 6, "a new albedo builds the light volume again, got " +
+      std::to_string(mapper->GetLightVolumeBuildCount()));
+  albedo->RemovePoint(128);
+  win->Render();
+  Check(RadianceOf(mapper) == full && mapper->GetLightVolumeBuildCount() == 7, "and back: the same preview");
 
   // A clipping plane opens the head: the preview follows it (a new grid and light volume).
   vtkNew<vtkPlane> plane;
@@ -138,7 +173,7 @@ int TestMapperPreview(int argc, char* argv[])
   win->Render();
   Check(std::string(mapper->GetLastError()).empty(), std::string("a clipped preview renders: ") + mapper->GetLastError());
   Check(RadianceOf(mapper) != first && AllFinite(RadianceOf(mapper)), "the clipping plane changed the preview");
-  Check(mapper->GetLightVolumeBuildCount() == 3, "the clipped grid has its own light volume");
+  Check(mapper->GetLightVolumeBuildCount() == 8, "the clipped grid has its own light volume");
   mapper->RemoveAllClippingPlanes();
   // Without an environment: the constant white sky, as the Monte Carlo mode.
   mapper->SetEnvironmentConnection(nullptr);

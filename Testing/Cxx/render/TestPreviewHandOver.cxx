@@ -106,3 +106,18 @@ TEST(PreviewHandOver, EdgeCases)
   EXPECT_THROW(vs::PreviewHandOver::PreviewShare(im.Preview, shorter, im.Variance, 9), std::logic_error);
   EXPECT_THROW(vs::PreviewHandOver::Blend(shorter, im.Preview, 0.5), std::logic_error);
 }
+
+// The share's cap in time (issue 39): 1 at the start, falling linearly to 0 at the hand-over's
+// duration, so the estimate is shown alone from 0.95 of it (the cap is then below EndShare); a
+// duration of 0 is no hand-over, a time not begun (negative, NaN) no cap yet.
+TEST(PreviewHandOver, ShareCapEndsTheHandOverInTime)
+{
+  EXPECT_EQ(vs::PreviewHandOver::ShareCap(0.0, 5.0), 1.0);
+  EXPECT_NEAR(vs::PreviewHandOver::ShareCap(2.5, 5.0), 0.5, 1e-12);
+  EXPECT_LT(vs::PreviewHandOver::ShareCap(0.951 * 5.0, 5.0), vs::PreviewHandOver::EndShare);
+  EXPECT_GT(vs::PreviewHandOver::ShareCap(0.949 * 5.0, 5.0), vs::PreviewHandOver::EndShare);
+  EXPECT_EQ(vs::PreviewHandOver::ShareCap(7.0, 5.0), 0.0);
+  EXPECT_EQ(vs::PreviewHandOver::ShareCap(1.0, 0.0), 0.0);
+  EXPECT_EQ(vs::PreviewHandOver::ShareCap(-1.0, 5.0), 1.0);
+  EXPECT_EQ(vs::PreviewHandOver::ShareCap(std::nan(""), 5.0), 1.0);
+}

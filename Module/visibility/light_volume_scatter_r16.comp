@@ -1,0 +1,5 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+/* One order of the light volume's multiple scattering (light_volume_scatter.glsl) from a visibility grid stored as r16. */
+#define VS_VIS_FORMAT r16
+#include "light_volume_scatter.glsl"
