@@ -58,6 +58,8 @@
 #include "vtkVersionMacros.h"
 #include "vtkVolumeProperty.h"
 #include "vtkWeakPointer.h"
+#include "vsSceneLights.h"
+#include "vsSurfaceScattering.h"
 
 #include <algorithm>
 #include <chrono>
@@ -93,6 +95,26 @@ void SetTransport(vs::shared::VsMonteCarloParams& p, int maxEvents, double aniso
   p.maxEvents = uint32_t(maxEvents);
   p.anisotropy = float(anisotropy);
 }
+
+// issue 38: hybrid scattering from the property's shading (ShadeOn, Diffuse, Specular, SpecularPower)
+// and the mapper's VolumetricScatteringBlending; the gradient normalised by the data's range (the
+// transfer function's table spans it) over the mean voxel spacing. Needs p.volume set.
+void SetSurface(vs::shared::VsMonteCarloParams& p, vtkVolumeProperty* property, double blending,
+  const vs::VolumeGeometry& geometry, double densityScale)
+{
+  vs::SurfaceScattering::Settings s;
+  s.Shade = property && property->GetShade(0);
+  s.Blending = blending;
+  if (property)
+  {
+    s.Diffuse = property->GetDiffuse(0);
+    s.Specular = property->GetSpecular(0);
+    s.SpecularPower = property->GetSpecularPower(0);
+  }
+  const double meanSpacing = (geometry.Spacing(0) + geometry.Spacing(1) + geometry.Spacing(2)) / 3.0;
+  vs::SurfaceScattering::Set(p, s, vs::SurfaceScattering::ScalarRange(p), meanSpacing,
+    property ? property->GetScalarOpacityUnitDistance(0) : 1.0, densityScale);
+}
 }
 
 void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars)
@@ -122,6 +144,7 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume
   try
   {
     SetTransport(p, this->MaximumScatteringEvents, this->ScatteringAnisotropy, property);
+    p.surface = property->GetShade(0) && this->VolumetricScatteringBlending < 2.0 ? 1u : 0u; // issue 38
   }
   catch (const vs::InputError&)
   {
@@ -267,6 +290,8 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   p.controlExtinction = uint32_t(this->ControlExtinction);
   p.pixelSampler = uint32_t(this->Sampler);
   SetTransport(p, this->MaximumScatteringEvents, this->ScatteringAnisotropy, vol->GetProperty());
+  SetSurface(p, vol->GetProperty(), this->VolumetricScatteringBlending, I.Scene->Geometry(), this->DensityScale); // issue 38
+  vs::SceneLights::Set(p, ren); // issue 38: the renderer's lights beside the environment
   p.mis = uint32_t(this->MultipleImportanceSampling);
   p.rouletteDepth = uint32_t(this->RussianRouletteDepth);
   if (this->LightEventRange[0] > 0 || this->LightEventRange[1] > 0)

@@ -12,6 +12,8 @@
 #include "vsMajorantGrid.h"
 #include "vsPipeline.h"
 #include "vsRenderTargetLimits.h"
+#include "vsSceneLightParams.h"
+#include "vsSurfaceScattering.h"
 #include "vsTransferFunctionTable.h"
 #include "vsVisibilityGrid.h"
 
@@ -92,7 +94,9 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
     table ? 1u : 0u, defensive ? 1u : 0u, this->EmptySpaceSkipping_ ? 1u : 0u, quads ? 1u : 0u, control,
     params.pixelSampler == shared::VS_SAMPLER_SOBOL ? 1u : 0u, factor, transmittance, FullTransport(params) ? 1u : 0u,
     // The loop budget only where the driver has a loop limiter (lavapipe's), from its driver id.
-    this->Context_->Info().LoopLimited() ? shared::VS_LOOP_BUDGET : NoLoopBudget };
+    this->Context_->Info().LoopLimited() ? shared::VS_LOOP_BUDGET : NoLoopBudget,
+    // issue 38: constant 16, hybrid scattering (vsSurfaceScattering.h); 17, VTK's lights (vsSceneLightParams.h).
+    SurfaceScattering::Enabled(params) ? 1u : 0u, SceneLightParams::Enabled(params) ? 1u : 0u };
   // A bounded set of variants (a host that churns settings would otherwise hold every pipeline it
   // ever used: issue 35, class 10): the least recently used goes, and the context's cache lets its
   // pipelines go once nothing holds them.
@@ -140,7 +144,9 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
           : (control & shared::VS_CONTROL_SHADOW) ? ", residual ratio tracking" : "") +
       ((control & shared::VS_CONTROL_CAMERA) ? ", decomposition tracking" : "") +
       (params.pixelSampler == shared::VS_SAMPLER_SOBOL ? ", Sobol" : "") + (factor ? ", gradient opacity" : "") +
-      (FullTransport(params) ? ", full transport" : "") + ")";
+      (FullTransport(params) ? ", full transport" : "") +
+      (SurfaceScattering::Enabled(params) ? ", surface scattering" : "") +
+      (SceneLightParams::Enabled(params) ? ", scene lights" : "") /* issue 38 */ + ")";
     if (format == 4)
     {
       pipeline = SharedPipeline(
@@ -184,7 +190,8 @@ bool MonteCarloPass::FullTransport(const shared::VsMonteCarloParams& params)
 {
   // Exactly single scattering with the isotropic phase keeps the single-scattering estimator (its
   // images are those of the kernel before full transport, bit for bit).
-  return params.maxEvents > 1u || params.anisotropy != 0.0f;
+  return params.maxEvents > 1u || params.anisotropy != 0.0f ||
+    SurfaceScattering::Enabled(params) || SceneLightParams::Enabled(params); // issue 38: in the path kernel
 }
 
 void MonteCarloPass::CheckScattering(const shared::VsMonteCarloParams& params)
@@ -303,6 +310,13 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     params.maxEvents = 1u; // 0: the parameters' zero value, single scattering
   }
   CheckScattering(params);
+  SurfaceScattering::Check(params); // issue 38
+  SceneLightParams::Check(params);
+  if (SurfaceScattering::Enabled(params))
+  {
+    // issue 38: the reservoir camera's event weight is not an albedo the surface lobe could colour.
+    params.cameraEstimator = shared::VS_CAMERA_COLLISION;
+  }
   const bool fullTransport = FullTransport(params);
   if (fullTransport && !this->PathPosition_)
   {
