@@ -129,8 +129,8 @@ TEST(SamplingMicrofacetHelper, DirectionalAlbedoAtMostOne)
       EXPECT_LE(mean, 1.0 + 4.0 * se) << "alpha " << lobe.alpha << " cos " << cosO;
       if (lobe.ks == 0.0f)
         EXPECT_NEAR(mean, lobe.kd, 1e-5) << "Lambert alone: every sample is kd exactly";
-      if (cosO == 1.0f && lobe.alpha <= 0.3f)
-        EXPECT_GT(mean, 0.95 * (lobe.kd + lobe.ks)) << "a smooth lobe loses little at normal incidence";
+      if (cosO == 1.0f && lobe.alpha <= 0.15f) // at 0.3, 8% of the normals reflect below the horizon
+        EXPECT_GT(mean, 0.95 * (lobe.kd + lobe.ks)) << "a smooth lobe loses little at normal incidence, alpha " << lobe.alpha;
     }
   }
 }
