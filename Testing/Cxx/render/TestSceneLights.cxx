@@ -108,13 +108,13 @@ TEST(SceneLights, DirectionalLightOnASlab)
   }
 }
 
-// A point light with inverse-square attenuation on the axis in front of an optically thin slab: the
+// A point light with inverse-square attenuation on the axis in front of a thin slab: the
 // radiance of the pixels against the single-scattering quadrature at light distances D and 2D (about a
 // factor 4 apart).
 TEST(SceneLights, PositionalLightFallsOffAsTheInverseSquare)
 {
   const uint32_t nx = 24, nz = 3; // slab z in [0, 2]
-  const double sigma = 0.01, a = 1.0;
+  const double sigma = 0.3, a = 1.0; // the quadrature has both transmittances exactly
   RenderScene scene({ { nx, nx, nz } }, [](int, int, int) { return 1.0f; }, sigma, glm::vec3(float(a)),
     vs::EnvironmentMap::Constant(16, glm::vec3(0.0f)));
   const double cx = 11.5, half = 0.25, Z = nz - 1.0;
@@ -143,7 +143,7 @@ TEST(SceneLights, PositionalLightFallsOffAsTheInverseSquare)
             std::exp(-sigma * inside) * Z / steps / 4.0;
         }
       }
-    EXPECT_LT(se, 0.01 * expected);
+    EXPECT_LT(se, 0.02 * expected);
     EXPECT_NEAR(m, expected, 4.0 * se + 1e-3 * expected) << "light at " << D;
     measured.push_back(m);
     expectations.push_back(expected);
