@@ -49,6 +49,7 @@ struct Scene
     this->Mapper->SetSamplesPerFrame(kSamples);
     this->Mapper->SetSamplingStrategyToEnvironment();
     this->Mapper->SetMaximumScatteringEvents(4);
+    this->Mapper->EnvironmentVisibleOff(); // the images' means are the volume's (lit by the sky still)
     this->Opacity->AddPoint(0.0, 0.0);
     this->Opacity->AddPoint(1.0, 0.6);
     this->Color->AddRGBPoint(0.0, 0.8, 0.8, 0.8);

@@ -172,6 +172,10 @@ int TestMapperShading(int, char*[])
     "Monte Carlo with Shade on warns nothing (the surface lobe honours it)");
   Check(std::string(m->GetLastError()).empty(), std::string("Monte Carlo with Shade on renders: ") + m->GetLastError());
   m->SetMaximumSamples(8);
+  // Environment sampling (Auto picks by measured speed: not reproducible) and no environment seen, so
+  // that the images' means are the volume's.
+  m->SetSamplingStrategyToEnvironment();
+  m->EnvironmentVisibleOff();
   auto radiance = [&](bool shade, double blending) {
     property->SetShade(shade ? 1 : 0);
     m->SetVolumetricScatteringBlending(blending);
@@ -192,7 +196,8 @@ int TestMapperShading(int, char*[])
   const std::vector<float> surface = radiance(true, 0.0);
   Check(!volumetric.empty() && volumetric == blendingTwo,
     "ShadeOn with VolumetricScatteringBlending 2 is ShadeOff's Monte Carlo image, bit for bit");
-  // The images' means (64^2 pixels x 8 samples: a standard error far below the lobe's change).
+  // The images' means (64^2 pixels x 8 samples: a standard error far below the lobe's change; measured
+  // 0.906 against 0.918 with the environment seen, the volume alone differs by more).
   auto mean = [](const std::vector<float>& v) {
     double sum = 0.0;
     for (float x : v)
