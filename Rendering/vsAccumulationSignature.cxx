@@ -35,7 +35,8 @@ std::vector<double> AccumulationSignature::Of(const vs::shared::VsMonteCarloPara
   // (samples of every stage of the grid are averaged; VisibilityGridUpdater).
   static_assert(sizeof(vs::shared::VsMonteCarloParams) == sizeof(vs::shared::VsCameraParams) +
         sizeof(vs::shared::VsVolumeParams) + sizeof(vs::shared::VsGridParams) + 5 * 16 +
-        vs::shared::VS_MAX_RENDER_DIRECTIONS * 4,
+        vs::shared::VS_MAX_RENDER_DIRECTIONS * 4 + 2 * 16 /* issue 38: surface */ +
+        16 + vs::shared::VS_MAX_SCENE_LIGHTS * 64 /* issue 38: lights */,
     "a member was added to VsMonteCarloParams: add it to the signature");
   static_assert(sizeof(vs::shared::VsVolumeParams) == 64 + 7 * 16 + vs::shared::VS_MAX_CLIP_PLANES * 16,
     "a member was added to VsVolumeParams: add it to the signature");
@@ -69,6 +70,20 @@ std::vector<double> AccumulationSignature::Of(const vs::shared::VsMonteCarloPara
     p.cellWalkDepth, double(p.shadowRays), double(p.cameraEstimator), double(p.transmittance), double(p.background),
     double(p.controlExtinction), double(p.pixelSampler), double(p.maxEvents), p.anisotropy, double(p.rouletteDepth),
     double(p.mis), double(p.lightEvents) });
+  // issue 38: hybrid scattering.
+  add({ double(p.surface), p.surfaceBlending, p.surfaceDiffuse, p.surfaceSpecular, p.surfaceRoughness,
+    p.gradientScale, p.opacityDistance });
+  // issue 38: VTK's lights (a light added, switched, moved or recoloured restarts the accumulation).
+  add({ double(p.lightCount) });
+  for (uint32_t i = 0; i < p.lightCount && i < vs::shared::VS_MAX_SCENE_LIGHTS; ++i)
+  {
+    const vs::shared::VsSceneLight& l = p.lights[i];
+    addVec(l.position);
+    addVec(l.direction);
+    addVec(l.irradiance);
+    addVec(l.attenuation);
+    add({ double(l.kind), l.cosCone, l.exponent });
+  }
   return s;
 }
 }

@@ -59,6 +59,8 @@
 #include "vtkVolumeProperty.h"
 #include "vtkWeakPointer.h"
 #include "vsKernelOptions.h"
+#include "vsSceneLights.h"
+#include "vsSurfaceScattering.h"
 
 #include <algorithm>
 #include <chrono>
@@ -108,6 +110,26 @@ void CopyKernelSettings(vtkVisibilitySweepVolumeMapper* m, vtkVolumeProperty* pr
     p.lightEvents = uint32_t(lo) | (uint32_t(hi) << 16);
   }
 }
+
+// issue 38: hybrid scattering from the property's shading (ShadeOn, Diffuse, Specular, SpecularPower)
+// and the mapper's VolumetricScatteringBlending; the gradient normalised by the data's range (the
+// transfer function's table spans it) over the mean voxel spacing. Needs p.volume set.
+void SetSurface(vs::shared::VsMonteCarloParams& p, vtkVolumeProperty* property, double blending,
+  const vs::VolumeGeometry& geometry, double densityScale)
+{
+  vs::SurfaceScattering::Settings s;
+  s.Shade = property && property->GetShade(0);
+  s.Blending = blending;
+  if (property)
+  {
+    s.Diffuse = property->GetDiffuse(0);
+    s.Specular = property->GetSpecular(0);
+    s.SpecularPower = property->GetSpecularPower(0);
+  }
+  const double meanSpacing = (geometry.Spacing(0) + geometry.Spacing(1) + geometry.Spacing(2)) / 3.0;
+  vs::SurfaceScattering::Set(p, s, vs::SurfaceScattering::ScalarRange(p), meanSpacing,
+    property ? property->GetScalarOpacityUnitDistance(0) : 1.0, densityScale);
+}
 }
 
 void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars)
@@ -131,6 +153,7 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume
   try
   {
     CopyKernelSettings(this, property, p);
+    p.surface = property->GetShade(0) && this->VolumetricScatteringBlending < 2.0 ? 1u : 0u; // issue 38
   }
   catch (const vs::InputError&)
   {
@@ -270,6 +293,8 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   const float squareScale = brightest > 0.0 && std::isfinite(1.0 / brightest) && 1.0 / brightest < 1e37
     ? float(1.0 / brightest) : 1.0f;
   p.squareScale = squareScale;
+  SetSurface(p, vol->GetProperty(), this->VolumetricScatteringBlending, I.Scene->Geometry(), this->DensityScale); // issue 38
+  vs::SceneLights::Set(p, ren); // issue 38: the renderer's lights beside the environment
   if (grid)
   {
     auto c = grid->Cells();

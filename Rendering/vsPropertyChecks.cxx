@@ -55,12 +55,10 @@ std::vector<std::string> PropertyChecks::Ignored(
                         "is not shaded, as in vtkGPUVolumeRayCastMapper: Ambient, Diffuse, Specular and "
                         "SpecularPower are ignored");
     }
-    else if (property->GetShade(0) && monteCarlo)
-    {
-      ignored.push_back("vtkVolumeProperty Shade is on, but the Monte Carlo mode lights the volume by single "
-                        "scattering of the environment, which replaces Phong shading: Ambient, Diffuse, Specular and "
-                        "SpecularPower are ignored (the emission-absorption mode shades)");
-    }
+    // The Monte Carlo mode honours Shade since issue 38 (hybrid scattering: Diffuse, Specular and
+    // SpecularPower shape the surface lobe; Ambient has no counterpart, the environment is the ambient
+    // light, docs/reference.md "Surface scattering"): nothing to warn.
+    (void)monteCarlo;
   }
   // Composite is light transport (or emission-absorption); MIP, MinIP, average and additive are
   // projections, rendered through the emission-absorption path. What is left is not supported.

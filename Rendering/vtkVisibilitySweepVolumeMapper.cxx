@@ -646,6 +646,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumScatteringEvents: " << this->MaximumScatteringEvents << "\n";
   os << indent << "PreviewScatteringOrders: " << this->PreviewScatteringOrders << "\n";
   os << indent << "ScatteringAnisotropy: " << this->ScatteringAnisotropy << "\n";
+  os << indent << "VolumetricScatteringBlending: " << this->VolumetricScatteringBlending << "\n";
   os << indent << "CameraEstimator: " << this->GetCameraEstimatorAsString() << "\n";
   os << indent << "ControlExtinction: " << this->GetControlExtinctionAsString() << "\n";
   os << indent << "TransmittanceEstimator: " << this->GetTransmittanceEstimatorAsString() << "\n";

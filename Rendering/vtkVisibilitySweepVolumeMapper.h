@@ -217,6 +217,20 @@ public:
   ///@}
 
   ///@{
+  /** Hybrid scattering (issue 38), with the vtkVolumeProperty's ShadeOn in the Monte Carlo mode: a
+   *  scattering event is, with a probability that grows with the normalised gradient magnitude and the
+   *  opacity, a surface event off the scalar's gradient (Lambert coloured by the colour transfer
+   *  function, plus a white GGX lobe: the property's Diffuse and Specular weigh them, SpecularPower sets
+   *  the roughness; docs/reference.md "Surface scattering"), else a volumetric one (the phase function).
+   *  VTK 9.2's vtkGPUVolumeRayCastMapper::VolumetricScatteringBlending, with its range and direction:
+   *  0 (its default) a surface wherever the gradient allows, 1 where it is strong and the medium opaque
+   *  (Exposure Render's rule), 2 volumetric only (the image of
+   *  ShadeOff, bit for bit). Clamped to [0, 2]. Ignored with ShadeOff. */
+  vtkSetClampMacro(VolumetricScatteringBlending, double, 0.0, 2.0);
+  vtkGetMacro(VolumetricScatteringBlending, double);
+  ///@}
+
+  ///@{
   /** The scattering event from which Russian roulette may end a path (full transport): it then
    *  survives with probability min(max(throughput), 0.95), its throughput divided by it (unbiased;
    *  the cap ends paths of albedo 1 too). Default 4 (docs/benchmarks.md measures 1 to 16). */
@@ -750,6 +764,7 @@ protected:
   int MaximumScatteringEvents = 1024;
   int PreviewScatteringOrders = 4;
   double ScatteringAnisotropy = 0.0;
+  double VolumetricScatteringBlending = 0.0; // issue 38
   int DirectionTableBuildCount = 0;
   int LightVolumeBuildCount = 0;
   double LastDirectionTableSeconds = 0.0;

@@ -281,6 +281,20 @@ Scene LoadScene(const RenderOptions& o)
     }
     scene.Render.Anisotropy = *o.Anisotropy;
   }
+  // issue 38: hybrid scattering.
+  if (o.ScatteringBlending)
+  {
+    if (!(*o.ScatteringBlending >= 0.0 && *o.ScatteringBlending <= 2.0))
+    {
+      throw std::runtime_error(
+        "--volumetric-scattering-blending must be in [0, 2], got " + std::to_string(*o.ScatteringBlending));
+    }
+    scene.Render.VolumetricScatteringBlending = *o.ScatteringBlending;
+  }
+  if (o.Shade)
+  {
+    scene.TransferFunction.Shade = true;
+  }
   return scene;
 }
 
@@ -508,6 +522,12 @@ void AddRender(CLI::App& app)
   cmd->add_option("--anisotropy", o->Anisotropy,
     "the Henyey-Greenstein phase function's g in (-1, 1): > 0 forward, < 0 backward scattering (overrides the "
     "scene's render.anisotropy, default 0)");
+  // issue 38: hybrid scattering.
+  cmd->add_flag("--shade", o->Shade,
+    "the volume property's shading on (transfer_function.shade): a surface lobe where the gradient is strong");
+  cmd->add_option("--volumetric-scattering-blending", o->ScatteringBlending,
+    "with shading: 0 a surface wherever the gradient allows, 1 where the gradient is strong and the medium opaque, 2 volumetric only (VTK 9.2's "
+    "VolumetricScatteringBlending; overrides render.volumetric_scattering_blending, default 0)");
   // CLI::NonNegativeNumber printed its bound as a 309-digit double ("not in range 0.000000 to 17976...").
   cmd->add_option("--seed", o->Seed, "random seed, 0 to 2147483647 (overrides the scene)")
     ->check(CLI::Range(0, std::numeric_limits<int>::max()));

@@ -118,7 +118,12 @@ vtkSmartPointer<vtkVolumeProperty> MakeVolumeProperty(const Scene& scene)
   {
     property->SetInterpolationTypeToLinear();
   }
-  property->ShadeOff();
+  // issue 38: the property's shading (the surface lobe in the Monte Carlo mode, Phong in the emission-absorption mode).
+  property->SetShade(tf.Shade ? 1 : 0);
+  property->SetAmbient(tf.Ambient);
+  property->SetDiffuse(tf.Diffuse);
+  property->SetSpecular(tf.Specular);
+  property->SetSpecularPower(tf.SpecularPower);
   return property;
 }
 
@@ -199,6 +204,7 @@ void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
   mapper->SetShadowRays(scene.Render.ShadowRays);
   mapper->SetMaximumScatteringEvents(scene.Render.MaxScatteringEvents);
   mapper->SetScatteringAnisotropy(scene.Render.Anisotropy);
+  mapper->SetVolumetricScatteringBlending(scene.Render.VolumetricScatteringBlending); // issue 38
   mapper->SetDirectionsPerFrame(scene.Render.DirectionsPerFrame);
   mapper->SetStaticInterval(scene.Render.StaticInterval);
   const auto& v = scene.Visibility;

@@ -118,6 +118,12 @@ Scene::TransferFunctionSection ParseTransferFunction(const json& value)
     s.GradientOpacity = Points<2>(
       v, "gradient_opacity", "[gradient magnitude, opacity]", "gradient magnitude", "magnitude", "a gradient magnitude");
   }
+  // issue 38: the property's shading.
+  v.Read("shade", s.Shade);
+  v.Read("ambient", s.Ambient);
+  v.Read("diffuse", s.Diffuse);
+  v.Read("specular", s.Specular);
+  v.Read("specular_power", s.SpecularPower);
   return s;
 }
 
@@ -229,6 +235,7 @@ Scene::RenderSection ParseRender(const json& value)
   v.Read("shadow_rays", s.ShadowRays);
   v.Read("max_scattering_events", s.MaxScatteringEvents);
   v.Read("anisotropy", s.Anisotropy);
+  v.Read("volumetric_scattering_blending", s.VolumetricScatteringBlending); // issue 38
   v.Read("control_extinction", s.ControlExtinction);
   v.Read("transmittance_estimator", s.TransmittanceEstimator);
   v.Read("sampler", s.Sampler);

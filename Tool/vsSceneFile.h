@@ -39,6 +39,9 @@ struct Scene
     double UnitDistance = 1.0;
     double DensityScale = 1.0;
     bool Nearest = false; // "interpolation": "nearest" (label maps); default "linear"
+    // issue 38: the property's shading (Shade, Ambient, Diffuse, Specular, SpecularPower; VTK's defaults).
+    bool Shade = false;
+    double Ambient = 0.1, Diffuse = 0.7, Specular = 0.2, SpecularPower = 10.0;
     // (|grad s| per world unit, opacity factor), magnitudes strictly increasing; empty = none
     std::vector<std::array<double, 2>> GradientOpacity;
     bool operator==(const TransferFunctionSection& o) const;
@@ -104,6 +107,7 @@ struct Scene
     // scattering) and the phase function's anisotropy (ScatteringAnisotropy, in (-1, 1)).
     int MaxScatteringEvents = 1024;
     double Anisotropy = 0.0;
+    double VolumetricScatteringBlending = 0.0; // issue 38: the mapper's, with transfer_function.shade
     // vtkVisibilitySweepVolumeMapper::RenderMode: "monte-carlo", "preview", "ambient-occlusion" or
     // "emission-absorption".
     std::string Mode = "monte-carlo";

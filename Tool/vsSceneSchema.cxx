@@ -56,6 +56,12 @@ const std::vector<SceneKey>& SceneSchema()
     { "transfer_function", "density_scale", T::Number, R::NonNegativeFloat, 0, kFloatMax, "1", false, "the density scale", "", {}, "multiplies the extinction" },
     { "transfer_function", "interpolation", T::Word, R::Any, 0, 0, "\"linear\"", false, "interpolation", "", { "linear", "nearest" }, "linear (trilinear) or nearest (label maps)" },
     { "transfer_function", "gradient_opacity", T::Points, R::Closed, 0, 1, nullptr, false, "opacity", "", {}, "[[gradient magnitude, g], ...], magnitudes at least 0, g in [0, 1]; absent = none" },
+    // issue 38: the vtkVolumeProperty's shading (the Monte Carlo mode's surface lobe, the emission-absorption mode's Phong).
+    { "transfer_function", "shade", T::Boolean, R::Any, 0, 0, "false", false, "", "", {}, "the property's Shade: a surface lobe where the gradient is strong (Monte Carlo), Phong (emission-absorption)" },
+    { "transfer_function", "ambient", T::Number, R::Closed, 0, 1, "0.1", false, "the ambient weight", "", {}, "the property's Ambient (emission-absorption only)" },
+    { "transfer_function", "diffuse", T::Number, R::Closed, 0, 1, "0.7", false, "the diffuse weight", "", {}, "the property's Diffuse" },
+    { "transfer_function", "specular", T::Number, R::Closed, 0, 1, "0.2", false, "the specular weight", "", {}, "the property's Specular" },
+    { "transfer_function", "specular_power", T::Number, R::Closed, 0, 128, "10", false, "the specular power", "", {}, "the property's SpecularPower (the surface lobe's roughness)" },
 
     { "environment", "file", T::File, R::Any, 0, 0, nullptr, false, "", "", {}, "a lat-long .exr or .hdr (one source of four)" },
     { "environment", "constant", T::Color, R::NonNegativeFloat, 0, kFloatMax, nullptr, false, "radiance", "", {}, "[r, g, b] radiance from every direction" },
@@ -98,6 +104,7 @@ const std::vector<SceneKey>& SceneSchema()
     { "render", "shadow_rays", T::Integer, R::Closed, 1, 64, "1", false, "shadow rays per scatter point", "", {}, "shadow rays per scatter point (splitting)" },
     { "render", "max_scattering_events", T::Integer, R::Closed, 1, double(vs::shared::VS_MAX_SCATTERING_EVENTS), "1024", false, "scattering events", "", {}, "the most scattering events a path may have (1: single scattering)" },
     { "render", "anisotropy", T::Number, R::Open, -1, 1, "0", false, "anisotropy", "", {}, "the Henyey-Greenstein phase function's g (> 0 forward, < 0 backward)" },
+    { "render", "volumetric_scattering_blending", T::Number, R::Closed, 0, 2, "0", false, "the volumetric scattering blending", "", {}, "with transfer_function.shade: 0 a surface wherever the gradient allows, 1 where the gradient is strong and the medium opaque, 2 volumetric only (VTK 9.2's)" },
 
     // The mapper's settings: absent = the mapper's default (vtkVisibilitySweepVolumeMapper.h).
     { "visibility", "direction_resolution", T::Integer, R::Closed, 1, 1024, nullptr, false, "resolution", "", {}, "directions per octahedral side: 4, 8 or 16" },

@@ -23,8 +23,10 @@ bool Scene::VolumeSection::operator==(const VolumeSection& o) const
 
 bool Scene::TransferFunctionSection::operator==(const TransferFunctionSection& o) const
 {
-  return std::tie(Opacity, Color, UnitDistance, DensityScale, Nearest, GradientOpacity) ==
-    std::tie(o.Opacity, o.Color, o.UnitDistance, o.DensityScale, o.Nearest, o.GradientOpacity);
+  return std::tie(Opacity, Color, UnitDistance, DensityScale, Nearest, GradientOpacity, Shade, Ambient, Diffuse,
+           Specular, SpecularPower) ==
+    std::tie(o.Opacity, o.Color, o.UnitDistance, o.DensityScale, o.Nearest, o.GradientOpacity, o.Shade, o.Ambient,
+      o.Diffuse, o.Specular, o.SpecularPower);
 }
 
 bool Scene::EnvironmentSection::operator==(const EnvironmentSection& o) const
@@ -62,7 +64,8 @@ bool Scene::RenderSection::operator==(const RenderSection& o) const
            Anisotropy) ==
     std::tie(o.Width, o.Height, o.Spp, o.Strategy, o.Seed, o.Exposure, o.ToneMapping, o.UpdateScheme,
       o.DirectionsPerFrame, o.StaticInterval, o.ControlExtinction, o.TransmittanceEstimator, o.Sampler,
-      o.ShadowRays, o.Mode, o.MaxScatteringEvents, o.Anisotropy);
+      o.ShadowRays, o.Mode, o.MaxScatteringEvents, o.Anisotropy) &&
+    VolumetricScatteringBlending == o.VolumetricScatteringBlending; // issue 38
 }
 
 bool Scene::VisibilitySection::operator==(const VisibilitySection& o) const
@@ -127,6 +130,12 @@ json ToJson(const Scene& s)
       tf["gradient_opacity"].push_back(json::array({ p[0], p[1] }));
     }
   }
+  // issue 38: the property's shading.
+  tf["shade"] = s.TransferFunction.Shade;
+  tf["ambient"] = s.TransferFunction.Ambient;
+  tf["diffuse"] = s.TransferFunction.Diffuse;
+  tf["specular"] = s.TransferFunction.Specular;
+  tf["specular_power"] = s.TransferFunction.SpecularPower;
   j["transfer_function"] = tf;
 
   const auto& e = s.Environment;
@@ -179,7 +188,8 @@ json ToJson(const Scene& s)
     { "control_extinction", s.Render.ControlExtinction },
     { "transmittance_estimator", s.Render.TransmittanceEstimator }, { "sampler", s.Render.Sampler },
     { "shadow_rays", s.Render.ShadowRays }, { "mode", s.Render.Mode },
-    { "max_scattering_events", s.Render.MaxScatteringEvents }, { "anisotropy", s.Render.Anisotropy } };
+    { "max_scattering_events", s.Render.MaxScatteringEvents }, { "anisotropy", s.Render.Anisotropy },
+    { "volumetric_scattering_blending", s.Render.VolumetricScatteringBlending } /* issue 38 */ };
 
   const auto& v = s.Visibility;
   json vis = json::object();

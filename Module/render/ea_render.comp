@@ -116,15 +116,7 @@ vec4 project(vec3 oi, vec3 di, vec2 t, float stepSize, uint blend, float jitter)
 /* Phong shading at index-space point x of a sample of colour albedo (VS_EA_SHADE). */
 vec3 shade(vec3 x, vec3 albedo, ivec3 dims, vec3 toEye)
 {
-  uint interpolation = P.volume.interpolation;
-  vec3 g = 0.5 * vec3(vs_sample(x + vec3(1.0, 0.0, 0.0), dims, interpolation) -
-                        vs_sample(x - vec3(1.0, 0.0, 0.0), dims, interpolation),
-                      vs_sample(x + vec3(0.0, 1.0, 0.0), dims, interpolation) -
-                        vs_sample(x - vec3(0.0, 1.0, 0.0), dims, interpolation),
-                      vs_sample(x + vec3(0.0, 0.0, 1.0), dims, interpolation) -
-                        vs_sample(x - vec3(0.0, 0.0, 1.0), dims, interpolation));
-  /* d s / d world = transpose(d index / d world) x d s / d index */
-  vec3 gw = transpose(mat3(P.volume.worldToIndex)) * g;
+  vec3 gw = vs_world_gradient(x, dims, P.volume.interpolation, P.volume.worldToIndex);
   float len = length(gw);
   vec3 color = P.ambient * albedo;
   if (len > 0.0 && !isnan(len) && !isinf(len))

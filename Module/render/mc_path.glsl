@@ -12,6 +12,9 @@
  *  - w_L and w_P by the power heuristic (mis.h); at the event limit there is no continuation and
  *    w_L = 1;
  *  - Russian roulette from gRouletteDepth events on (mis.h vs_roulette_survival).
+ * With VS_SPEC_SURFACE (hybrid scattering, surface_scattering.glsl) the phase function is the event's
+ * mixture of the phase and a surface BRDF on the gradient: next-event estimation evaluates the mixture's
+ * kernel, the continuation samples it (weight k / p), and w_P weighs its density against the light pdf.
  * Continuations do not see VTK's opaque geometry (only the camera ray stops at its depth), as the
  * shadow rays of single scattering never did.
  * Included once, by mc_render.glsl, after the single-scattering estimator's helpers (camera_ray,
@@ -86,15 +89,33 @@ bool path_segment(uvec2 pix, uint sampleIndex, float depth, uint perRay, inout P
     bool continues = events < gMaxEvents;
     bool weighted = continues && (gMis == VS_MIS_POWER || gMis == VS_MIS_BALANCE);
     prepare_directions(x, gStrategy, rng);
+    if (VS_SPEC_SURFACE != 0u)
+      surface_event(x, albedo); /* hybrid scattering: the event's surface probability and normal */
+    gShadowLeft = gShadowBudget;
     if (gMis != VS_MIS_PHASE_ONLY && events >= gLightLo && events <= gLightHi)
     {
       vec3 sum = light_samples(x, r.dw, sampleIndex, events == 1u, weighted, rng, sobolSeeds, perRay, shadowCost);
-      path.L.rgb += path.beta * albedo * sum / float(gShadowRays);
+      /* With the surface lobe the sum holds the event's kernel, albedo included. */
+      path.L.rgb += VS_SPEC_SURFACE != 0u ? path.beta * sum / float(gShadowRays)
+                                          : path.beta * albedo * sum / float(gShadowRays);
     }
+    /* issue 38: VTK's lights (delta lights: only next-event estimation finds them, in every MIS mode). */
+    if (VS_SPEC_LIGHTS != 0u && events >= gLightLo && events <= gLightHi)
+      path.L.rgb += path.beta * scene_light_samples(x, r.dw, albedo, rng, perRay, shadowCost);
     if (continues)
     {
       float phasePdf;
-      vec3 w = vs_sample_hg(r.dw, gAnisotropy, vs_rng_vec2(rng), phasePdf);
+      vec3 w;
+      vec3 weight = albedo; /* f_HG / p_HG = 1 */
+      if (VS_SPEC_SURFACE != 0u)
+      {
+        /* The mixture's direction; its weight k / p (p the mixture's density, against the light pdf below). */
+        vec3 k;
+        w = event_sample(r.dw, rng, k, phasePdf);
+        weight = phasePdf > 0.0 ? k / phasePdf : vec3(0.0);
+      }
+      else
+        w = vs_sample_hg(r.dw, gAnisotropy, vs_rng_vec2(rng), phasePdf);
       float escapeWeight = 1.0;
       if (gMis == VS_MIS_LIGHT_ONLY)
         escapeWeight = 0.0;
@@ -105,8 +126,10 @@ bool path_segment(uvec2 pix, uint sampleIndex, float depth, uint perRay, inout P
         escapeWeight = gMis == VS_MIS_POWER ? vs_power_heuristic(1.0, phasePdf, n, lightPdf)
                                             : vs_balance_heuristic(1.0, phasePdf, n, lightPdf);
       }
-      vec3 beta = path.beta * albedo; /* f_HG / p_HG = 1 */
+      vec3 beta = path.beta * weight;
       float q = vs_roulette_survival(beta, events, gRouletteDepth);
+      if (VS_SPEC_SURFACE != 0u && !any(greaterThan(beta, vec3(0.0))))
+        q = 0.0; /* a surface direction below the surface: nothing to carry */
       if (q >= 1.0 || vs_rng_float(rng) < q)
       {
         path.beta = beta / q;

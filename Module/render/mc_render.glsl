@@ -45,6 +45,7 @@
 #include "rng.h"
 #include "sobol.h"
 #include "strategies.h"
+#include "scene_lights.h"
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_ballot : require
@@ -63,6 +64,8 @@
 #include "shadow_transmittance.glsl"
 
 #include "camera_reservoir.glsl"
+
+#include "surface_scattering.glsl"
 
 /* ------------------------------------------------------------------ the loop budget */
 
@@ -156,7 +159,8 @@ CameraRay camera_ray(uvec2 pix, uint sampleIndex, float depth, inout VsRng rng, 
  * travelling along world direction dw: gShadowRays directions from the strategy, each with its
  * transmittance to the box. Returns the sum over them of T L_env / pdf (single scattering: the caller
  * multiplies by the isotropic phase), or, under full transport (VS_SPEC_PATH), of
- * T L_env f_HG w_L / pdf, w_L the MIS weight against the phase-sampled continuation where `weighted`
+ * T L_env f_HG w_L / pdf (with VS_SPEC_SURFACE, T L_env k w_L / pdf, k the event's mixture kernel with its
+ * albedo, surface_scattering.glsl), w_L the MIS weight against the phase-sampled continuation where `weighted`
  * (mis.h), else 1. Their mean over the rays is an unbiased estimate of the light in-scattered at x.
  * Under the Sobol sampler the first event's directions and the first two steps of each shadow ray's
  * tracking come from the pixel's Sobol sequences sobolSeeds.y and .z, indexed by the sample (a pixel's
@@ -191,6 +195,17 @@ vec3 light_samples(vec3 x, vec3 dw, uint sampleIndex, bool firstEvent, bool weig
 #endif
       if (VS_SPEC_PATH == 0u)
         sum += T * Le / pdf;
+      else if (VS_SPEC_SURFACE != 0u)
+      {
+        /* Hybrid scattering: the event's mixture kernel (albedo included) against its sampling density. */
+        float scatterPdf;
+        vec3 k = event_kernel(dw, w, scatterPdf);
+        float weight = 1.0;
+        if (weighted)
+          weight = gMis == VS_MIS_POWER ? vs_power_heuristic(float(gShadowRays), pdf, 1.0, scatterPdf)
+                                        : vs_balance_heuristic(float(gShadowRays), pdf, 1.0, scatterPdf);
+        sum += T * Le * k * (weight / pdf);
+      }
       else
       {
         float phase = vs_hg_pdf(dot(dw, w), gAnisotropy);
@@ -206,8 +221,11 @@ vec3 light_samples(vec3 x, vec3 dw, uint sampleIndex, bool firstEvent, bool weig
     shadowLeft -= min(shadowLeft, groupSteps);
     shadowCost += groupSteps + scatterCostPerRay;
   }
+  gShadowLeft = shadowLeft; /* issue 38: VTK's lights take what is left (scene_lights.glsl) */
   return sum;
 }
+
+#include "scene_lights.glsl"
 
 /* Single scattering with the isotropic phase (VS_SPEC_PATH 0): one sample of pixel `pix`, sample
  * `sampleIndex` of the image (its random numbers depend on the pixel, the sample index and the seed
@@ -319,6 +337,11 @@ void main()
   gLightHi = P.lightEvents == 0u ? 0xffffffffu : (P.lightEvents >> 16u);
   gRefineDepth = P.cellWalkDepth > 0.0 ? P.cellWalkDepth : 32.0;
   gInterpolation = VS_SPEC_INTERPOLATION;
+  if (VS_SPEC_SURFACE != 0u)
+    surface_load();
+  gLightCount = VS_SPEC_LIGHTS != 0u ? min(P.lightCount, VS_MAX_SCENE_LIGHTS) : 0u;
+  if (VS_SPEC_LIGHTS != 0u)
+    gIndexToWorld = inverse(P.volume.worldToIndex);
   vs_set_cropping(P.volume.cropLo, P.volume.cropHi, VS_SPEC_CROPPING != 0u ? P.volume.cropFlags : 0u);
 #ifndef VS_NO_GRID
   uvec4 cellHash = vs_pcg4d(uvec4(pix, gSeed, 0xce11u));
@@ -340,6 +363,8 @@ void main()
   /* Full transport: the continuation's phase sample and its light pdf (the strategy's descents again). */
   if (VS_SPEC_PATH != 0u)
     scatterCost += 16u + 2u * P.environmentLevels + 2u * P.grid.side + 8u;
+  if (VS_SPEC_LIGHTS != 0u)
+    scatterCost += gLightCount + 4u; /* issue 38: the lights' loop (their shadow rays count as rays below) */
   Path path = path_idle();
   if (VS_SPEC_PATH != 0u && inside)
     path = path_load(idx);
@@ -349,8 +374,10 @@ void main()
    * case, each ray at most VS_TRACKING_CAP: up to 6 rays keep that cap each (the budget holds them),
    * more share it so that one sample always fits (64 rays: ~800 steps each if all need them; a ray
    * that reaches its cap scores transmittance 0, as at VS_TRACKING_CAP). */
-  uint sampleFixed = VS_TRACKING_CAP + 1u + scatterCost + gShadowRays * (1u + perRay) + VS_START_COST + VS_SAMPLE_SLACK;
-  gShadowBudget = min(gShadowRays * VS_TRACKING_CAP, VS_SPEC_LOOP_BUDGET - min(sampleFixed + gShadowRays, VS_SPEC_LOOP_BUDGET));
+  /* issue 38: each of VTK's lights is one more shadow ray per event (scene_lights.glsl). */
+  uint eventRays = gShadowRays + gLightCount;
+  uint sampleFixed = VS_TRACKING_CAP + 1u + scatterCost + eventRays * (1u + perRay) + VS_START_COST + VS_SAMPLE_SLACK;
+  gShadowBudget = min(eventRays * VS_TRACKING_CAP, VS_SPEC_LOOP_BUDGET - min(sampleFixed + eventRays, VS_SPEC_LOOP_BUDGET));
   uint sampleMax = sampleFixed + gShadowBudget;
   uint cost = 0u;
   uint events = 0u; /* scattering events of this invocation's paths (full transport) */

@@ -36,6 +36,11 @@ layout(constant_id = VS_SPEC_ID_PATH) const uint VS_SPEC_PATH = 0u;    /* 0: sin
 layout(constant_id = VS_SPEC_ID_LOOP_BUDGET) const uint VS_SPEC_LOOP_BUDGET = VS_LOOP_BUDGET; /* the sample loop's budget of back-edges:
                                                              VS_LOOP_BUDGET where the driver has a loop limiter (lavapipe), else
                                                              none (1 << 30; vs::DeviceInfo::LoopLimited, vsMonteCarloPass) */
+layout(constant_id = VS_SPEC_ID_SURFACE) const uint VS_SPEC_SURFACE = 0u;  /* 1: hybrid scattering, a surface lobe where the gradient
+                                                             is strong (surface_scattering.glsl; = P.surface with a
+                                                             blending below 2); full transport only */
+layout(constant_id = VS_SPEC_ID_LIGHTS) const uint VS_SPEC_LIGHTS = 0u;   /* 1: VTK's lights beside the environment (scene_lights.glsl;
+                                                             P.lightCount > 0); full transport only */
 layout(constant_id = VS_SPEC_ID_TABLE) const uint VS_SPEC_TABLE = 0u;     /* 1: the grid strategies read the cell's direction
                                                              table (binding 12), stochastic cell only */
 layout(binding = VS_MC_VOLUME, r32f) uniform readonly image3D uVolume;
@@ -146,6 +151,7 @@ uint gRouletteDepth;
 uint gMis;
 uint gLightLo, gLightHi; /* P.lightEvents: next-event estimation at events gLightLo ..= gLightHi */
 uint gShadowBudget; /* tracking steps the shadow rays of one sample share (main) */
+uint gShadowLeft;   /* issue 38: what an event's environment shadow rays left of it (light_samples), for VTK's lights */
 uint gTableBase; /* where the scatter cell's direction table starts (VS_SPEC_TABLE) */
 /* The stochastic cell pick's numbers: the pixel's own, the same for all its samples (main).
  * Each pick is unbiased whatever the numbers (the sample is scored with the pdf of the cell it

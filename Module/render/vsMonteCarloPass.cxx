@@ -14,6 +14,8 @@
 #include "vsMajorantGrid.h"
 #include "vsPipeline.h"
 #include "vsRenderTargetLimits.h"
+#include "vsSceneLightParams.h"
+#include "vsSurfaceScattering.h"
 #include "vsTransferFunctionTable.h"
 #include "vsVisibilityGrid.h"
 
@@ -99,7 +101,10 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
     .Set(shared::VS_SPEC_ID_TRANSMITTANCE, transmittance)
     .Set(shared::VS_SPEC_ID_PATH, FullTransport(params) ? 1u : 0u)
     // The loop budget only where the driver has a loop limiter (lavapipe's), from its driver id.
-    .Set(shared::VS_SPEC_ID_LOOP_BUDGET, this->Context_->Info().LoopLimited() ? shared::VS_LOOP_BUDGET : NoLoopBudget);
+    .Set(shared::VS_SPEC_ID_LOOP_BUDGET, this->Context_->Info().LoopLimited() ? shared::VS_LOOP_BUDGET : NoLoopBudget)
+    // Hybrid scattering (vsSurfaceScattering.h) and VTK's lights (vsSceneLightParams.h), issue 38.
+    .Set(shared::VS_SPEC_ID_SURFACE, SurfaceScattering::Enabled(params) ? 1u : 0u)
+    .Set(shared::VS_SPEC_ID_LIGHTS, SceneLightParams::Enabled(params) ? 1u : 0u);
   const std::vector<uint32_t> specialization = spec.Values();
   // A bounded set of variants (a host that churns settings would otherwise hold every pipeline it
   // ever used: issue 35, class 10): the least recently used goes, and the context's cache lets its
@@ -149,7 +154,9 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
           : (control & shared::VS_CONTROL_SHADOW) ? ", residual ratio tracking" : "") +
       ((control & shared::VS_CONTROL_CAMERA) ? ", decomposition tracking" : "") +
       (sampler == shared::VS_SAMPLER_SOBOL ? ", Sobol" : "") + (factor ? ", gradient opacity" : "") +
-      (FullTransport(params) ? ", full transport" : "") + ")";
+      (FullTransport(params) ? ", full transport" : "") +
+      (SurfaceScattering::Enabled(params) ? ", surface scattering" : "") +
+      (SceneLightParams::Enabled(params) ? ", scene lights" : "") + ")";
     if (format == 4)
     {
       pipeline = SharedPipeline(
@@ -193,7 +200,8 @@ bool MonteCarloPass::FullTransport(const shared::VsMonteCarloParams& params)
 {
   // Exactly single scattering with the isotropic phase keeps the single-scattering estimator (its
   // images are those of the kernel before full transport, bit for bit).
-  return params.maxEvents > 1u || params.anisotropy != 0.0f;
+  return params.maxEvents > 1u || params.anisotropy != 0.0f ||
+    SurfaceScattering::Enabled(params) || SceneLightParams::Enabled(params); // issue 38: in the path kernel
 }
 
 void MonteCarloPass::CheckScattering(const shared::VsMonteCarloParams& params)
@@ -303,6 +311,13 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     params.maxEvents = 1u; // 0: the parameters' zero value, single scattering
   }
   CheckScattering(params);
+  SurfaceScattering::Check(params); // issue 38
+  SceneLightParams::Check(params);
+  if (SurfaceScattering::Enabled(params))
+  {
+    // issue 38: the reservoir camera's event weight is not an albedo the surface lobe could colour.
+    params.cameraEstimator = shared::VS_CAMERA_COLLISION;
+  }
   const bool fullTransport = FullTransport(params);
   if (fullTransport && !this->PathPosition_)
   {

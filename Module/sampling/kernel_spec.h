@@ -27,7 +27,9 @@ VS_CONST uint VS_SPEC_ID_FACTOR = 12u;       /* 1: the extinction scaled by the 
 VS_CONST uint VS_SPEC_ID_TRANSMITTANCE = 13u; /* VS_TRANSMITTANCE_* */
 VS_CONST uint VS_SPEC_ID_PATH = 14u;         /* 1: full transport (event limit > 1 or anisotropic phase) */
 VS_CONST uint VS_SPEC_ID_LOOP_BUDGET = 15u;  /* the sample loop's budget of back-edges */
-VS_CONST uint VS_SPEC_ID_COUNT = 16u;        /* ids 0 .. VS_SPEC_ID_COUNT - 1, each set by the host */
+VS_CONST uint VS_SPEC_ID_SURFACE = 16u;      /* 1: hybrid scattering, a surface lobe (issue 38) */
+VS_CONST uint VS_SPEC_ID_LIGHTS = 17u;       /* 1: VTK's lights beside the environment (issue 38) */
+VS_CONST uint VS_SPEC_ID_COUNT = 18u;        /* ids 0 .. VS_SPEC_ID_COUNT - 1, each set by the host */
 
 VS_NAMESPACE_END
 

@@ -7,6 +7,7 @@
 #define VS_MC_PARAMS_H
 #include "camera_params.h"
 #include "grid_params.h"
+#include "scene_lights.h"
 #include "volume_params.h"
 
 VS_NAMESPACE_BEGIN
@@ -105,6 +106,24 @@ struct VsMonteCarloParams
   uvec4 directionSources[VS_MAX_RENDER_DIRECTIONS / 4u]; /* entry n (component n % 4 of element n / 4): the
                         grid direction whose values direction n reads (VisibilityGrid::DirectionSources;
                         direction_map.glsl); MonteCarloPass sets it from the grid */
+  /* ---- issue 38: hybrid scattering (surface_scattering.glsl, microfacet.h). Added at the end. ---- */
+  uint surface;            /* 1: a scattering event may scatter off the gradient's surface (the property's
+                              ShadeOn; the kernel's VS_SPEC_SURFACE); 0: the phase function alone */
+  float surfaceBlending;   /* VTK 9.2's VolumetricScatteringBlending in [0, 2] (vs_surface_probability):
+                              0 a surface wherever the gradient allows, 2 volumetric only */
+  float surfaceDiffuse;    /* the lobe's diffuse weight (times the albedo) and specular weight, kd + ks <= 1 */
+  float surfaceSpecular;   /*   (vs_surface_weights of the property's Diffuse and Specular) */
+  float surfaceRoughness;  /* GGX alpha (vs_roughness_from_specular_power of SpecularPower) */
+  float gradientScale;     /* |grad s|_n = min(1, |grad s| gradientScale), |grad s| per world unit: the mean
+                              voxel spacing / (0.25 x the data's scalar range), vtkGPUVolumeRayCastMapper's */
+  float opacityDistance;   /* the opacity at the event is 1 - exp(-sigma_t opacityDistance): the unit distance
+                              over the density scale, so that it is the transfer function's alpha */
+  uint surfacePad;
+  /* ---- issue 38: VTK's lights (scene_lights.h, scene_lights.glsl), beside the environment. ---- */
+  uint lightCount;         /* lights[0 .. lightCount) are lit by next-event estimation at every event (the
+                              kernel's VS_SPEC_LIGHTS); 0: the environment alone */
+  uint lightPad0, lightPad1, lightPad2;
+  VsSceneLight lights[VS_MAX_SCENE_LIGHTS];
 };
 
 VS_NAMESPACE_END

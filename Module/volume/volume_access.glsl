@@ -82,6 +82,22 @@ float vs_sample(vec3 p, ivec3 dims, uint interpolation)
   return interpolation == VS_INTERPOLATION_NEAREST ? vs_sample_nearest(p, dims) : vs_sample_scalar(p, dims);
 }
 
+/* The gradient of the scalar at index-space point x, in world units (scalar per world unit): central
+ * differences of vs_sample one voxel either side per axis, d s / d world = transpose(d index / d world)
+ * d s / d index. NaN where a difference reads a hidden cropping region or a non-finite voxel. The
+ * emission-absorption pass's Phong shading (ea_render.comp) and the path kernel's surface lobe
+ * (surface_scattering.glsl) both take their normal from it. */
+vec3 vs_world_gradient(vec3 x, ivec3 dims, uint interpolation, mat4 worldToIndex)
+{
+  vec3 g = 0.5 * vec3(vs_sample(x + vec3(1.0, 0.0, 0.0), dims, interpolation) -
+                        vs_sample(x - vec3(1.0, 0.0, 0.0), dims, interpolation),
+                      vs_sample(x + vec3(0.0, 1.0, 0.0), dims, interpolation) -
+                        vs_sample(x - vec3(0.0, 1.0, 0.0), dims, interpolation),
+                      vs_sample(x + vec3(0.0, 0.0, 1.0), dims, interpolation) -
+                        vs_sample(x - vec3(0.0, 0.0, 1.0), dims, interpolation));
+  return transpose(mat3(worldToIndex)) * g;
+}
+
 #ifdef VS_FACTOR_IMAGE
 /* The extinction factor at continuous index p, interpolated as the scalar is (vs_sample_scalar's
  * trilinear weights, or the nearest voxel), clamped to the volume. */

@@ -1,0 +1,83 @@
+#include "vsSceneLights.h"
+#include "vsSceneLightParams.h"
+
+#include "vtkCamera.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMatrix4x4.h"
+#include "vtkRenderer.h"
+
+#include <glm/glm.hpp>
+
+namespace vs
+{
+bool SceneLights::IsAutomaticHeadlight(vtkLight* light)
+{
+  const double* c = light->GetDiffuseColor();
+  return light->LightTypeIsHeadlight() && light->GetIntensity() == 1.0 && c[0] == 1.0 && c[1] == 1.0 &&
+    c[2] == 1.0 && !light->GetPositional();
+}
+
+int SceneLights::Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer)
+{
+  params.lightCount = 0u;
+  vtkLightCollection* lights = renderer ? renderer->GetLights() : nullptr;
+  vtkCamera* camera = renderer ? renderer->GetActiveCamera() : nullptr;
+  if (!lights || !camera)
+  {
+    return 0;
+  }
+  int leftOut = 0;
+  lights->InitTraversal();
+  for (vtkLight* light = lights->GetNextItem(); light; light = lights->GetNextItem())
+  {
+    if (!light->GetSwitch() || light->GetIntensity() <= 0.0 || IsAutomaticHeadlight(light))
+    {
+      continue;
+    }
+    if (params.lightCount >= shared::VS_MAX_SCENE_LIGHTS)
+    {
+      ++leftOut;
+      continue;
+    }
+    glm::dvec3 position, focal;
+    if (light->LightTypeIsHeadlight())
+    {
+      // VTK moves a headlight to the camera at every render (vtkRenderer::UpdateLightsGeometryToFollowCamera).
+      const double* p = camera->GetPosition();
+      const double* f = camera->GetFocalPoint();
+      position = glm::dvec3(p[0], p[1], p[2]);
+      focal = glm::dvec3(f[0], f[1], f[2]);
+    }
+    else if (light->LightTypeIsCameraLight())
+    {
+      // Camera coordinates (the camera at the origin looking down -z, y up) through the camera's light
+      // transform, as VTK places them.
+      vtkMatrix4x4* m = camera->GetCameraLightTransformMatrix();
+      const double* p = light->GetPosition();
+      const double* f = light->GetFocalPoint();
+      double pin[4] = { p[0], p[1], p[2], 1.0 }, fin[4] = { f[0], f[1], f[2], 1.0 }, pout[4], fout[4];
+      m->MultiplyPoint(pin, pout);
+      m->MultiplyPoint(fin, fout);
+      position = glm::dvec3(pout[0], pout[1], pout[2]) / pout[3];
+      focal = glm::dvec3(fout[0], fout[1], fout[2]) / fout[3];
+    }
+    else
+    {
+      const double* p = light->GetTransformedPosition();
+      position = glm::dvec3(p[0], p[1], p[2]);
+      const double* f = light->GetTransformedFocalPoint();
+      focal = glm::dvec3(f[0], f[1], f[2]);
+    }
+    const double* c = light->GetDiffuseColor();
+    const double* a = light->GetAttenuationValues();
+    shared::VsSceneLight l;
+    if (SceneLightParams::Make(l, light->GetPositional() != 0, position, focal, light->GetIntensity(),
+          glm::dvec3(c[0], c[1], c[2]), light->GetConeAngle(), light->GetExponent(), glm::dvec3(a[0], a[1], a[2])))
+    {
+      params.lights[params.lightCount++] = l;
+    }
+  }
+  return leftOut;
+}
+}
