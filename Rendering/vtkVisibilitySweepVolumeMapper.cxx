@@ -691,6 +691,12 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "DrawImage: " << (this->DrawImage ? "On" : "Off") << "\n";
   os << indent << "RadianceCombiner: " << (this->Impl->Combiner ? "set" : "none") << "\n";
   os << indent << "LastDeviceSeconds: " << this->LastDeviceSeconds << "\n";
+  os << indent << "NumberOfLastFramePhases: " << this->GetNumberOfLastFramePhases() << "\n";
+  for (int i = 0; i < this->GetNumberOfLastFramePhases(); ++i)
+  {
+    os << indent.GetNextIndent() << this->GetLastFramePhaseName(i) << ": " << this->GetLastFramePhaseSeconds(i)
+       << " s\n";
+  }
   os << indent << "LastMajorantSeconds: " << this->LastMajorantSeconds << "\n";
   os << indent << "GradientOpacity: "
      << (this->Impl->Scene && this->Impl->Scene->HasGradientOpacity()

@@ -46,6 +46,9 @@ reader = pvs.XMLImageDataReader(FileName=[volume])
 view = pvs.CreateView("RenderView")
 view.ViewSize = [64, 64]
 view.OrientationAxesVisibility = 0
+# ParaView's Light Kit (on by default) lights a VisSweep volume beside the environment (VTK's lights,
+# issue 38), as it does OSPRay's path tracer; the tool's scene has the environment alone.
+view.UseLight = 0
 display = pvs.Show(reader, view)
 check("VisSweep Volume" in display.GetProperty("Representation").Available
       if hasattr(display.GetProperty("Representation"), "Available") else True,

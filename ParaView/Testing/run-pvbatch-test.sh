@@ -37,7 +37,7 @@ else
 fi
 for message in 'SamplesPerFrame 0 is outside \[1, 65536\]: the mapper uses 1' 'Exposure nan is refused' \
     'has no grid named "no-such-grid"' \
-    'ScatteringAnisotropy 1.5 is outside (-1, 1)' 'ScatteringAnisotropy (the Henyey-Greenstein g) must be in (-1, 1), got 1.5'; do
+    'ScatteringAnisotropy 1.5 is outside (-1, 1)' 'ScatteringAnisotropy (the Henyey-Greenstein anisotropy g) must be in (-1, 1), got 1.5'; do
   if grep -q "$message" "$out/pvbatch.stderr"; then
     echo "ok   an out-of-range setting is reported: $(grep -m1 "$message" "$out/pvbatch.stderr" | sed 's/.*| //' | cut -c1-160)"
   else
