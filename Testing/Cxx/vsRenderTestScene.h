@@ -10,9 +10,14 @@
 #include "vsEnvironmentMap.h"
 #include "vsMonteCarloPass.h"
 #include "vsVolumeParams.h"
+#include "vsError.h"
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace vstest
@@ -137,6 +142,56 @@ inline Agreement Compare(const std::vector<float>& a, const std::vector<double>&
     }
   }
   return r;
+}
+
+// Every pixel's mean against one `expected` value for every pixel and colour channel (alpha left
+// out): the sum of z^2 over those with variance, their count, and the largest |mean - expected|.
+// A pixel without variance must be exact (within 1e-5).
+struct Against
+{
+  double chi2 = 0.0, maxError = 0.0;
+  int dof = 0;
+  double Bound() const { return dof + 4.0 * std::sqrt(2.0 * dof) + 20.0; }
+};
+
+inline Against AgainstConstant(const std::vector<float>& mean, const std::vector<double>& var, double n, double expected)
+{
+  Against r;
+  for (size_t i = 0; i < mean.size(); ++i)
+  {
+    if (i % 4 == 3)
+      continue;
+    r.maxError = std::max(r.maxError, std::abs(double(mean[i]) - expected));
+    const double se2 = var[i] / n;
+    if (se2 > 0.0)
+    {
+      r.chi2 += (mean[i] - expected) * (mean[i] - expected) / se2;
+      ++r.dof;
+    }
+    else if (std::abs(double(mean[i]) - expected) > 1e-5)
+    {
+      r.chi2 += 1e9;
+    }
+  }
+  return r;
+}
+
+// Bad settings: rendering `p` throws an InputError whose message contains `words`, and the pass
+// keeps no sample.
+inline void ExpectInputError(RenderScene& scene, const vs::shared::VsMonteCarloParams& p, const std::string& words)
+{
+  vs::MonteCarloPass pass(scene.Context);
+  pass.Reset(4, 4);
+  try
+  {
+    pass.Render(*scene.Volume, *scene.TF, *scene.Majorants, scene.Grid.get(), *scene.Environment, p, {});
+    ADD_FAILURE() << "no error for " << words;
+  }
+  catch (const vs::InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(pass.Samples(), 0u);
 }
 }
 

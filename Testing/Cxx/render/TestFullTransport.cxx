@@ -3,6 +3,7 @@
 // estimators against each other (light sampling alone, phase sampling alone, both by the power and
 // the balance heuristic, every strategy), the phase's direction, reproducibility whatever the split
 // into dispatches, and the single-scattering estimator kept at one event.
+#include "vsHalfSpace.h"
 #include "vsRenderTestScene.h"
 #include "vsError.h"
 
@@ -16,6 +17,8 @@
 #include <vector>
 
 using namespace vs::shared;
+using vstest::Against;
+using vstest::AgainstConstant;
 using vstest::RenderScene;
 
 namespace
@@ -34,96 +37,6 @@ float Phantom(int x, int y, int z)
     s += 0.3f;
   return std::min(s, 1.0f);
 }
-
-// Sum over pixels and channels of z^2 of each pixel's mean against `expected` (one value for every
-// pixel and channel), its degrees of freedom, and the largest |mean - expected|.
-struct Against
-{
-  double chi2 = 0.0, maxError = 0.0;
-  int dof = 0;
-  double Bound() const { return dof + 4.0 * std::sqrt(2.0 * dof) + 20.0; }
-};
-
-Against AgainstConstant(const std::vector<float>& mean, const std::vector<double>& var, double n, double expected)
-{
-  Against r;
-  for (size_t i = 0; i < mean.size(); ++i)
-  {
-    if (i % 4 == 3)
-      continue;
-    r.maxError = std::max(r.maxError, std::abs(double(mean[i]) - expected));
-    const double se2 = var[i] / n;
-    if (se2 > 0.0)
-    {
-      r.chi2 += (mean[i] - expected) * (mean[i] - expected) / se2;
-      ++r.dof;
-    }
-    else if (std::abs(double(mean[i]) - expected) > 1e-5)
-    {
-      r.chi2 += 1e9; // a pixel without variance must be exact
-    }
-  }
-  return r;
-}
-
-// Chandrasekhar's H function of isotropic scattering with albedo a on [0, 1], from its integral
-// equation 1/H(mu) = sqrt(1 - a) + (a/2) int_0^1 mu' H(mu') / (mu + mu') dmu', by fixed-point
-// iteration on a Gauss-Legendre rule (Chandrasekhar, Radiative Transfer, ch. V).
-struct HFunction
-{
-  std::vector<double> x, w, h;
-  double a;
-  explicit HFunction(double albedo)
-    : a(albedo)
-  {
-    // 64-point Gauss-Legendre on [0, 1] by Newton's method on P_n.
-    const int n = 64;
-    for (int i = 0; i < n; ++i)
-    {
-      double z = std::cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 0.0;
-      for (int it = 0; it < 100; ++it)
-      {
-        double p0 = 1.0, p1 = z;
-        for (int k = 2; k <= n; ++k)
-        {
-          const double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
-          p0 = p1;
-          p1 = p2;
-        }
-        dp = n * (z * p1 - p0) / (z * z - 1.0);
-        const double dz = p1 / dp;
-        z -= dz;
-        if (std::abs(dz) < 1e-15)
-          break;
-      }
-      x.push_back(0.5 * (1.0 - z));
-      w.push_back(1.0 / ((1.0 - z * z) * dp * dp));
-    }
-    h.assign(n, 1.0);
-    for (int it = 0; it < 20000; ++it)
-    {
-      double change = 0.0;
-      for (int i = 0; i < n; ++i)
-      {
-        const double v = 1.0 / this->Inverse(x[i]);
-        change = std::max(change, std::abs(v - h[i]));
-        h[i] = v;
-      }
-      if (change < 1e-13)
-        break;
-    }
-  }
-  double Inverse(double mu) const
-  {
-    double s = 0.0;
-    for (size_t j = 0; j < x.size(); ++j)
-      s += w[j] * x[j] * h[j] / (mu + x[j]);
-    return std::sqrt(1.0 - a) + 0.5 * a * s;
-  }
-  double operator()(double mu) const { return 1.0 / this->Inverse(mu); }
-  // The radiance reflected towards cosine mu by the half-space under a uniform sky of radiance 1.
-  double Reflected(double mu) const { return 1.0 - std::sqrt(1.0 - a) * (*this)(mu); }
-};
 
 // An orthographic camera whose rays travel along (0, sin t, cos t), centred on `centre`, covering
 // `half` world units either side: a view of the z = min face at cos(angle) = cos t to its normal.
@@ -144,7 +57,7 @@ TEST(FullTransport, ChandrasekharHFunction)
   const double albedo[] = { 0.9, 0.95, 0.99 }, at1[] = { 0.415, 0.536, 0.753 }, atHalf[] = { 0.508, 0.626, 0.815 };
   for (int i = 0; i < 3; ++i)
   {
-    HFunction H(albedo[i]);
+    vstest::ChandrasekharH H(albedo[i]);
     EXPECT_NEAR(H.Reflected(1.0), at1[i], 1.5e-3) << albedo[i];
     EXPECT_NEAR(H.Reflected(0.5), atHalf[i], 1.5e-3) << albedo[i];
   }
@@ -209,7 +122,7 @@ TEST(FullTransport, ChandrasekharHalfSpace)
   {
     RenderScene scene({ { nx, nx, nz } }, [](int, int, int) { return 1.0f; }, sigma, glm::vec3(float(a)),
       vs::EnvironmentMap::Constant(16, glm::vec3(1.0f)));
-    const HFunction H(a);
+    const vstest::ChandrasekharH H(a);
     for (double mu : { 1.0, 0.5 })
     {
       for (uint32_t events : { VS_MAX_SCATTERING_EVENTS, 1u })
@@ -368,19 +281,8 @@ TEST(FullTransport, BadSettingsAreErrors)
 {
   RenderScene scene({ { 8, 8, 8 } }, [](int, int, int) { return 0.5f; }, 1.0, glm::vec3(0.9f),
     vs::EnvironmentMap::Constant(16, glm::vec3(1.0f)));
-  auto expectError = [&](vs::shared::VsMonteCarloParams p, const std::string& words) {
-    vs::MonteCarloPass pass(scene.Context);
-    pass.Reset(4, 4);
-    try
-    {
-      pass.Render(*scene.Volume, *scene.TF, *scene.Majorants, scene.Grid.get(), *scene.Environment, p, {});
-      ADD_FAILURE() << "no error for " << words;
-    }
-    catch (const vs::InputError& e)
-    {
-      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-    }
-    EXPECT_EQ(pass.Samples(), 0u);
+  auto expectError = [&](const vs::shared::VsMonteCarloParams& p, const std::string& words) {
+    vstest::ExpectInputError(scene, p, words);
   };
   auto p = scene.Params(4, 4, 0.0f, 7.0f, VS_STRATEGY_ENVIRONMENT, 4, 1u);
   for (float g : { 1.0f, -1.0f, 1.5f, std::nanf(""), INFINITY })

@@ -2,6 +2,7 @@
 // scattering from the light volume against the 1D quadrature of a homogeneous box's single scattering
 // under a constant sky (the light volume's analytic values, as TestLightVolume has them); the preview
 // is deterministic (no jitter, no random stream); ambient occlusion is the preview under a white sky.
+#include "vsHalfSpace.h"
 #include "vsOrthoCamera.h"
 #include "vsVisibilityTestScene.h"
 
@@ -422,54 +423,6 @@ vs::LightVolume::MultipleScattering Scattering(const VisibilityScene& scene, con
   return m;
 }
 
-// Chandrasekhar's H function of isotropic scattering with albedo a (as TestFullTransport solves it:
-// 1/H(mu) = sqrt(1 - a) + (a/2) int_0^1 mu' H(mu') / (mu + mu') dmu', fixed point on Gauss-Legendre).
-double ReflectedHalfSpace(double a, double mu)
-{
-  const int n = 64;
-  std::vector<double> x, w;
-  for (int i = 0; i < n; ++i)
-  {
-    double z = std::cos(Pi * (i + 0.75) / (n + 0.5)), dp = 0.0;
-    for (int it = 0; it < 100; ++it)
-    {
-      double p0 = 1.0, p1 = z;
-      for (int k = 2; k <= n; ++k)
-      {
-        const double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (z * p1 - p0) / (z * z - 1.0);
-      const double dz = p1 / dp;
-      z -= dz;
-      if (std::abs(dz) < 1e-15)
-        break;
-    }
-    x.push_back(0.5 * (1.0 - z));
-    w.push_back(1.0 / ((1.0 - z * z) * dp * dp));
-  }
-  std::vector<double> h(n, 1.0);
-  const auto inverse = [&](double m) {
-    double s = 0.0;
-    for (int j = 0; j < n; ++j)
-      s += w[j] * x[j] * h[j] / (m + x[j]);
-    return std::sqrt(1.0 - a) + 0.5 * a * s;
-  };
-  for (int it = 0; it < 20000; ++it)
-  {
-    double change = 0.0;
-    for (int i = 0; i < n; ++i)
-    {
-      const double v = 1.0 / inverse(x[i]);
-      change = std::max(change, std::abs(v - h[i]));
-      h[i] = v;
-    }
-    if (change < 1e-13)
-      break;
-  }
-  return 1.0 - std::sqrt(1.0 - a) / inverse(mu);
-}
 }
 
 // The white furnace: a medium of albedo 1 under a constant sky L has radiance L everywhere (full
@@ -576,7 +529,7 @@ TEST(PreviewFullTransport, ChandrasekharHalfSpace)
   {
     SetAlbedo(scene, sigma, glm::dvec3(a));
     p.volume = vs::MakeVolumeParams(scene.Geometry, *scene.TF, vs::shared::VS_INTERPOLATION_LINEAR, {});
-    const double expected = ReflectedHalfSpace(a, 1.0);
+    const double expected = vstest::ChandrasekharH(a).Reflected(1.0);
     double mean[2] = { 0.0, 0.0 };
     for (int full = 0; full < 2; ++full)
     {

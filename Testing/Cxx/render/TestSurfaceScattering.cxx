@@ -17,6 +17,8 @@
 #include <vector>
 
 using namespace vs::shared;
+using vstest::Against;
+using vstest::AgainstConstant;
 using vstest::RenderScene;
 
 namespace
@@ -46,32 +48,6 @@ void SetSurface(VsMonteCarloParams& p, double blending, double diffuse, double s
   vs::SurfaceScattering::Set(p, s, 1.0, 1.0, 1.0, 1.0);
 }
 
-struct Against
-{
-  double chi2 = 0.0, maxError = 0.0;
-  int dof = 0;
-  double Bound() const { return dof + 4.0 * std::sqrt(2.0 * dof) + 20.0; }
-};
-
-Against AgainstConstant(const std::vector<float>& mean, const std::vector<double>& var, double n, double expected)
-{
-  Against r;
-  for (size_t i = 0; i < mean.size(); ++i)
-  {
-    if (i % 4 == 3)
-      continue;
-    r.maxError = std::max(r.maxError, std::abs(double(mean[i]) - expected));
-    const double se2 = var[i] / n;
-    if (se2 > 0.0)
-    {
-      r.chi2 += (mean[i] - expected) * (mean[i] - expected) / se2;
-      ++r.dof;
-    }
-    else if (std::abs(double(mean[i]) - expected) > 1e-5)
-      r.chi2 += 1e9;
-  }
-  return r;
-}
 }
 
 // Albedo 1 under a constant sky of radiance 1, with a Lambert surface lobe of albedo 1 (Diffuse 1,
@@ -199,19 +175,8 @@ TEST(SurfaceScattering, BadSettingsAreErrors)
 {
   RenderScene scene({ { 8, 8, 8 } }, [](int, int, int) { return 0.5f; }, 1.0, glm::vec3(0.9f),
     vs::EnvironmentMap::Constant(16, glm::vec3(1.0f)));
-  auto expectError = [&](VsMonteCarloParams p, const std::string& words) {
-    vs::MonteCarloPass pass(scene.Context);
-    pass.Reset(4, 4);
-    try
-    {
-      pass.Render(*scene.Volume, *scene.TF, *scene.Majorants, scene.Grid.get(), *scene.Environment, p, {});
-      ADD_FAILURE() << "no error for " << words;
-    }
-    catch (const vs::InputError& e)
-    {
-      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-    }
-    EXPECT_EQ(pass.Samples(), 0u);
+  auto expectError = [&](const vs::shared::VsMonteCarloParams& p, const std::string& words) {
+    vstest::ExpectInputError(scene, p, words);
   };
   auto p = scene.Params(4, 4, 0.0f, 7.0f, VS_STRATEGY_ENVIRONMENT, 4, 1u);
   SetSurface(p, 0.0, 1.0, 0.0, 10.0);
