@@ -169,32 +169,43 @@ void StagedUpload::Submit()
   vk::CommandBufferBeginInfo bi;
   bi.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit;
   cmd.begin(bi);
+  // Each chunk's command buffer moves the images to TRANSFER_DST_OPTIMAL and back to GENERAL (their
+  // resting layout, for the shaders), so chunks of several threads may follow each other in any order.
+  auto barriers = [&](vk::ImageLayout from, vk::ImageLayout to, vk::AccessFlags src, vk::AccessFlags dst) {
+    std::vector<vk::ImageMemoryBarrier> list;
+    for (const Image3D* image : this->Images_)
+    {
+      vk::ImageMemoryBarrier b;
+      b.srcAccessMask = src;
+      b.dstAccessMask = dst;
+      b.oldLayout = from;
+      b.newLayout = to;
+      b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+      b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+      b.image = image->Handle();
+      b.subresourceRange = vk::ImageSubresourceRange{ vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1 };
+      list.push_back(b);
+    }
+    return list;
+  };
+  const vk::AccessFlags any = vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite |
+    vk::AccessFlagBits::eTransferRead | vk::AccessFlagBits::eTransferWrite;
+  const vk::PipelineStageFlags stages = vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eTransfer;
+  cmd.pipelineBarrier(stages, vk::PipelineStageFlagBits::eTransfer, {}, {}, {},
+    barriers(vk::ImageLayout::eGeneral, vk::ImageLayout::eTransferDstOptimal, any, vk::AccessFlagBits::eTransferWrite));
   uint64_t offset = 0;
-  std::vector<vk::ImageMemoryBarrier> barriers;
   for (const Image3D* image : this->Images_)
   {
-    // GENERAL, the images' resting layout, is a valid copy destination: no transitions.
     vk::BufferImageCopy region;
     region.bufferOffset = offset;
     region.imageSubresource = vk::ImageSubresourceLayers{ vk::ImageAspectFlagBits::eColor, 0, 0, 1 };
     region.imageOffset = vk::Offset3D{ 0, 0, int32_t(this->Z0_) };
     region.imageExtent = vk::Extent3D{ image->Width(), image->Height(), this->Count_ };
-    cmd.copyBufferToImage(slot.Staging->Handle(), image->Handle(), vk::ImageLayout::eGeneral, region);
+    cmd.copyBufferToImage(slot.Staging->Handle(), image->Handle(), vk::ImageLayout::eTransferDstOptimal, region);
     offset += this->SliceTexels_ * Image3D::TexelBytes(image->Format()) * this->SlicesPerChunk_;
-    vk::ImageMemoryBarrier b;
-    b.srcAccessMask = vk::AccessFlagBits::eTransferWrite;
-    b.dstAccessMask = vk::AccessFlagBits::eShaderRead | vk::AccessFlagBits::eShaderWrite |
-      vk::AccessFlagBits::eTransferRead | vk::AccessFlagBits::eTransferWrite;
-    b.oldLayout = vk::ImageLayout::eGeneral;
-    b.newLayout = vk::ImageLayout::eGeneral;
-    b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image->Handle();
-    b.subresourceRange = vk::ImageSubresourceRange{ vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1 };
-    barriers.push_back(b);
   }
-  cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer,
-    vk::PipelineStageFlagBits::eComputeShader | vk::PipelineStageFlagBits::eTransfer, {}, {}, {}, barriers);
+  cmd.pipelineBarrier(vk::PipelineStageFlagBits::eTransfer, stages, {}, {}, {},
+    barriers(vk::ImageLayout::eTransferDstOptimal, vk::ImageLayout::eGeneral, vk::AccessFlagBits::eTransferWrite, any));
   cmd.end();
   vk::SubmitInfo si;
   si.commandBufferCount = 1;

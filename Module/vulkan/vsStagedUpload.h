@@ -42,8 +42,8 @@ public:
   void Begin(uint32_t z0, uint32_t count);
   /** Where image i's texels of the chunk go: tightly packed, x fastest, in its format. */
   void* Texels(size_t image);
-  /** Copies the chunk to the images (asynchronously; a barrier makes the texels visible to shaders
-   *  and transfers submitted after it). */
+  /** Copies the chunk to the images (asynchronously; barriers make the texels visible to shaders
+   *  and transfers submitted after it, the images back in GENERAL). */
   void Submit();
   /** Waits for every copy submitted; throws on a device error. */
   void Finish();
