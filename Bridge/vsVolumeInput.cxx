@@ -19,6 +19,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <type_traits>
 
 namespace vs
 {
@@ -373,6 +374,62 @@ std::vector<float> ScalarsAsFloat(vtkDataArray* scalars)
     }
   });
   return out;
+}
+
+HostScalars NativeScalars(vtkDataArray* scalars)
+{
+  if (!scalars || scalars->GetNumberOfComponents() != 1 || scalars->GetNumberOfTuples() <= 0 ||
+    !scalars->HasStandardMemoryLayout())
+  {
+    return HostScalars();
+  }
+  using Type = HostScalars::Type;
+  Type type;
+  switch (scalars->GetDataType())
+  {
+    case VTK_FLOAT:
+      type = Type::Float32;
+      break;
+    case VTK_DOUBLE:
+      type = Type::Float64;
+      break;
+    case VTK_CHAR:
+      type = std::is_signed<char>::value ? Type::Int8 : Type::UInt8;
+      break;
+    case VTK_SIGNED_CHAR:
+      type = Type::Int8;
+      break;
+    case VTK_UNSIGNED_CHAR:
+      type = Type::UInt8;
+      break;
+    case VTK_SHORT:
+      type = Type::Int16;
+      break;
+    case VTK_UNSIGNED_SHORT:
+      type = Type::UInt16;
+      break;
+    case VTK_INT:
+      type = Type::Int32;
+      break;
+    case VTK_UNSIGNED_INT:
+      type = Type::UInt32;
+      break;
+    case VTK_LONG:
+      type = sizeof(long) == 8 ? Type::Int64 : Type::Int32;
+      break;
+    case VTK_UNSIGNED_LONG:
+      type = sizeof(unsigned long) == 8 ? Type::UInt64 : Type::UInt32;
+      break;
+    case VTK_LONG_LONG:
+      type = Type::Int64;
+      break;
+    case VTK_UNSIGNED_LONG_LONG:
+      type = Type::UInt64;
+      break;
+    default:
+      return HostScalars();
+  }
+  return HostScalars(scalars->GetVoidPointer(0), type);
 }
 
 TransferFunctionSamples SampleTransferFunction(vtkVolumeProperty* property, float smin, float smax,

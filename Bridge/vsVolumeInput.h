@@ -9,6 +9,7 @@
 #if !defined(__VTK_WRAP__)
 
 #include "vissweepBridgeModule.h"
+#include "vsHostScalars.h"
 #include "vsTransferFunctionTable.h"
 #include "vsVolumeGeometry.h"
 
@@ -74,6 +75,11 @@ VISSWEEPBRIDGE_EXPORT std::vector<glm::dvec4> EffectiveClipPlanes(
 
 /** The scalars as floats, x fastest (component 0). */
 VISSWEEPBRIDGE_EXPORT std::vector<float> ScalarsAsFloat(vtkDataArray* scalars);
+
+/** The scalars in place, as the device volume reads them (vsHostScalars.h): a contiguous array of
+ *  one component of a type CheckImage accepts; else none (Data null: convert with ScalarsAsFloat).
+ *  The device volume then reads each value as ScalarsAsFloat gives it. */
+VISSWEEPBRIDGE_EXPORT HostScalars NativeScalars(vtkDataArray* scalars);
 
 /** The transfer function of component 0, sampled over [smin, smax] widened to the TF's points. */
 VISSWEEPBRIDGE_EXPORT TransferFunctionSamples SampleTransferFunction(vtkVolumeProperty* property, float smin, float smax,

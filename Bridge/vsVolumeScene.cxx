@@ -1,5 +1,6 @@
 #include "vsVolumeScene.h"
 
+#include "vsBrickRanges.h"
 #include "vsDeviceVolume.h"
 #include "vsError.h"
 #include "vsGradientOpacity.h"
@@ -89,15 +90,25 @@ VolumeScene::Changes VolumeScene::Update(vtkImageData* image, vtkDataArray* scal
     this->Volume_.reset();
     this->TF_.reset();
     DeviceVolume::CheckFits(*this->Context_, geometry.Dims);
-    values = ScalarsAsFloat(scalars);
-    lap = this->LastPhases_->Lap("convert", lap);
-    this->Volume_ = std::make_unique<DeviceVolume>(this->Context_, values.data(), geometry.Dims);
-    lap = this->LastPhases_->Lap("upload", lap);
+    // The scalars in place where VTK holds them contiguously (issue 39: no float copy of the volume);
+    // else converted to floats first.
+    HostScalars host = NativeScalars(scalars);
+    if (!host.Data)
+    {
+      values = ScalarsAsFloat(scalars);
+      host = HostScalars(values.data());
+      lap = this->LastPhases_->Lap("convert", lap);
+    }
     if (!this->Majorants_)
     {
       this->Majorants_ = std::make_unique<MajorantGrid>(this->Context_);
     }
-    this->Majorants_->UpdateRanges(*this->Volume_, values.data());
+    // The bricks' ranges from each slice as it is uploaded (vsBrickRanges.h).
+    BrickRanges ranges(geometry.Dims, this->Majorants_->BrickSize());
+    this->Volume_ = std::make_unique<DeviceVolume>(this->Context_, host, geometry.Dims,
+      [&ranges](uint32_t z, const float* slice) { ranges.AddSlice(z, slice); });
+    lap = this->LastPhases_->Lap("upload", lap);
+    this->Majorants_->UpdateRanges(*this->Volume_, ranges);
     lap = this->LastPhases_->Lap("ranges", lap);
     this->DataTime_ = dataTime;
     this->Scalars_ = scalars;

@@ -4,9 +4,11 @@
 #include "vsImage.h"
 #include "vsParallelSlabs.h"
 #include "vsSerial.h"
+#include "vsStagedUpload.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -17,66 +19,58 @@ void DeviceVolume::CheckFits(Context& context, std::array<uint32_t, 3> dims)
   Image3D::CheckLimits(context, dims[0], dims[1], dims[2], vk::Format::eR32Sfloat, "volume");
 }
 
-DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const float* scalars, std::array<uint32_t, 3> dims)
+namespace
+{
+// Staging per chunk of slices, for all images together: small enough to stay in the cache while the
+// host fills it and the queue copies it.
+constexpr uint64_t kChunkBytes = 1ull << 20;
+
+// Slice z's quads (see the header) from its floats: codes (value - offset), then each texel packs
+// its footprint's 4 codes of the slice (neighbours clamped).
+void PackQuads(const float* src, float offset, std::array<uint32_t, 3> dims, uint8_t* codes, uint32_t* quads)
+{
+  const uint64_t slice = uint64_t(dims[0]) * dims[1];
+  for (uint64_t i = 0; i < slice; ++i)
+  {
+    codes[i] = uint8_t(src[i] - offset);
+  }
+  for (uint32_t y = 0; y < dims[1]; ++y)
+  {
+    const uint8_t* row = codes + uint64_t(y) * dims[0];
+    const uint8_t* next = codes + uint64_t(std::min(y + 1, dims[1] - 1)) * dims[0];
+    uint32_t* out = quads + uint64_t(y) * dims[0];
+    const uint32_t last = dims[0] - 1;
+    for (uint32_t x = 0; x < last; ++x)
+    {
+      out[x] = uint32_t(row[x]) | uint32_t(row[x + 1]) << 8 | uint32_t(next[x]) << 16 | uint32_t(next[x + 1]) << 24;
+    }
+    // The last column's right neighbour is itself (clamped).
+    out[last] =
+      uint32_t(row[last]) | uint32_t(row[last]) << 8 | uint32_t(next[last]) << 16 | uint32_t(next[last]) << 24;
+  }
+}
+}
+
+DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const HostScalars& scalars,
+  std::array<uint32_t, 3> dims, const SliceVisitor& eachSlice)
   : Context_(context)
   , Dims_(dims)
 {
   CheckFits(*context, dims);
+  if (!scalars.Data)
+  {
+    throw InputError("the device volume was given no scalars");
+  }
   this->Image_ = std::make_unique<Image3D>(context, dims[0], dims[1], dims[2], vk::Format::eR32Sfloat, "volume");
   const uint64_t slice = uint64_t(dims[0]) * dims[1];
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  // Slabs of slices on the host's threads (vsParallelSlabs.h), each checking, staging and uploading its
-  // own slices; the range, the integer test and the count combine over the slabs.
-  struct Part
-  {
-    float Lo = std::numeric_limits<float>::max(), Hi = -std::numeric_limits<float>::max();
-    bool Integral = true;
-    uint64_t NonFinite = 0;
-  };
-  std::vector<Part> parts(SlabCount(dims[2]));
-  ForSlabs(dims[2], [&](unsigned p, uint64_t z0, uint64_t z1) {
-    Part& part = parts[p];
-    std::vector<float> staging(slice);
-    for (uint64_t z = z0; z < z1; ++z)
-    {
-      const float* src = scalars + slice * z;
-      float lo = part.Lo, hi = part.Hi;
-      bool integral = part.Integral;
-      uint64_t nonFinite = 0;
-      for (uint64_t i = 0; i < slice; ++i)
-      {
-        float v = src[i];
-        if (std::isfinite(v))
-        {
-          lo = std::min(lo, v);
-          hi = std::max(hi, v);
-          integral = integral && v == std::trunc(v);
-        }
-        else
-        {
-          ++nonFinite;
-        }
-      }
-      part.Lo = lo;
-      part.Hi = hi;
-      part.Integral = integral;
-      part.NonFinite += nonFinite;
-      // A slice of finite voxels goes up as it is; non-finite ones become NaN in a copy.
-      const float* upload = src;
-      if (nonFinite)
-      {
-        for (uint64_t i = 0; i < slice; ++i)
-        {
-          staging[i] = std::isfinite(src[i]) ? src[i] : nan;
-        }
-        upload = staging.data();
-      }
-      this->Image_->UploadSlices(upload, uint32_t(z), 1);
-    }
-  });
+  // First the range, the integer test and the count (in slabs of slices on the host's threads,
+  // vsParallelSlabs.h; combined over the slabs): the quads' offset is the smallest value. On the
+  // native integers this reads 1-2 bytes a voxel.
+  std::vector<HostScalars::Summary> parts(SlabCount(dims[2]));
+  ForSlabs(dims[2], [&](unsigned p, uint64_t z0, uint64_t z1) { parts[p] = scalars.Summarize(z0 * slice, z1 * slice); });
   float lo = std::numeric_limits<float>::max(), hi = -std::numeric_limits<float>::max();
   bool integral = true;
-  for (const Part& part : parts)
+  for (const auto& part : parts)
   {
     lo = std::min(lo, part.Lo);
     hi = std::max(hi, part.Hi);
@@ -94,7 +88,10 @@ DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const float* scalar
   {
     try
     {
-      this->MakeQuads(context, scalars, lo);
+      Image3D::CheckLimits(*context, dims[0], dims[1], dims[2], vk::Format::eR32Uint, "volume quads");
+      this->Quads_ =
+        std::make_unique<Image3D>(context, dims[0], dims[1], dims[2], vk::Format::eR32Uint, "volume quads");
+      this->QuadOffset_ = lo;
     }
     catch (const DeviceLimitError&)
     {
@@ -102,41 +99,42 @@ DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const float* scalar
       this->Quads_.reset();
     }
   }
-}
-
-void DeviceVolume::MakeQuads(const std::shared_ptr<Context>& context, const float* scalars, float offset)
-{
-  const auto& dims = this->Dims_;
-  Image3D::CheckLimits(*context, dims[0], dims[1], dims[2], vk::Format::eR32Uint, "volume quads");
-  this->Quads_ = std::make_unique<Image3D>(context, dims[0], dims[1], dims[2], vk::Format::eR32Uint, "volume quads");
-  this->QuadOffset_ = offset;
-  const uint64_t slice = uint64_t(dims[0]) * dims[1];
+  // Then one pass per slice while it is in the cache: the floats (non-finite as NaN), the quads, the
+  // caller's visit (the brick ranges), each slab staging and submitting its own chunks of slices.
+  std::vector<Image3D*> images{ this->Image_.get() };
+  if (this->Quads_)
+  {
+    images.push_back(this->Quads_.get());
+  }
+  const uint32_t chunk = StagedUpload::SlicesPerChunk(images, kChunkBytes);
+  const float offset = this->QuadOffset_;
   ForSlabs(dims[2], [&](unsigned, uint64_t z0, uint64_t z1) {
-    std::vector<uint8_t> codes(slice);
-    std::vector<uint32_t> quads(slice);
-    for (uint64_t z = z0; z < z1; ++z)
+    StagedUpload upload(context, images, chunk);
+    std::vector<float> floats(slice);
+    std::vector<uint8_t> codes(images.size() > 1 ? slice : 0);
+    for (uint64_t z = z0; z < z1; z += chunk)
     {
-      const float* src = scalars + slice * z;
-      for (uint64_t i = 0; i < slice; ++i)
+      const uint32_t n = uint32_t(std::min<uint64_t>(chunk, z1 - z));
+      upload.Begin(uint32_t(z), n);
+      float* staged = static_cast<float*>(upload.Texels(0));
+      uint32_t* quads = images.size() > 1 ? static_cast<uint32_t*>(upload.Texels(1)) : nullptr;
+      for (uint32_t k = 0; k < n; ++k)
       {
-        codes[i] = uint8_t(src[i] - offset);
-      }
-      for (uint32_t y = 0; y < dims[1]; ++y)
-      {
-        const uint8_t* row = codes.data() + uint64_t(y) * dims[0];
-        const uint8_t* next = codes.data() + uint64_t(std::min(y + 1, dims[1] - 1)) * dims[0];
-        uint32_t* out = quads.data() + uint64_t(y) * dims[0];
-        const uint32_t last = dims[0] - 1;
-        for (uint32_t x = 0; x < last; ++x)
+        // Converted into host memory (the staging may be write-combined), read from there.
+        scalars.ToFloat((z + k) * slice, (z + k + 1) * slice, floats.data());
+        std::memcpy(staged + k * slice, floats.data(), slice * sizeof(float));
+        if (quads)
         {
-          out[x] = uint32_t(row[x]) | uint32_t(row[x + 1]) << 8 | uint32_t(next[x]) << 16 | uint32_t(next[x + 1]) << 24;
+          PackQuads(floats.data(), offset, dims, codes.data(), quads + k * slice);
         }
-        // The last column's right neighbour is itself (clamped).
-        out[last] = uint32_t(row[last]) | uint32_t(row[last]) << 8 | uint32_t(next[last]) << 16 |
-          uint32_t(next[last]) << 24;
+        if (eachSlice)
+        {
+          eachSlice(uint32_t(z + k), floats.data());
+        }
       }
-      this->Quads_->UploadSlices(quads.data(), uint32_t(z), 1);
+      upload.Submit();
     }
+    upload.Finish();
   });
 }
 

@@ -15,9 +15,11 @@
 #define vsDeviceVolume_h
 
 #include "vissweepCoreModule.h"
+#include "vsHostScalars.h"
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 
 namespace vs
@@ -28,9 +30,16 @@ class Image3D;
 class VISSWEEPCORE_EXPORT DeviceVolume
 {
 public:
-  /** `scalars` holds dims[0]*dims[1]*dims[2] floats, x fastest. Throws DeviceLimitError
-   *  (too large for the device) or InputError (empty extent) before allocating. */
-  DeviceVolume(std::shared_ptr<Context> context, const float* scalars, std::array<uint32_t, 3> dims);
+  /** Called once per slice z with its dims[0] x dims[1] floats as uploaded (non-finite ones NaN),
+   *  while they are in the cache; from the host's threads, several slices at once. */
+  using SliceVisitor = std::function<void(uint32_t z, const float* slice)>;
+
+  /** `scalars` holds dims[0]*dims[1]*dims[2] values, x fastest (floats, or the host's own type:
+   *  vsHostScalars.h, read as floats slice by slice without a copy of the volume). Throws
+   *  DeviceLimitError (too large for the device) or InputError (empty extent) before allocating.
+   *  `eachSlice`, when given, sees every slice's floats (the brick ranges are made so). */
+  DeviceVolume(std::shared_ptr<Context> context, const HostScalars& scalars, std::array<uint32_t, 3> dims,
+    const SliceVisitor& eachSlice = SliceVisitor());
   ~DeviceVolume();
 
   const Image3D& Image() const { return *this->Image_; }
@@ -59,8 +68,6 @@ public:
   static void CheckFits(Context& context, std::array<uint32_t, 3> dims);
 
 private:
-  void MakeQuads(const std::shared_ptr<Context>& context, const float* scalars, float offset);
-
   std::shared_ptr<Context> Context_;
   std::array<uint32_t, 3> Dims_;
   std::unique_ptr<Image3D> Image_;

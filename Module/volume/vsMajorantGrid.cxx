@@ -2,6 +2,7 @@
 #include "sampling/bindings.h"
 #include "sampling/majorant_params.h"
 #include "vsBatch.h"
+#include "vsBrickRanges.h"
 #include "vsBuffer.h"
 #include "vsContext.h"
 #include "vsDeviceVolume.h"
@@ -36,113 +37,30 @@ MajorantGrid::~MajorantGrid() = default;
 namespace
 {
 // Per brick b of B voxels along each axis: min, max and a non-finite flag over voxels [bB, (b+1)B]
-// (inclusive, clamped to the volume), as majorant_minmax.comp computes them, by three separable
-// passes (x, then y, then z), each reading its input once.
-struct Span
+// (vsBrickRanges.h), the slices in slabs on the host's threads (vsParallelSlabs.h).
+std::vector<float> HostRanges(const float* v, std::array<uint32_t, 3> dims, uint32_t B)
 {
-  float Min = 3.4e38f, Max = -3.4e38f;
-  bool Gap = false;
-  void Add(const Span& o)
-  {
-    Min = std::min(Min, o.Min);
-    Max = std::max(Max, o.Max);
-    Gap = Gap || o.Gap;
-  }
-};
-
-std::vector<float> HostRanges(const float* v, std::array<uint32_t, 3> dims, std::array<uint32_t, 3> bricks, uint32_t B)
-{
-  const size_t nx = dims[0], ny = dims[1], nz = dims[2];
-  const size_t bx = bricks[0], by = bricks[1], bz = bricks[2];
-  auto lo = [&](size_t b) { return b * B; };
-  auto hi = [&](size_t b, size_t n) { return std::min<size_t>(b * B + B, n - 1); };
-  // Each pass in slabs on the host's threads (vsParallelSlabs.h): every output element is made by one
-  // slab from inputs the passes before finished, so the result does not depend on the split.
-  std::vector<Span> rows(bx * ny * nz); // (brick x, y, z)
-  ForSlabs(nz, [&](unsigned, uint64_t z0, uint64_t z1) {
-    for (size_t z = z0; z < z1; ++z)
+  BrickRanges ranges(dims, B);
+  const uint64_t slice = uint64_t(dims[0]) * dims[1];
+  ForSlabs(dims[2], [&](unsigned, uint64_t z0, uint64_t z1) {
+    for (uint64_t z = z0; z < z1; ++z)
     {
-      for (size_t y = 0; y < ny; ++y)
-      {
-        const float* row = v + (z * ny + y) * nx;
-        for (size_t b = 0; b < bx; ++b)
-        {
-          Span s;
-          for (size_t x = lo(b); x <= hi(b, nx); ++x)
-          {
-            const float f = row[x];
-            if (!std::isfinite(f)) // stored as NaN on the device: empty space
-            {
-              s.Gap = true;
-            }
-            else
-            {
-              s.Min = std::min(s.Min, f);
-              s.Max = std::max(s.Max, f);
-            }
-          }
-          rows[(z * ny + y) * bx + b] = s;
-        }
-      }
+      ranges.AddSlice(uint32_t(z), v + z * slice);
     }
   });
-  std::vector<Span> planes(bx * by * nz); // (brick x, brick y, z)
-  ForSlabs(nz, [&](unsigned, uint64_t z0, uint64_t z1) {
-    for (size_t z = z0; z < z1; ++z)
-    {
-      for (size_t b = 0; b < by; ++b)
-      {
-        for (size_t y = lo(b); y <= hi(b, ny); ++y)
-        {
-          for (size_t x = 0; x < bx; ++x)
-          {
-            planes[(z * by + b) * bx + x].Add(rows[(z * ny + y) * bx + x]);
-          }
-        }
-      }
-    }
-  });
-  std::vector<float> ranges(4 * bx * by * bz);
-  ForSlabs(bz, [&](unsigned, uint64_t b0, uint64_t b1) {
-    for (size_t b = b0; b < b1; ++b)
-    {
-      for (size_t y = 0; y < by; ++y)
-      {
-        for (size_t x = 0; x < bx; ++x)
-        {
-          Span s;
-          for (size_t z = lo(b); z <= hi(b, nz); ++z)
-          {
-            s.Add(planes[(z * by + y) * bx + x]);
-          }
-          float* r = &ranges[4 * ((b * by + y) * bx + x)];
-          const bool any = s.Min <= s.Max;
-          r[0] = any ? s.Min : 1.0f;
-          r[1] = any ? s.Max : 0.0f;
-          r[2] = s.Gap ? 1.0f : 0.0f;
-          r[3] = 0.0f;
-        }
-      }
-    }
-  });
-  return ranges;
+  return ranges.Finish();
 }
 }
 
 void MajorantGrid::UpdateRanges(const DeviceVolume& volume, const float* hostScalars)
 {
   auto dims = volume.Dims();
-  std::array<uint32_t, 3> bricks;
-  for (int i = 0; i < 3; ++i)
-  {
-    // A brick covers voxels [bB, (b+1)B]; the last voxel index is dims-1.
-    bricks[i] = std::max<uint32_t>(1, (dims[i] - 1 + this->BrickSize_ - 1) / this->BrickSize_);
-  }
+  const std::array<uint32_t, 3> bricks = BrickRanges::Bricks(dims, this->BrickSize_);
   const uint64_t count = uint64_t(bricks[0]) * bricks[1] * bricks[2];
   if (hostScalars)
   {
     const auto start = std::chrono::steady_clock::now();
-    this->Ranges_ = HostRanges(hostScalars, dims, bricks, this->BrickSize_);
+    this->Ranges_ = HostRanges(hostScalars, dims, this->BrickSize_);
     this->LastSeconds_ = 0.0; // no device time
     this->LastHostSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
@@ -170,6 +88,26 @@ void MajorantGrid::UpdateRanges(const DeviceVolume& volume, const float* hostSca
     this->Ranges_.resize(count * 4);
     ranges.Download(this->Ranges_.data(), count * 4 * sizeof(float));
   }
+  this->Dims_ = dims;
+  this->SetRanges(bricks);
+}
+
+void MajorantGrid::UpdateRanges(const DeviceVolume& volume, const BrickRanges& ranges)
+{
+  if (ranges.Dims() != volume.Dims() || ranges.BrickSize() != this->BrickSize_)
+  {
+    throw InputError("the brick ranges were made for another volume or brick size");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  this->Ranges_ = ranges.Finish();
+  this->LastSeconds_ = 0.0; // no device time
+  this->LastHostSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  this->Dims_ = volume.Dims();
+  this->SetRanges(BrickRanges::Bricks(volume.Dims(), this->BrickSize_));
+}
+
+void MajorantGrid::SetRanges(std::array<uint32_t, 3> bricks)
+{
   if (bricks != this->Bricks_ || !this->Image_)
   {
     this->Image_.reset();
@@ -182,7 +120,6 @@ void MajorantGrid::UpdateRanges(const DeviceVolume& volume, const float* hostSca
   }
   this->Majorants_.clear();
   this->FactorRanges_.clear();
-  this->Dims_ = dims;
   ++this->RangeUpdates_;
 }
 
@@ -198,7 +135,7 @@ void MajorantGrid::SetFactor(const float* factor)
     throw InputError("the majorants' factor needs the brick ranges first (UpdateRanges)");
   }
   // The factor's range per brick over the scalars' footprint (the factor is finite everywhere).
-  const std::vector<float> r = HostRanges(factor, this->Dims_, this->Bricks_, this->BrickSize_);
+  const std::vector<float> r = HostRanges(factor, this->Dims_, this->BrickSize_);
   const size_t count = r.size() / 4;
   this->FactorRanges_.assign(2 * count, 0.0f);
   for (size_t b = 0; b < count; ++b)

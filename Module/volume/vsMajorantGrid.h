@@ -29,6 +29,7 @@
 
 namespace vs
 {
+class BrickRanges;
 class Context;
 class DeviceVolume;
 class Image3D;
@@ -45,6 +46,9 @@ public:
    *  the volume, or, given the scalars the volume was made from (x fastest), the same ranges on the
    *  host, which is ~10x faster than lavapipe's pass and lets the first frame skip it. */
   void UpdateRanges(const DeviceVolume& volume, const float* hostScalars = nullptr);
+  /** The same from brick ranges the host made while the volume uploaded (vsBrickRanges.h: every
+   *  slice added, the volume's dims and this grid's brick size). */
+  void UpdateRanges(const DeviceVolume& volume, const BrickRanges& ranges);
   /** The extinction factor per voxel (the volume's dims, as given to UpdateRanges), or none
    *  (nullptr): its range per brick over the same footprint as the scalars'. Call before
    *  UpdateMajorants, after UpdateRanges (which drops the factor: new data, new factor). */
@@ -83,6 +87,9 @@ public:
   uint64_t MajorantUpdates() const { return this->MajorantUpdates_; }
 
 private:
+  // After new ranges: the images sized to `bricks`, the majorants and factor dropped.
+  void SetRanges(std::array<uint32_t, 3> bricks);
+
   std::shared_ptr<Context> Context_;
   uint32_t BrickSize_;
   std::array<uint32_t, 3> Bricks_{ { 0, 0, 0 } };

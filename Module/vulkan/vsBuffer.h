@@ -41,6 +41,8 @@ public:
 
   vk::Buffer Handle() const { return this->Buffer_; }
   uint64_t Size() const { return this->Bytes_; }
+  /** The buffer's memory on the host when it is host-visible (mapped for its life), else nullptr. */
+  void* Mapped() const { return this->Mapped_; }
   const std::string& Name() const { return this->Name_; }
 
 private:
