@@ -3,7 +3,7 @@
 # gui_refinement.py, which renders a VisSweep volume once at 4 of 12 samples per pixel; the plugin's
 # refinement timer (ParaView/Plugin/Client/pqVisSweepRefinement.h) must then render the still view
 # until it logs "converged at 12 samples per pixel", within 240 s (the GUI's start alone took 80 s on
-the 2-core machine under a load of 7). Twice: in the builtin session,
+# the 2-core machine under a load of 7). Twice: in the builtin session,
 # then as the client of a pvserver (remote rendering: the server renders, the client's timer reads
 # the server's samples). Run as root: the GUI runs in scripts/paraview-check.sh's mount namespace,
 # where ParaView's Python modules lie over Debian's VTK 9.1 ones.
