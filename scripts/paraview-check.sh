@@ -18,8 +18,8 @@
 #    namespace (unshare -m) that only this script's configure and build see.
 #  - paraview-dev ships no VTK wrapping hierarchy files (lib/vtk/hierarchy/ParaView/*-hierarchy.txt),
 #    which vtk_module_wrap_python needs for every VTK module VisSweep's classes use; python3-paraview
-#    does (unpacked in build-pv-root/, used by scripts/paraview-plugin.sh), but wrapping the Python
-#    package with them is not tried: VISSWEEP_WRAP_PYTHON=OFF here.
+#    does (unpacked in build-pv-root/): the plugin's wrapping and the Python package's read them
+#    there (VISSWEEP_PV_HIERARCHY_DIR), so build-pv/vissweep is `import vissweep` for pvpython.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${VISSWEEP_PV_BUILD_DIR:-$root/build-pv}"
@@ -54,10 +54,15 @@ fi
 
 vtk_dir="$(dirname "$(dpkg -L paraview-dev | grep '/vtk/vtk-config.cmake$')")"
 echo "== ParaView's VTK: $vtk_dir ($(grep -o 'PACKAGE_VERSION "[^"]*"' "$vtk_dir/vtk-config-version.cmake" | head -1))"
+# The Python package against ParaView's VTK (for `import vissweep` in pvpython and pvbatch): its
+# wrapping reads the VTK modules' hierarchy files, which paraview-dev lacks and python3-paraview
+# (unpacked above) ships. VISSWEEP_PV_WRAP_PYTHON=OFF leaves it out.
+wrap="${VISSWEEP_PV_WRAP_PYTHON:-ON}"
 echo "== configure (tests off: they need VTK::RenderingImage, which ParaView's VTK does not ship;"
-echo "   Python off: paraview-dev has no wrapping hierarchy files)"
+echo "   Python package $wrap, with python3-paraview's wrapping hierarchy files)"
 inside cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DVISSWEEP_BUILD_TESTING=OFF \
-  -DVISSWEEP_WRAP_PYTHON=OFF -DVTK_DIR="$vtk_dir"
+  -DVISSWEEP_WRAP_PYTHON="$wrap" -DVISSWEEP_PV_HIERARCHY_DIR="$pvroot/usr/lib/x86_64-linux-gnu/vtk/hierarchy/ParaView" \
+  -DVTK_DIR="$vtk_dir"
 echo "== build"
 inside nice -n 10 cmake --build "$build" -j "$jobs"
 if [ "$build_only" = 1 ]; then exit 0; fi

@@ -55,7 +55,7 @@ if [ "${1:-}" = "--test" ]; then
   LP_NUM_THREADS="${LP_NUM_THREADS:-1}" xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
     "$root/ParaView/Testing/run-pvbatch-test.sh" "$root" "$pvbuild" "$pvroot" "$plugin" "$build/test"
   LP_NUM_THREADS="${LP_NUM_THREADS:-1}" xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
-    "$root/ParaView/Testing/run-gui-test.sh" "$root" "$plugin" "$build/test-gui"
+    "$root/ParaView/Testing/run-gui-test.sh" "$root" "$plugin" "$build/test-gui" "$pvroot"
   LP_NUM_THREADS="${LP_NUM_THREADS:-1}" xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" \
     "$root/ParaView/Testing/run-mpi-test.sh" "$root" "$pvroot" "$plugin" "$build/test-mpi"
 fi

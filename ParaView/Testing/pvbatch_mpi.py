@@ -11,7 +11,8 @@ single: one process renders 16 samples per pixel with seeds 1 and 2 (Environment
 mpi: two processes (each given half of the volume by ParaView) render with SamplesPerFrame 8 and
   MaximumSamples 16: one frame must bring all 16 samples per pixel (8 per process, averaged), and
   the image must be the single process's within its noise (the mean within 4 standard errors
-  estimated from the two seeds, the pixels as close as the two seeds' are). Then times frames.
+  estimated from the two seeds, the pixels as close as the two seeds' are); a TimeBudget stops
+  both processes at the same frame. Then times frames.
 Writes "N failure(s)" to OUTDIR/result-MODE.txt and the frame times to OUTDIR/timing-MODE.txt.
 """
 import sys
@@ -132,6 +133,26 @@ else:
     check(a.std() > 5, "the image is not flat (the volume is drawn)")
     pvs.Render(view)
     check(samples() == (16, 1), "a further render adds nothing (converged)")
+    # A time budget under MPI: the processes decide from the same (reduced) frame times, so both
+    # stop at the same frame: every render adds 2 x 1 samples per pixel until the budget, then none.
+    display.SamplesPerFrame = 1
+    display.MaximumSamples = 1 << 20
+    display.TimeBudget = 1.0
+    display.Seed = 3
+    counts = []
+    start = time.time()
+    while time.time() - start < 60:
+        pvs.Render(view)
+        counts.append(samples())
+        if counts[-1][1]:
+            break
+    reached = counts[-1][0]
+    print("time budget 1 s with 2 processes: %d spp in %d renders (%s ... %s)"
+          % (reached, len(counts), counts[:2], counts[-2:]), flush=True)
+    check(counts[-1][1] == 1 and [c[0] for c in counts] == list(range(2, reached + 1, 2)) + [reached],
+          "both processes stop at the budget's frame (2 samples per render, then none, converged)")
+    display.TimeBudget = 0
+    display.Seed = 1
     timing()
 
 print("%d failure(s)" % len(failures))

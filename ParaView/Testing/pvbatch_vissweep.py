@@ -8,8 +8,8 @@ samples per pixel and compares the image with the vissweep tool's renders of the
 (seeds 1 and 2): the means must agree within 4 standard errors (estimated from the two tool
 renders' difference), and the pixels as closely as two tool renders agree. Then checks that
 properties reach the mapper (Exposure brightens the image, single scattering darkens it), that a missing environment file
-is an error, not a crash, after which the volume renders again, and that renders refine
-progressively. Writes "N failure(s)" to OUTDIR/result.txt.
+is an error, not a crash, after which the volume renders again, that renders refine
+progressively and stop at a TimeBudget, and that a state file keeps the settings. Writes "N failure(s)" to OUTDIR/result.txt.
 """
 import sys
 
@@ -151,7 +151,56 @@ print("accumulated samples, converged after each render:", counts)
 check([c[0] for c in counts] == [20, 24, 28, 28, 28] and [c[1] for c in counts] == [0, 0, 1, 1, 1],
       "renders refine 4 samples at a time until MaximumSamples (28), then report convergence")
 
+# The time budget: with SamplesPerFrame 1 and MaximumSamples far away, a still view refines until
+# TimeBudget seconds of rendering (its frames' times summed) are spent, then stops: Converged 1, and
+# further renders add nothing. Every frame within the budget added its sample, the one after none.
+import time
+budget = 1.0
+display.SamplesPerFrame = 1
+display.MaximumSamples = 1 << 20
+display.TimeBudget = budget
+display.Seed = 5  # restarts the accumulation (and the budget's clock)
+budget_counts = []
+converged = 0
+start = time.time()
+while time.time() - start < 20 * budget + 30:
+    pvs.Render(view)
+    display.UpdatePropertyInformation()
+    budget_counts.append(display.GetPropertyValue("AccumulatedSamples"))
+    converged = display.GetPropertyValue("Converged")
+    if converged:
+        break
+wall = time.time() - start
+spent = display.GetPropertyValue("AccumulationTime")
+reached = budget_counts[-1] if budget_counts else 0
+print("time budget %.1f s: %d spp in %d renders, AccumulationTime %.3f s, loop %.3f s, converged %d"
+      % (budget, reached, len(budget_counts), spent, wall, converged), flush=True)
+check(converged == 1 and 1 < reached < 1 << 20,
+      "a still view stops refining when its TimeBudget is spent (%d spp of 1048576)" % reached)
+check(budget_counts == list(range(1, reached + 1)) + [reached],
+      "each render within the budget added SamplesPerFrame (1), the one after it none (%s)"
+      % (budget_counts[:3] + ["..."] + budget_counts[-3:]))
+check(0.5 * budget <= spent <= budget,
+      "the accumulation's render time (%.3f s) is within the budget (%.1f s) and uses most of it" % (spent, budget))
+pvs.Render(view)
+pvs.Render(view)
+display.UpdatePropertyInformation()
+check(display.GetPropertyValue("AccumulatedSamples") == reached and display.GetPropertyValue("Converged") == 1,
+      "renders after the budget is spent add nothing")
+display.TimeBudget = 0  # no budget: refinement resumes
+pvs.Render(view)
+display.UpdatePropertyInformation()
+check(display.GetPropertyValue("AccumulatedSamples") == reached + 1 and display.GetPropertyValue("Converged") == 0,
+      "without the budget the same accumulation resumes (%d -> %d spp)"
+      % (reached, display.GetPropertyValue("AccumulatedSamples")))
+display.TimeBudget = -1.0  # a warning naming it (the driver checks stderr); 0 is used
+display.TimeBudget = 0
+display.SamplesPerFrame = 4
+display.MaximumSamples = 28
+display.Seed = 1
+
 # A state file keeps the representation and its settings.
+display.TimeBudget = 2.5
 display.Exposure = 2.5
 display.VisSweepRenderMode = "Preview"
 display.EnvironmentRotation = 30
@@ -165,14 +214,16 @@ loaded_view = pvs.GetActiveViewOrCreate("RenderView")
 loaded = pvs.GetDisplayProperties(pvs.FindSource("XMLImageDataReader1"), loaded_view)
 values = (loaded.Representation, loaded.Exposure, loaded.VisSweepRenderMode,
           loaded.EnvironmentRotation, loaded.SamplesPerFrame, loaded.MaximumSamples,
-          loaded.MaximumScatteringEvents, loaded.ScatteringAnisotropy, loaded.MultipleImportanceSampling)
+          loaded.MaximumScatteringEvents, loaded.ScatteringAnisotropy, loaded.MultipleImportanceSampling,
+          loaded.TimeBudget)
 print("after LoadState:", values)
-check(values == ("VisSweep Volume", 2.5, "Preview", 30.0, 4, 28, 8, 0.25, "Balance Heuristic"),
+check(values == ("VisSweep Volume", 2.5, "Preview", 30.0, 4, 28, 8, 0.25, "Balance Heuristic", 2.5),
       "a saved state (.pvsm) loads back with the VisSweep representation and its settings")
+
+import os
 
 # VisSweep's OpenVDB reader: File > Open (OpenDataFile) reads a .vdb file with it, the smoke renders
 # with VisSweep, and a grid the file does not have is an error naming it (the driver checks stderr).
-import os
 smoke_file = os.path.join(os.path.dirname(volume), "..", "..", "Data", "smoke", "smoke_0004.vdb")
 smoke = pvs.OpenDataFile(smoke_file)
 check(smoke is not None and smoke.GetXMLName() == "VisSweepOpenVDBReader",
@@ -200,6 +251,65 @@ if smoke is not None:
     smoke.GridName = "no-such-grid"
     smoke.UpdatePipeline()
     print("read a grid the file does not have", flush=True)
+
+# The vissweep Python package built against ParaView's VTK (build-pv/vissweep, on PYTHONPATH): its
+# wrapped classes in a VTK pipeline inside pvbatch, and its ParaView helpers (vissweep.paraview).
+try:
+    import vissweep
+    import vissweep.paraview as vsp
+except ImportError as e:
+    vissweep = None
+    check(False, "import vissweep and vissweep.paraview in pvbatch (%s)" % e)
+if vissweep is not None:
+    from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+    from vtkmodules.vtkIOXML import vtkXMLImageDataReader
+    from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderWindow, vtkRenderer,
+                                             vtkVolume, vtkVolumeProperty)
+    mapper = vissweep.vtkVisibilitySweepVolumeMapper()
+    check(mapper.GetClassName() == "vtkVisibilitySweepVolumeMapper" and mapper.MonteCarlo == 1,
+          "import vissweep in pvbatch gives the wrapped mapper and its constants (%s)" % vissweep.__file__)
+    vti = vtkXMLImageDataReader()
+    vti.SetFileName(volume)
+    mapper.SetInputConnection(vti.GetOutputPort())
+    mapper.SetScalarModeToUsePointFieldData()
+    mapper.SelectScalarArray("density")
+    mapper.SetSamplesPerFrame(4)
+    mapper.SetMaximumSamples(4)
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(0, 0.0)
+    opacity.AddPoint(255, 0.9)
+    colour = vtkColorTransferFunction()
+    colour.AddRGBPoint(0, 0.9, 0.9, 0.9)
+    vprop = vtkVolumeProperty()
+    vprop.SetScalarOpacity(opacity)
+    vprop.SetColor(colour)
+    vtk_volume = vtkVolume()
+    vtk_volume.SetMapper(mapper)
+    vtk_volume.SetProperty(vprop)
+    renderer = vtkRenderer()
+    renderer.AddVolume(vtk_volume)
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetSize(32, 32)
+    window.AddRenderer(renderer)
+    renderer.ResetCamera()
+    window.Render()
+    check(mapper.GetAccumulatedSamples() == 4 and not mapper.GetLastError(),
+          "the wrapped mapper renders in a VTK pipeline in pvbatch (%d spp, error '%s')"
+          % (mapper.GetAccumulatedSamples(), mapper.GetLastError() or ""))
+    window.Finalize()
+    check(os.path.samefile(vsp.plugin_path(), plugin),
+          "vissweep.paraview.plugin_path() finds the plugin beside the package (%s)" % vsp.plugin_path())
+    try:
+        vsp.set_environment(loaded, os.path.join(outdir, "no-such-sky.exr"))
+        check(False, "vissweep.paraview.set_environment refuses a missing file")
+    except FileNotFoundError as e:
+        check("no-such-sky.exr" in str(e), "vissweep.paraview.set_environment refuses a missing file (%s)" % e)
+    loaded.VisSweepRenderMode = "Monte Carlo"
+    refined = vsp.refine(loaded, loaded_view, time_budget=0, maximum_samples=8, samples_per_frame=4, timeout=120)
+    print("vissweep.paraview.refine:", refined, flush=True)
+    check(refined[0] == 8 and refined[1] > 0,
+          "vissweep.paraview.refine renders a still view until it is converged (%d spp, %.3f s)" % refined)
 
 print("%d failure(s)" % len(failures))
 # The verdict goes to a file, not the exit status: sys.exit() in a pvbatch script ends pvbatch with

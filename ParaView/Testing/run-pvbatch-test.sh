@@ -22,7 +22,8 @@ for seed in 1 2; do
 done
 
 status=0
-PYTHONPATH="$pvroot/usr/lib/python3/dist-packages${PYTHONPATH:+:$PYTHONPATH}" \
+# build-pv/vissweep: the Python package built against ParaView's VTK (the script imports it).
+PYTHONPATH="$pvroot/usr/lib/python3/dist-packages:$pvbuild${PYTHONPATH:+:$PYTHONPATH}" \
   pvbatch "$root/ParaView/Testing/pvbatch_vissweep.py" "$plugin" "$root/Examples/Scenes/tiny_sphere.vti" \
   "$out" "$out/tool-seed1.png" "$out/tool-seed2.png" 2> "$out/pvbatch.stderr" || status=$?
 cat "$out/pvbatch.stderr" >&2
@@ -36,7 +37,7 @@ else
   echo "ok   a missing environment file is reported: $(grep -m1 'missing-sky.exr' "$out/pvbatch.stderr" | cut -c1-200)"
 fi
 for message in 'SamplesPerFrame 0 is outside \[1, 65536\]: the mapper uses 1' 'Exposure nan is refused' \
-    'has no grid named "no-such-grid"' \
+    'has no grid named "no-such-grid"' 'TimeBudget -1 is not a number of seconds >= 0: 0 (no budget) is used' \
     'ScatteringAnisotropy 1.5 is outside (-1, 1)' 'ScatteringAnisotropy (the Henyey-Greenstein anisotropy g) must be in (-1, 1), got 1.5'; do
   if grep -q "$message" "$out/pvbatch.stderr"; then
     echo "ok   an out-of-range setting is reported: $(grep -m1 "$message" "$out/pvbatch.stderr" | sed 's/.*| //' | cut -c1-160)"

@@ -87,7 +87,9 @@ function (vissweep_paraview_hierarchy)
     get_property(tool TARGET VTK::WrapHierarchy PROPERTY LOCATION)
   endif ()
   if (NOT tool OR NOT EXISTS "${tool}")
-    find_program(tool NAMES vtkWrapHierarchy-pv${ParaView_VERSION_MAJOR}.${ParaView_VERSION_MINOR})
+    # ParaView's version, or (VisSweep's own build against ParaView's VTK, no ParaView package) 5.11's.
+    find_program(tool NAMES vtkWrapHierarchy-pv${ParaView_VERSION_MAJOR}.${ParaView_VERSION_MINOR}
+      vtkWrapHierarchy-pv5.11)
   endif ()
   if (NOT tool)
     message(FATAL_ERROR "ParaView's vtkWrapHierarchy was not found (Debian: the paraview package)")

@@ -36,9 +36,11 @@ void pqVisSweepRefinement::onShutdown()
 
 void pqVisSweepRefinement::refine()
 {
+  // Builtin and remote sessions alike: with a pvserver the representation's proxy
+  // (vtkSMVisSweepRepresentationProxy) reads Converged and AccumulatedSamples from the server, where
+  // the volume renders, and forceRender() asks the server for a still frame.
   pqView* view = pqActiveObjects::instance().activeView();
   if (!view || !vtkSMRenderViewProxy::SafeDownCast(view->getProxy()) ||
-    (view->getServer() && view->getServer()->isRemote()) ||
     QApplication::mouseButtons() != Qt::NoButton)
   {
     return;
@@ -72,7 +74,8 @@ void pqVisSweepRefinement::refine()
   }
   else if (samples >= 0 && samples != this->LastReported)
   {
-    vtkLogF(INFO, "VisSweep: the view is converged at %d samples per pixel", samples);
+    vtkLogF(INFO, "VisSweep: the view is converged at %d samples per pixel (%s session)", samples,
+      view->getServer() && view->getServer()->isRemote() ? "remote" : "builtin");
   }
   this->LastReported = refining ? -1 : samples;
 }

@@ -5,11 +5,12 @@
  * still render. This auto-start component (loaded with the plugin in the GUI) re-renders the
  * active render view on a Qt timer while one of its visible "VisSweep Volume" representations
  * reports Converged 0 and no mouse button is down (a drag renders interactive frames: the
- * mapper's preview). It stops at convergence (MaximumSamples) and on a render error (the
- * representation's LastError), so a failing render is not repeated forever. As ParaView's
- * pqViewStreamingBehavior does for OSPRay's progressive passes, but for VisSweep's
- * representations. Builtin sessions only: a pvserver's client reads the information properties
- * as 0 (docs/paraview.md).
+ * mapper's preview). It stops at convergence (MaximumSamples, or the TimeBudget spent) and on a
+ * render error (the representation's LastError), so a failing render is not repeated forever. As
+ * ParaView's pqViewStreamingBehavior does for OSPRay's progressive passes, but for VisSweep's
+ * representations. In builtin sessions and with a pvserver (also under MPI): there the
+ * representation's proxy (vtkSMVisSweepRepresentationProxy) reads the information properties from
+ * the server, and each render is the server's (docs/paraview.md).
  */
 #ifndef pqVisSweepRefinement_h
 #define pqVisSweepRefinement_h

@@ -14,6 +14,7 @@
 #include "vtkVisibilitySweepVolumeMapper.h"
 
 #include <algorithm>
+#include <chrono>
 
 vtkStandardNewMacro(vtkVisSweepVolumeRepresentation);
 
@@ -30,6 +31,11 @@ void WarnOutOfRange(vtkObject* self, const char* name, T value, T low, T high)
                                     << high << "]: the mapper uses "
                                     << (value < low ? low : high) << ".");
   }
+}
+
+double Now()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 }
 
@@ -86,15 +92,73 @@ void vtkVisSweepVolumeRepresentation::UpdateDistributedSettings()
   if (this->Processes <= 1)
   {
     mapper->SetSeed(this->Seed);
-    mapper->SetMaximumSamples(this->MaximumSamples);
-    return;
+    this->SampleShare = this->MaximumSamples;
   }
-  // Each process its own random numbers (the first the user's seed, so one process renders as
-  // before) and its share of the samples: together MaximumSamples (at least one each).
-  const long long seed = (static_cast<long long>(this->Seed) + 104729LL * this->ProcessId) % VTK_INT_MAX;
-  mapper->SetSeed(static_cast<int>(seed));
-  const int share = this->MaximumSamples / this->Processes + (this->ProcessId < this->MaximumSamples % this->Processes ? 1 : 0);
-  mapper->SetMaximumSamples(std::max(1, share));
+  else
+  {
+    // Each process its own random numbers (the first the user's seed, so one process renders as
+    // before) and its share of the samples: together MaximumSamples (at least one each).
+    const long long seed = (static_cast<long long>(this->Seed) + 104729LL * this->ProcessId) % VTK_INT_MAX;
+    mapper->SetSeed(static_cast<int>(seed));
+    const int share = this->MaximumSamples / this->Processes + (this->ProcessId < this->MaximumSamples % this->Processes ? 1 : 0);
+    this->SampleShare = std::max(1, share);
+  }
+  // A spent time budget holds the accumulation where it is (UpdateTimeBudget decides again before
+  // the next render).
+  mapper->SetMaximumSamples(this->BudgetSpent ? std::min(this->SampleShare, std::max(1, this->BudgetSamples)) : this->SampleShare);
+}
+
+void vtkVisSweepVolumeRepresentation::SetTimeBudget(double seconds)
+{
+  if (!(seconds >= 0.0)) // negative or NaN
+  {
+    vtkWarningMacro(<< "TimeBudget " << seconds << " is not a number of seconds >= 0: 0 (no budget) is used.");
+    seconds = 0.0;
+  }
+  this->TimeBudget = seconds;
+}
+
+void vtkVisSweepVolumeRepresentation::UpdateTimeBudget()
+{
+  vtkVisibilitySweepVolumeMapper* mapper = this->GetVisSweepMapper();
+  const int resets = mapper->GetAccumulationResetCount();
+  const int samples = mapper->GetAccumulatedSamples(); // this process's
+  // The render since the last call (if any): its time (distributed: the slowest process's, the same
+  // on every process, so that all decide alike), and the next frame's without its update (new data,
+  // sweeps), as the vissweep tool's --time-budget predicts it.
+  const bool distributed = this->Processes > 1;
+  const double frame = distributed ? this->CombinedFrameSeconds[0] : mapper->GetTimeToDraw();
+  const double next = distributed ? this->CombinedFrameSeconds[1]
+                                  : std::max(0.0, mapper->GetTimeToDraw() - mapper->GetLastUpdateSeconds());
+  if (samples <= 0)
+  {
+    // No still accumulation (an interactive frame, another mode, nothing rendered yet).
+    this->AccumulationSeconds = 0.0;
+    this->BudgetSamples = 0;
+    this->BudgetResets = resets;
+  }
+  else if (resets != this->BudgetResets)
+  {
+    // That render restarted the accumulation: the clock restarts with it.
+    this->AccumulationSeconds = frame;
+    this->NextFrameSeconds = next;
+    this->BudgetSamples = samples;
+    this->BudgetResets = resets;
+  }
+  else if (samples > this->BudgetSamples)
+  {
+    this->AccumulationSeconds += frame;
+    this->NextFrameSeconds = next;
+    this->BudgetSamples = samples;
+  }
+  // Redraws (no new samples) cost nothing of the budget.
+  const bool spent = this->TimeBudget > 0.0 && samples > 0 &&
+    mapper->GetRenderMode() == vtkVisibilitySweepVolumeMapper::MonteCarlo &&
+    this->AccumulationSeconds + this->NextFrameSeconds > this->TimeBudget;
+  this->BudgetSpent = spent;
+  // The mapper's own progressive stop: MaximumSamples held at the samples reached.
+  mapper->SetMaximumSamples(spent ? std::min(this->SampleShare, samples) : this->SampleShare);
+  this->FrameStart = Now();
 }
 
 uint32_t vtkVisSweepVolumeRepresentation::CombineRadiance(std::vector<float>& mean, uint32_t samples)
@@ -108,6 +172,11 @@ uint32_t vtkVisSweepVolumeRepresentation::CombineRadiance(std::vector<float>& me
   const int size[2] = { static_cast<int>(mean.size()), -static_cast<int>(mean.size()) };
   int largest[2] = { 0, 0 };
   controller->AllReduce(size, largest, 2, vtkCommunicator::MAX_OP);
+  // The time budget: the slowest process's frame so far and next frame (without the update), the
+  // same on every process, so that all stop at the same frame (UpdateTimeBudget).
+  const double frame = std::max(0.0, Now() - this->FrameStart);
+  const double times[2] = { frame, std::max(0.0, frame - this->GetVisSweepMapper()->GetLastUpdateSeconds()) };
+  controller->AllReduce(times, this->CombinedFrameSeconds, 2, vtkCommunicator::MAX_OP);
   if (largest[0] != -largest[1])
   {
     vtkErrorMacro(<< "the processes rendered images of different sizes; each shows its own samples");
@@ -186,6 +255,7 @@ int vtkVisSweepVolumeRepresentation::RequestData(
 void vtkVisSweepVolumeRepresentation::UpdateMapperParameters()
 {
   this->Superclass::UpdateMapperParameters();
+  this->UpdateTimeBudget();
   if (this->Processes > 1 && this->EnvironmentVisible && !this->WarnedEnvironment)
   {
     vtkWarningMacro(<< "EnvironmentVisible: with " << this->Processes
@@ -311,7 +381,15 @@ int vtkVisSweepVolumeRepresentation::GetAccumulatedSamples()
 
 bool vtkVisSweepVolumeRepresentation::IsConverged()
 {
-  const bool local = this->GetVisSweepMapper()->IsConverged();
+  vtkVisibilitySweepVolumeMapper* mapper = this->GetVisSweepMapper();
+  if (this->BudgetSpent && this->TimeBudget > 0.0 &&
+    mapper->GetRenderMode() == vtkVisibilitySweepVolumeMapper::MonteCarlo)
+  {
+    // The budget held the accumulation; if the render after that restarted it (the camera moved),
+    // the next render counts again.
+    return mapper->GetAccumulationResetCount() == this->BudgetResets;
+  }
+  const bool local = mapper->IsConverged();
   if (this->CombinedSamples >= 0 && this->GetVisSweepMapper()->GetAccumulatedSamples() == this->CombinedLocalSamples &&
     this->GetVisSweepMapper()->GetRenderMode() == vtkVisibilitySweepVolumeMapper::MonteCarlo)
   {
@@ -334,6 +412,9 @@ void vtkVisSweepVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EnvironmentRotation: " << this->EnvironmentRotation << "\n";
   os << indent << "Processes: " << this->Processes << " (this one " << this->ProcessId << ")\n";
   os << indent << "Seed: " << this->Seed << ", MaximumSamples: " << this->MaximumSamples << "\n";
+  os << indent << "TimeBudget: " << this->TimeBudget << " s (0: none), AccumulationTime: "
+     << this->AccumulationSeconds << " s, next frame " << this->NextFrameSeconds << " s"
+     << (this->BudgetSpent ? ", spent" : "") << "\n";
   os << indent << "Mapper:\n";
   this->VolumeMapper->PrintSelf(os, indent.GetNextIndent());
 }

@@ -10,7 +10,8 @@
  *
  * In the Monte Carlo mode the colour transfer function is the single-scattering albedo, not an
  * emission (docs/reference.md). Each still render adds SamplesPerFrame samples per pixel until
- * MaximumSamples; GetAccumulatedSamples() and IsConverged() say how far it got.
+ * MaximumSamples, or until the TimeBudget is spent; GetAccumulatedSamples() and IsConverged() say
+ * how far it got.
  *
  * Distributed (pvbatch or pvserver under MPI, N > 1 processes): light transport needs the whole
  * volume at every scattering event, so every process gathers the pieces ParaView gives the others
@@ -74,8 +75,28 @@ public:
   void SetEnvironmentRotation(double degrees);
   ///@}
 
+  ///@{
+  /** A time budget for the still view's accumulation, in seconds; 0 (the default) is none:
+   *  MaximumSamples alone ends it. The mapper has no clock of its own (its progressive stop is
+   *  MaximumSamples), so the representation keeps one: before each render (ParaView's render
+   *  request) it adds up the still frames of the current accumulation (their render times, the
+   *  mapper's TimeToDraw; distributed, the slowest process's), and when that sum plus the next
+   *  frame's expected time (the last frame's, less its visibility update, as the vissweep tool's
+   *  --time-budget predicts it) would exceed the budget, it holds the mapper's MaximumSamples at the
+   *  samples reached: further renders only redraw and IsConverged() is true. The first frame of an
+   *  accumulation always renders. Anything that restarts the accumulation (the camera, a transfer
+   *  function, a setting) restarts the clock; a larger budget (or a larger MaximumSamples within it)
+   *  resumes refinement. Distributed, every process decides from the same (reduced) times, so all
+   *  stop at the same frame. Negative or NaN: a warning, and 0 is used. Monte Carlo mode only. */
+  void SetTimeBudget(double seconds);
+  double GetTimeBudget() { return this->TimeBudget; }
+  /** Seconds of rendering the current accumulation has taken (its still frames summed, as the
+   *  budget counts them); 0 before the first still frame. */
+  double GetAccumulationTime() { return this->AccumulationSeconds; }
+  ///@}
+
   /** Samples per pixel accumulated in the view rendered last (all processes' when distributed),
-   *  and whether they reached MaximumSamples. */
+   *  and whether they reached MaximumSamples or spent the TimeBudget. */
   int GetAccumulatedSamples();
   bool IsConverged();
   /** The mapper's last error ("" after a successful render). */
@@ -95,7 +116,8 @@ protected:
 
   /** The superclass's piece, then, when distributed, the whole volume gathered from every process. */
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  /** The superclass's settings, then EnvironmentVisible off when distributed. */
+  /** The superclass's settings, then EnvironmentVisible off when distributed; then the time budget
+   *  (called before every render, ParaView's REQUEST_RENDER). */
   void UpdateMapperParameters() override;
 
 private:
@@ -106,11 +128,23 @@ private:
   void UpdateDistributedSettings();
   /** Distributed: all processes' mean radiance and samples (the mapper's RadianceCombiner). */
   uint32_t CombineRadiance(std::vector<float>& mean, uint32_t samples);
+  /** Before a render: counts the frame rendered since the last call and holds or releases the
+   *  mapper's MaximumSamples by the TimeBudget. */
+  void UpdateTimeBudget();
 
   int Processes = 1;   // rendering together (the global controller's, 1 on a client)
   int ProcessId = 0;
   int Seed = 1;        // as the user set them; the mapper holds this process's share
   int MaximumSamples = 4096;
+  int SampleShare = 4096;         // this process's share of MaximumSamples
+  double TimeBudget = 0.0;        // seconds, 0: none
+  double AccumulationSeconds = 0.0; // the current accumulation's still frames, summed
+  double NextFrameSeconds = 0.0;  // the next frame's expected time
+  int BudgetResets = -1;          // the mapper's AccumulationResetCount the sum belongs to
+  int BudgetSamples = 0;          // this process's samples when last counted
+  bool BudgetSpent = false;       // the mapper's MaximumSamples is held at BudgetSamples
+  double FrameStart = 0.0;        // distributed: when this process's render began (seconds, steady clock)
+  double CombinedFrameSeconds[2] = { 0.0, 0.0 }; // distributed: the slowest process's frame, and next frame
   int CombinedSamples = -1;       // all processes' samples behind the last combined image (-1: none)
   int CombinedLocalSamples = -1;  // this process's then
   bool EnvironmentVisible = true;
