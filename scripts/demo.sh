@@ -11,7 +11,7 @@ t0=$(ms)
 # validation layers (setup-debian.sh --demo), no tests, benchmarks or tool (the vissweep_demo target:
 # the libraries and the Python package). scripts/test.sh adds the rest to the same build/.
 # The image is shown (and written) through the display's filter guided by the preview (--denoise:
-# ~20x lower error than the estimate alone in the first 8 s on ch2, docs/benchmarks.md).
+# 11-33x lower error than the estimate alone at 2-8 s on ch2, docs/benchmarks.md).
 "$root/scripts/setup-debian.sh" --demo
 t1=$(ms)
 "$root/scripts/build.sh" vissweep_demo
