@@ -477,7 +477,10 @@ public:
    *  the estimate is fitted as a x preview + b per channel, the slope a held near 1 where the
    *  estimate's measured variance cannot resolve it; the pixel shows the windows' mean (a, b) applied to
    *  its preview. Edges of the preview stay sharp and the noise is averaged over the window; what the
-   *  preview misses at finer scale than the window is smoothed. The guide is the hand-over's preview
+   *  preview misses at finer scale than the window is smoothed, a bias that does not fall with samples:
+   *  the window shows the blend of least expected error of the filtered image and the estimate (as the
+   *  hand-over does with the preview), so the estimate takes over once its noise is below that bias.
+   *  The guide is the hand-over's preview
    *  while it lasts, then kept; without one (no drag, no interactor: an offscreen script, the tool) the
    *  still preview is rendered for it (the whole visibility grid and the light volume on the first
    *  frame, then one preview frame per Monte Carlo frame, its offsets rotated, averaged over 4).
@@ -489,7 +492,8 @@ public:
   vtkBooleanMacro(DisplayDenoise, bool);
   vtkSetClampMacro(DisplayDenoiseRadius, int, 1, 32);
   vtkGetMacro(DisplayDenoiseRadius, int);
-  /** Whether the image shown last was filtered (DisplayDenoise), and the filter's device seconds then. */
+  /** Whether the image shown last was filtered (DisplayDenoise; a share of it above 0), and the filter's
+   *  device seconds then. */
   vtkGetMacro(LastDisplayDenoised, bool);
   vtkGetMacro(LastDenoiseSeconds, double);
   /** The linear image the window showed last in the MonteCarlo mode (as GetRadiance(): "Radiance" rgb
