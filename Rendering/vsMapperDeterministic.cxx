@@ -58,8 +58,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 
 using vs::EmissionAbsorptionFrame;
+
+namespace
+{
+// RenderMode Preview: the frames a still view averages, their offsets rotated (as the hand-over's 8).
+const uint32_t StillPreviewFrames = 8;
+}
 
 void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, vtkVolume* vol)
 {
@@ -81,13 +88,17 @@ void vtkVisibilitySweepVolumeMapper::RenderEmissionAbsorption(vtkRenderer* ren, 
 // offsets rotated (dither.h vs_dither_offset), averaged into the preview the hand-over blends
 // (PreviewImage::Frames), nothing drawn: the fixed offsets' moire averages out while the view is still,
 // the drag frames stay deterministic (frame 0).
+//
+// With `guide` (DisplayDenoise, vsMapperDenoise.cxx): the still preview's radiance (rgba, as the Monte Carlo
+// mean) is put there and nothing else is touched: nothing drawn, GetRadiance() and the frame's state kept.
 void vtkVisibilitySweepVolumeMapper::RenderLit(
-  vtkRenderer* ren, vtkVolume* vol, bool preview, bool interactive, uint32_t ditherFrame)
+  vtkRenderer* ren, vtkVolume* vol, bool preview, bool interactive, uint32_t ditherFrame, std::vector<float>* guide)
 {
   Internals& I = *this->Impl;
   if (interactive)
   {
     I.SwitchView(ren); // the view whose accumulation restarts once it is still
+    this->LastDisplayDenoised = false; // a drag frame shows the preview (a still frame may filter after it)
   }
   const vs::VolumeGeometry geometry = vs::FrameGeometry::CroppedGeometry(this, I.Scene->Geometry());
   const bool croppedAway = glm::any(glm::greaterThan(geometry.BoxMin, geometry.BoxMax));
@@ -182,15 +193,77 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(
     p.environmentSize = uint32_t(I.Environment.Device().Size());
     p.environmentScale = float(this->EnvironmentIntensity);
   }
+  // RenderMode Preview, still (issue 39, item 1): successive renders of one still view average
+  // StillPreviewFrames frames whose offsets are rotated (dither.h vs_dither_offset), as the Monte Carlo
+  // mode's hand-over does with its preview: the fixed pattern's moire averages out. The first frame is
+  // the fixed pattern (a view's first image is what it was); IsConverged() once all are in, after which
+  // a render redraws the mean. Anything else that changes (camera, size, depth, transfer function, light
+  // volume, display settings) starts again from frame 0.
+  const bool stillPreview = preview && !interactive && !guide;
+  auto& still = I.StillPreview;
+  bool reuse = false;
+  if (stillPreview)
+  {
+    vs::shared::VsEmissionAbsorptionParams k = p;
+    k.camera.frame = 0; // the lit modes read no random numbers
+    k.ditherFrame = 0;
+    std::vector<uint8_t> key(sizeof(k));
+    std::memcpy(key.data(), &k, sizeof(k));
+    const double counters[] = { double(w), double(h), double(I.Light ? I.Light->Builds() : 0u),
+      double(I.Scene->TableBuilds()), double(I.Scene->Uploads()), double(I.Scene->FactorBuilds()),
+      double(this->EnvironmentUploadCount), double(I.GridGeneration()) };
+    const auto* c = reinterpret_cast<const uint8_t*>(counters);
+    key.insert(key.end(), c, c + sizeof(counters));
+    const auto* d = reinterpret_cast<const uint8_t*>(depth.data());
+    key.insert(key.end(), d, d + depth.size() * sizeof(float));
+    if (key != still.Key)
+    {
+      still = Internals::StillPreviewImage();
+      still.Key = std::move(key);
+    }
+    reuse = still.Frames >= StillPreviewFrames;
+    p.ditherFrame = still.Frames;
+  }
   if (!I.EA)
   {
     I.EA = std::make_unique<vs::EmissionAbsorptionPass>(I.Context);
   }
-  std::vector<float> rgba = I.EA->Render(I.Scene->Volume(), I.Scene->TF(), &I.Scene->Majorants(), p, depth, false,
-    preview ? vs::shared::VS_EA_LIGHTING_PREVIEW : vs::shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION,
-    grid ? &I.Light->Image() : nullptr, preview ? &I.Environment.Device().Radiance() : nullptr);
-  this->LastDeviceSeconds = I.EA->LastSeconds();
-  this->LastRenderComplete = !interactive; // the Monte Carlo mode's image is still to come
+  std::vector<float> rgba = reuse ? still.Rgba
+    : I.EA->Render(I.Scene->Volume(), I.Scene->TF(), &I.Scene->Majorants(), p, depth, false,
+        preview ? vs::shared::VS_EA_LIGHTING_PREVIEW : vs::shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION,
+        grid ? &I.Light->Image() : nullptr, preview ? &I.Environment.Device().Radiance() : nullptr);
+  if (guide)
+  {
+    *guide = std::move(rgba);
+    return;
+  }
+  if (stillPreview && !reuse)
+  {
+    const std::vector<float>& display = I.EA->LastDisplay();
+    if (still.Frames == 0 || still.Rgba.size() != rgba.size() || still.Display.size() != display.size())
+    {
+      still.Rgba = rgba;
+      still.Display = display;
+      still.Frames = 0;
+    }
+    else
+    {
+      const float n = float(still.Frames) + 1.0f;
+      for (size_t i = 0; i < rgba.size(); ++i)
+      {
+        still.Rgba[i] += (rgba[i] - still.Rgba[i]) / n;
+      }
+      for (size_t i = 0; i < display.size(); ++i)
+      {
+        still.Display[i] += (display[i] - still.Display[i]) / n;
+      }
+      rgba = still.Rgba;
+    }
+    ++still.Frames;
+  }
+  this->LastDeviceSeconds = reuse ? 0.0 : I.EA->LastSeconds();
+  // The Monte Carlo mode's image is still to come; a still preview's is complete with its frames.
+  this->LastRenderComplete = !interactive && (!stillPreview || still.Frames >= StillPreviewFrames);
   if (!preview)
   {
     vs::WindowCompositor::Draw(ren, vp, rgba); // as the emission-absorption image
@@ -243,7 +316,7 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(
     vs::RadianceImage::Fill(I.Radiance, rgba, w, h, environmentPixels, 1.0f);
     I.EnvironmentPixels = std::move(environmentPixels);
   }
-  vs::WindowCompositor::Draw(ren, vp, I.EA->LastDisplay());
+  vs::WindowCompositor::Draw(ren, vp, stillPreview ? still.Display : I.EA->LastDisplay());
 }
 
 // In a vtkHardwareSelector pass: the prop's colour where the volume's opacity exceeds 3/255, as

@@ -10,6 +10,7 @@
 
 #include "vsContext.h"
 #include "vsCoverageComposite.h"
+#include "vsDenoisePass.h"
 #include "vsDeviceEnvironment.h"
 #include "vsDirectionTable.h"
 #include "vsEmissionAbsorptionPass.h"
@@ -88,6 +89,25 @@ struct vtkVisibilitySweepVolumeMapper::Internals
     std::chrono::steady_clock::time_point Start; // when it became Active (PreviewHandOverSeconds)
     uint32_t Frames = 1; // preview frames averaged in Rgba (their offsets rotated: dither.h vs_dither_offset)
   } HandOver;
+  // DisplayDenoise (vsMapperDenoise.cxx): the filter's guide for the current accumulation (the still
+  // preview, Frames of its rotated offsets averaged, or the hand-over's preview once it ended), the
+  // filter, and the image shown last (GetDisplayedRadiance).
+  struct DenoiseGuide
+  {
+    std::vector<float> Rgba;
+    uint32_t Width = 0, Height = 0, Frames = 0;
+  } Guide;
+  std::unique_ptr<vs::DenoisePass> Denoise;
+  vtkSmartPointer<vtkImageData> Displayed;
+  // RenderMode Preview while the view is still (issue 39, item 1): what the frame is of (its parameters
+  // but the offsets' rotation, the image's size and depth, the inputs' builds), and the mean of its first
+  // Frames frames, each with the pixels' offsets rotated (dither.h): radiance and window image.
+  struct StillPreviewImage
+  {
+    std::vector<uint8_t> Key;
+    std::vector<float> Rgba, Display;
+    uint32_t Frames = 0;
+  } StillPreview;
   // One accumulator per renderer (two views of one volume): MC, MCGrid, Interactive, ImageSignature
   // and Selector above are the current view's; the other views' wait here (SwitchView).
   struct View

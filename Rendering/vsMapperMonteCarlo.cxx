@@ -381,6 +381,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       I.HandOver.Active = I.HandOver.Pending;
       I.HandOver.Pending = false;
       I.HandOver.Start = std::chrono::steady_clock::now();
+      I.Guide = Internals::DenoiseGuide(); // DisplayDenoise's guide was of the image before
     }
     pass = gridFrame && autoStrategy ? I.MCGrid.get() : I.MC.get();
     if (pass == I.MCGrid.get())
@@ -506,6 +507,14 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     }
     if (share < vs::PreviewHandOver::EndShare)
     {
+      if (this->DisplayDenoise && I.HandOver.Width == w && I.HandOver.Height == h)
+      {
+        // The preview stays DisplayDenoise's guide (its offsets averaged over the hand-over's frames).
+        I.Guide.Rgba = std::move(I.HandOver.Rgba);
+        I.Guide.Width = w;
+        I.Guide.Height = h;
+        I.Guide.Frames = I.HandOver.Frames;
+      }
       I.HandOver = Internals::PreviewImage(); // from now on the estimate as it is
     }
     else
@@ -513,6 +522,21 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
       vs::PreviewHandOver::Blend(mean, I.HandOver.Rgba, share);
       this->LastPreviewShare = share;
     }
+  }
+  // DisplayDenoise: the image shown through the filter guided by the preview (vsMapperDenoise.cxx); what
+  // is shown, in linear radiance, is kept (GetDisplayedRadiance).
+  this->LastDisplayDenoised = false;
+  if (!interactive && !tiled)
+  {
+    if (this->DisplayDenoise && combinedSamples >= 2)
+    {
+      this->DenoiseDisplay(mean, this->CombinedVariance(autoStrategy), combinedSamples, this->LastPreviewShare, w, h);
+    }
+    if (!I.Displayed)
+    {
+      I.Displayed = vtkSmartPointer<vtkImageData>::New();
+    }
+    vs::RadianceImage::Fill(I.Displayed, mean, w, h, environmentPixels, opaqueAlpha);
   }
   // Composited over the background: the environment's display colour behind each pixel (made again
   // only when the view, the environment or the display transform changed).
@@ -534,8 +558,14 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   {
     vs::WindowCompositor::DrawScaled(ren, vp, display, int(w), int(h));
   }
-  I.LastFrame.Lap("display", lap);
-  (void)vol;
+  lap = I.LastFrame.Lap("display", lap);
+  if (!interactive && !tiled && this->DisplayDenoise)
+  {
+    // The guide's next frame for the frames to come, rendered last: its preview sweeps the whole grid on
+    // first use, which must not happen under this frame's pointers to the grid.
+    this->UpdateDenoiseGuide(ren, vol, w, h);
+    I.LastFrame.Lap("denoise guide", lap);
+  }
 }
 
 // A still Monte Carlo frame of a view that has no accumulation yet nor a preview to hand over from, in a

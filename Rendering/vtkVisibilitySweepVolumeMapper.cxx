@@ -681,6 +681,10 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InteractivePreview: " << (this->InteractivePreview ? "On" : "Off") << "\n";
   os << indent << "PreviewHandOverSeconds: " << this->PreviewHandOverSeconds << "\n";
   os << indent << "LastPreviewShare: " << this->LastPreviewShare << "\n";
+  os << indent << "DisplayDenoise: " << (this->DisplayDenoise ? "On" : "Off") << "\n";
+  os << indent << "DisplayDenoiseRadius: " << this->DisplayDenoiseRadius << "\n";
+  os << indent << "LastDisplayDenoised: " << (this->LastDisplayDenoised ? "true" : "false") << "\n";
+  os << indent << "LastDenoiseSeconds: " << this->LastDenoiseSeconds << "\n";
   os << indent << "SampleDistance: " << this->SampleDistance
      << " (EmissionAbsorption, Preview and AmbientOcclusion: MonteCarlo tracking is exact and needs no step)\n";
   os << indent << "DensityScale: " << this->DensityScale << "\n";

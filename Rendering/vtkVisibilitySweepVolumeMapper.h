@@ -470,6 +470,39 @@ public:
   vtkGetMacro(LastPreviewShare, double);
   ///@}
 
+  ///@{
+  /** Display only (issue 39): with DisplayDenoise on, the window shows the Monte Carlo estimate through
+   *  an edge-aware filter guided by the noise-free preview of the same view, a guided filter (He et al.
+   *  2010) run on the device (vsDenoisePass.h): in each window of (2 DisplayDenoiseRadius + 1)^2 pixels
+   *  the estimate is fitted as a x preview + b per channel, the slope a held near 1 where the
+   *  estimate's measured variance cannot resolve it; the pixel shows the windows' mean (a, b) applied to
+   *  its preview. Edges of the preview stay sharp and the noise is averaged over the window; what the
+   *  preview misses at finer scale than the window is smoothed, a bias that does not fall with samples:
+   *  the window shows the blend of least expected error of the filtered image and the estimate (as the
+   *  hand-over does with the preview), so the estimate takes over once its noise is below that bias.
+   *  The guide is the hand-over's preview
+   *  while it lasts, then kept; without one (no drag, no interactor: an offscreen script, the tool) the
+   *  still preview is rendered for it (the whole visibility grid and the light volume on the first
+   *  frame, then one preview frame per Monte Carlo frame, its offsets rotated, averaged over 4).
+   *  GetRadiance() stays the unbiased estimate, bit for bit; GetDisplayedRadiance() is what was shown.
+   *  Off by default (docs/reference.md, "The display's filter", has the measured errors). From 2
+   *  samples per pixel on, in still frames of the view (not while dragging, not in tiles). */
+  vtkSetMacro(DisplayDenoise, bool);
+  vtkGetMacro(DisplayDenoise, bool);
+  vtkBooleanMacro(DisplayDenoise, bool);
+  vtkSetClampMacro(DisplayDenoiseRadius, int, 1, 32);
+  vtkGetMacro(DisplayDenoiseRadius, int);
+  /** Whether the image shown last was filtered (DisplayDenoise; a share of it above 0), and the filter's
+   *  device seconds then. */
+  vtkGetMacro(LastDisplayDenoised, bool);
+  vtkGetMacro(LastDenoiseSeconds, double);
+  /** The linear image the window showed last in the MonteCarlo mode (as GetRadiance(): "Radiance" rgb
+   *  and "Alpha", rows bottom-up): the estimate, or its blend with the preview during the hand-over, or
+   *  the filtered estimate with DisplayDenoise; nullptr before the first still Monte Carlo frame. What
+   *  the benchmarks compare with a converged render (`vissweep bench denoise`). */
+  vtkImageData* GetDisplayedRadiance();
+  ///@}
+
   /** Samples per pixel accumulated so far (Monte Carlo) in the view rendered last. Each renderer
    *  showing the volume (two views of it, in one window or two) has its own accumulator, so every
    *  view converges; the visibility grid is shared. */
@@ -791,6 +824,10 @@ protected:
   bool InteractivePreview = true;
   double PreviewHandOverSeconds = 3.0;
   double LastPreviewShare = 0.0;
+  bool DisplayDenoise = false;
+  int DisplayDenoiseRadius = 6;
+  bool LastDisplayDenoised = false;
+  double LastDenoiseSeconds = 0.0;
   int AccumulatedSamples = 0;
   bool LastRenderComplete = false; // the last render was emission-absorption or a projection
   int VisibilityUpdateCount = 0;
@@ -842,7 +879,13 @@ private:
    *  volume, at three times the step in an interactive frame. `interactive`: a preview frame while the
    *  user drags in the MonteCarlo mode (GetRadiance() is left as it is, the image kept for the
    *  hand-over). */
-  void RenderLit(vtkRenderer* ren, vtkVolume* vol, bool preview, bool interactive, uint32_t ditherFrame = 0);
+  void RenderLit(vtkRenderer* ren, vtkVolume* vol, bool preview, bool interactive, uint32_t ditherFrame = 0,
+    std::vector<float>* guide = nullptr);
+  /** DisplayDenoise (vsMapperDenoise.cxx): the guide's next frame for a still w x h view (nothing once it
+   *  has its frames or the hand-over's preview guides), and the filter of the image shown. */
+  void UpdateDenoiseGuide(vtkRenderer* ren, vtkVolume* vol, uint32_t w, uint32_t h);
+  void DenoiseDisplay(std::vector<float>& shown, const std::vector<double>& variance, uint32_t samples,
+    double previewShare, uint32_t w, uint32_t h);
   /** Whether this frame of `ren` is an interactive one (the window's desired update rate at least
    *  InteractiveUpdateRate, not a tile of a tiled render). */
   bool IsInteractiveFrame(vtkRenderer* ren) const;

@@ -6,6 +6,7 @@
 #include "vsBenchAnimation.h"
 #include "vsBenchLightVolume.h"
 #include "vsBenchPreview.h"
+#include "vsBenchDenoise.h"
 #include "vsBenchSweeps.h"
 #include "vsRenderCommand.h"
 #include "vsContext.h"
@@ -34,6 +35,7 @@ int main(int argc, char** argv)
   vstool::AddBenchAnimation(*bench);
   vstool::AddBenchLightVolume(*bench);
   vstool::AddBenchPreview(*bench);
+  vstool::AddBenchDenoise(*bench);
   vstool::AddRender(app);
   try
   {

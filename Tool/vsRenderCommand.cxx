@@ -103,6 +103,7 @@ int Run(const RenderOptions& o)
   ApplyCameraOptions(objects, o);
   CheckVolumeInView(objects);
   auto* mapper = objects.Mapper.Get();
+  mapper->SetDisplayDenoise(o.Denoise); // the window's image (PNG, JPEG) only: the EXR is the estimate
   const double setupSeconds = Seconds(start, Clock::now());
 
   const ProgressiveResult loop = RenderProgressively(objects, target, o.SamplesPerFrame, o.TimeBudget, !o.Quiet);
@@ -133,6 +134,7 @@ int Run(const RenderOptions& o)
   stats["shadow_rays"] = mapper->GetShadowRays();
   stats["max_scattering_events"] = mapper->GetMaximumScatteringEvents();
   stats["anisotropy"] = mapper->GetScatteringAnisotropy();
+  stats["display_denoised"] = mapper->GetLastDisplayDenoised();
   stats["mean_scattering_events_per_path"] = mapper->GetMeanScatteringEvents();
   stats["spp"] = reached;
   if (timed)
@@ -201,8 +203,10 @@ int Run(const RenderOptions& o)
   else if (scene.Render.Mode != "monte-carlo")
   {
     // A deterministic mode renders one frame: no samples, no paths, no strategy to report.
-    std::printf("%d x %d, %s, one frame in %.2f s (setup %.2f s; device: majorants %.3f s, sweeps %.3f s, render %.3f s)\n",
-      scene.Render.Width, scene.Render.Height, scene.Render.Mode.c_str(), renderSeconds, setupSeconds,
+    // The preview: the mean of its frames, their offsets rotated (issue 39).
+    const std::string framesText = frames == 1 ? "one frame" : std::to_string(frames) + " frames averaged";
+    std::printf("%d x %d, %s, %s in %.2f s (setup %.2f s; device: majorants %.3f s, sweeps %.3f s, render %.3f s)\n",
+      scene.Render.Width, scene.Render.Height, scene.Render.Mode.c_str(), framesText.c_str(), renderSeconds, setupSeconds,
       mapper->GetLastMajorantSeconds(), sweepSeconds, deviceSeconds);
     for (const auto& out : o.Outputs)
     {
@@ -222,6 +226,12 @@ int Run(const RenderOptions& o)
           ? ("up to " + std::to_string(mapper->GetMaximumScatteringEvents()) + " events").c_str()
           : "single scattering",
         mapper->GetMeanScatteringEvents(), mapper->GetScatteringAnisotropy());
+    }
+    if (o.Denoise)
+    {
+      std::printf("display: %s\n", mapper->GetLastDisplayDenoised()
+          ? "the estimate through the filter guided by the preview (--denoise; the EXR is the estimate)"
+          : "the estimate as it is (--denoise: fewer than 2 spp, or no preview to guide the filter)");
     }
     for (const auto& out : o.Outputs)
     {
@@ -315,14 +325,20 @@ ProgressiveResult RenderProgressively(
   const auto loopStart = Clock::now();
   if (mapper->GetRenderMode() != vtkVisibilitySweepVolumeMapper::MonteCarlo)
   {
-    // The deterministic modes (preview, ambient occlusion, emission-absorption): one render is the image.
-    objects.Window->Render();
-    const char* error = mapper->GetLastError();
-    if (error && *error)
+    // The deterministic modes (preview, ambient occlusion, emission-absorption): one render is the image;
+    // the preview's is the mean of a few frames with its offsets rotated (issue 39), until IsConverged().
+    int frames = 0;
+    do
     {
-      throw std::runtime_error(std::string("render failed: ") + error);
-    }
-    r.Frames = 1;
+      objects.Window->Render();
+      const char* error = mapper->GetLastError();
+      if (error && *error)
+      {
+        throw std::runtime_error(std::string("render failed: ") + error);
+      }
+      ++frames;
+    } while (!mapper->IsConverged() && frames < 64);
+    r.Frames = frames;
     r.Seconds = r.FirstFrameSeconds = Seconds(loopStart, Clock::now());
     r.UpdateSeconds = mapper->GetLastUpdateSeconds();
     r.DirectionsUpdated = mapper->GetDirectionsUpdatedLastFrame();
@@ -557,6 +573,9 @@ void AddRender(CLI::App& app)
     "render time steps A:B (inclusive; 0-based indices into the scene's volume.files) of a volume sequence, "
     "one image per step per -o: OUT with a "
     "printf pattern (frame_%04d.png) or OUT with _NNNN inserted before the extension");
+  cmd->add_flag("--denoise", o->Denoise,
+    "the PNG/JPEG shows the estimate through an edge-aware filter guided by the noise-free preview "
+    "(DisplayDenoise; the EXR stays the unbiased estimate)");
   cmd->add_flag("-q,--quiet", o->Quiet,
     "no progress display (on stderr: a bar redrawn in place on a terminal, whole lines in a log or pipe)");
   cmd->callback([o]() {

@@ -39,6 +39,7 @@ struct RenderOptions
   std::optional<double> Anisotropy; // the scene's render.anisotropy when absent
   std::optional<double> ScatteringBlending; // issue 38: the scene's render.volumetric_scattering_blending when absent
   bool Shade = false; // issue 38: --shade turns the property's shading on (transfer_function.shade)
+  bool Denoise = false; // issue 39: --denoise, the PNG/JPEG shows the estimate through the display filter
   int Seed = -1;
   double Exposure = -1.0; // the PNG's exposure (overrides render.exposure); < 0: the scene's
   int SamplesPerFrame = 0; // 0: frames of about AutoFrameSeconds

@@ -52,6 +52,9 @@ def main():
     ap.add_argument("--preview-first", action="store_true",
                     help="start from the noise-free preview and hand over to the estimate as it converges "
                          "(the image shown blends the two by their measured errors; see README)")
+    ap.add_argument("--denoise", action="store_true",
+                    help="show (and write) the estimate through the display's edge-aware filter guided by the "
+                         "preview (DisplayDenoise; GetRadiance() stays the unbiased estimate; see README)")
     ap.add_argument("--emission-absorption", action="store_true")
     ap.add_argument("--interactive", action="store_true")
     args = ap.parse_args()
@@ -77,6 +80,7 @@ def main():
         getattr(mapper, "SetSamplingStrategyTo" + args.strategy)()
         mapper.SetSamplesPerFrame(8)
         mapper.SetMaximumSamples(args.spp)
+        mapper.SetDisplayDenoise(args.denoise)
     volume = vtk.vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(brain_property())
@@ -155,6 +159,8 @@ def main():
         share = mapper.GetLastPreviewShare()
         shown = (f", shown blended with the preview (its share {share:.2f})" if share > 0
                  else (", the estimate alone (past the hand-over from the preview)" if args.preview_first else ""))
+        if mapper.GetLastDisplayDenoised():
+            shown += ", through the display filter guided by the preview (--denoise)"
         print(f"rendered {args.size}x{args.size}: {mapper.GetAccumulatedSamples()} spp "
               f"({mapper.GetEffectiveStrategyAsString()}) in {seconds:.2f} s{shown}")
     grab = vtk.vtkWindowToImageFilter()

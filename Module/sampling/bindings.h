@@ -138,6 +138,15 @@ VS_CONST uint VS_RANGES_VOLUME = 0u;
 VS_CONST uint VS_RANGES_OUTPUT = 1u;
 VS_CONST uint VS_RANGES_BINDING_COUNT = 2u;
 
+/* The display's guided filter of the estimate (render/denoise.comp, render/vsDenoisePass.cxx). Push
+ * constants: VsDenoiseParams (denoise_params.h). */
+VS_CONST uint VS_DENOISE_INPUT = 0u;  /* storage buffer of vec4 planes, w x h each: the estimate, the guide, the
+                                         estimate's variance (of its mean, per channel) */
+VS_CONST uint VS_DENOISE_SRC = 1u;    /* storage buffer of vec4 planes: what a stage reads */
+VS_CONST uint VS_DENOISE_DST = 2u;    /* storage buffer of vec4 planes: what a stage writes */
+VS_CONST uint VS_DENOISE_OUTPUT = 3u; /* storage buffer, vec4 per pixel: the filtered estimate (alpha its own) */
+VS_CONST uint VS_DENOISE_BINDING_COUNT = 4u;
+
 VS_NAMESPACE_END
 
 #endif

@@ -1,6 +1,6 @@
 # Drives the benchmarks in their quick forms for the tool's ctests (cmake -P) and checks
 # that what they report is consistent, not how fast it is (speed lives in the benchmarks).
-#   -DVISSWEEP=<exe> -DOUT_DIR=<dir> -DBENCH=overhead|frames|animation|stress|lightvolume|preview -DSCENE=<json>
+#   -DVISSWEEP=<exe> -DOUT_DIR=<dir> -DBENCH=overhead|frames|animation|stress|lightvolume|preview|denoise -DSCENE=<json>
 cmake_minimum_required(VERSION 3.19)
 file(REMOVE_RECURSE "${OUT_DIR}")
 file(MAKE_DIRECTORY "${OUT_DIR}")
@@ -13,6 +13,8 @@ elseif (BENCH STREQUAL "stress")
 elseif (BENCH STREQUAL "preview")
   set(args bench preview "${SCENE}" --size 16 --reference-spp 32 --repeats 1 --json "${json}"
     --contact-sheet "${OUT_DIR}/sheet.png" --plot "${OUT_DIR}/plot.png")
+elseif (BENCH STREQUAL "denoise")
+  set(args bench denoise "${SCENE}" --size 24 --reference-spp 32 --times 0.2,0.5 --radius 2 --json "${json}")
 elseif (BENCH STREQUAL "lightvolume")
   set(args bench lightvolume "${SCENE}" --repeats 2 --json "${json}")
 elseif (BENCH STREQUAL "animation")
@@ -77,6 +79,27 @@ elseif (BENCH STREQUAL "lightvolume")
     string(JSON t GET "${j}" ${key} 1)
     require_positive(${t} "${key}")
   endforeach ()
+elseif (BENCH STREQUAL "denoise")
+  # Four variants (the estimate, the hand-over, denoised, both), each with a point per time; the filtered
+  # variants' last point is filtered, and every error is a number.
+  string(JSON n LENGTH "${j}" variants)
+  if (NOT n EQUAL 4)
+    message(FATAL_ERROR "${n} variants, expected 4")
+  endif ()
+  foreach (k RANGE 3)
+    string(JSON points LENGTH "${j}" variants ${k} points)
+    if (NOT points EQUAL 2)
+      message(FATAL_ERROR "variant ${k}: ${points} points, expected 2")
+    endif ()
+    string(JSON t TYPE "${j}" variants ${k} points 1 relative_mse)
+    if (NOT t STREQUAL "NUMBER")
+      message(FATAL_ERROR "variant ${k}: no error (${t})")
+    endif ()
+  endforeach ()
+  string(JSON filtered GET "${j}" variants 2 points 1 denoised)
+  if (NOT filtered)
+    message(FATAL_ERROR "the denoised variant's image at its last time is not filtered")
+  endif ()
 elseif (BENCH STREQUAL "preview")
   # Nine rows (EA, Phong, ambient occlusion, the preview still and while dragging, Monte Carlo at 1, 4,
   # 16, 64 spp), each timed; the previews and Monte Carlo have an error against the reference, Monte

@@ -74,8 +74,9 @@ if (MODE STREQUAL "good" OR MODE STREQUAL "budget" OR MODE STREQUAL "preview")
   if (NOT rc EQUAL 0)
     message(FATAL_ERROR "vissweep render failed (${rc}): ${err}")
   endif ()
-  # A deterministic mode's summary line names its mode, not "two-step, 0 spp, 0 paths/s" (issue 37).
-  if (MODE STREQUAL "preview" AND (NOT out MATCHES "^32 x 32, preview, one frame in " OR out MATCHES "paths/s"))
+  # A deterministic mode's summary line names its mode, not "two-step, 0 spp, 0 paths/s" (issue 37); the
+  # preview's image is the mean of its 8 frames, their offsets rotated (issue 39).
+  if (MODE STREQUAL "preview" AND (NOT out MATCHES "^32 x 32, preview, 8 frames averaged in " OR out MATCHES "paths/s"))
     message(FATAL_ERROR "the preview's summary line does not say its mode: ${out}")
   endif ()
   foreach (f IN ITEMS "${exr}" "${png}" "${stats}")
