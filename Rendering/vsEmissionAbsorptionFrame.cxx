@@ -6,6 +6,7 @@
 
 #include "vsTransferFunctionTable.h"
 #include "vsVolumeParams.h"
+#include "vsSceneLights.h"
 #include "vsVolumeScene.h"
 #include "sampling/interpolation.h"
 
@@ -71,6 +72,12 @@ shared::VsEmissionAbsorptionParams EmissionAbsorptionFrame::Params(vtkVisibility
     ren->GetActiveCamera()->GetDirectionOfProjection(dop);
     p.lightDirection = glm::vec3(float(-dop[0]), float(-dop[1]), float(-dop[2]));
     p.lightIntensity = 1.0f;
+    // Issue 38: the renderer's switched-on lights, its automatic headlight included, as VTK's GPU mapper
+    // shades with them (ea_render.comp shade); none (a renderer without lights): the headlight above.
+    vs::shared::VsMonteCarloParams lights{};
+    vs::SceneLights::Set(lights, ren, true);
+    p.lightCount = lights.lightCount;
+    std::copy(lights.lights, lights.lights + lights.lightCount, p.lights);
   }
   return p;
 }

@@ -7,6 +7,7 @@
 #define VS_EA_PARAMS_H
 #include "camera_params.h"
 #include "grid_params.h"
+#include "scene_lights.h"
 #include "volume_params.h"
 
 VS_NAMESPACE_BEGIN
@@ -68,6 +69,23 @@ struct VsEmissionAbsorptionParams
   uint ditherFrame; /* the lit modes' offsets: the pixel's fixed pattern rotated by this frame's share of
                        the golden ratio (dither.h vs_dither_offset; 0: the pattern itself) */
   uint unused4;
+  /* ---- issue 38: VTK's lights and the surface lobe. Added at the end. ---- */
+  uint lightCount;         /* lights[0 .. lightCount): VS_EA_SHADE's Phong lights (then lightDirection and
+                              lightIntensity are not used), or the preview's lights (VS_EA_LIGHTING_PREVIEW: their
+                              transmittance from the light volume's VS_EA_LIGHT_TRANSMITTANCE) */
+  float anisotropy;        /* the preview's Henyey-Greenstein g towards the lights (the environment's light volume is
+                              isotropic) */
+  uint surface;            /* the preview's surface lobe (1: as the Monte Carlo kernel's, mc_params.h surface*) */
+  float surfaceBlending;   /* mc_params.h's surface fields, the same meaning */
+  float surfaceDiffuse;
+  float surfaceSpecular;
+  float surfaceRoughness;
+  float gradientScale;
+  float opacityDistance;
+  uint surfacePad0;
+  uint surfacePad1;
+  uint surfacePad2;
+  VsSceneLight lights[VS_MAX_SCENE_LIGHTS];
 };
 
 VS_NAMESPACE_END

@@ -1,0 +1,220 @@
+// Issue 38, item 4: the preview and the emission-absorption mode light with the renderer's vtkLights.
+//  - Preview: a key light brightens the preview and builds the light volume again; a camera move builds
+//    nothing; a moved light builds it again; switched off, the image is that without it, bit for bit.
+//  - A headlight the user made follows the camera: a still camera move builds the light volume again, a
+//    drag frame does not (it keeps the light where it was), the next still frame does.
+//  - The surface lobe (ShadeOn): the preview's mean radiance under a key light (no sky) within a stated
+//    bound of the Monte Carlo estimate's, and the volumetric preview (ShadeOff) outside it: the lobe is
+//    what brings the preview to the estimate.
+//  - EmissionAbsorption with ShadeOn is shaded by the key light (brighter), with ShadeOff it is not.
+#include "vsRenderTestUtilities.h"
+#include "vtkVisibilitySweepVolumeMapper.h"
+
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using vstest::Check;
+
+namespace
+{
+constexpr int kSize = 32;
+
+struct Scene
+{
+  vtkNew<vtkVisibilitySweepVolumeMapper> Mapper;
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkPiecewiseFunction> Opacity;
+  vtkNew<vtkColorTransferFunction> Color;
+  vtkNew<vtkVolumeProperty> Property;
+
+  Scene()
+  {
+    this->Mapper->SetInputData(vstest::Ball(24));
+    this->Mapper->SetRenderModeToPreview();
+    this->Mapper->SetMaximumScatteringEvents(4);
+    this->Mapper->EnvironmentVisibleOff();
+    this->Opacity->AddPoint(0.0, 0.0);
+    this->Opacity->AddPoint(1.0, 0.6);
+    this->Color->AddRGBPoint(0.0, 0.8, 0.8, 0.8);
+    this->Color->AddRGBPoint(1.0, 0.8, 0.8, 0.8);
+    this->Property->SetScalarOpacity(this->Opacity);
+    this->Property->SetColor(this->Color);
+    this->Property->SetInterpolationTypeToLinear();
+    this->Volume->SetMapper(this->Mapper);
+    this->Volume->SetProperty(this->Property);
+    this->Renderer->AddVolume(this->Volume);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(kSize, kSize);
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->ResetCamera();
+  }
+
+  std::vector<float> Radiance()
+  {
+    std::vector<float> out;
+    vtkImageData* r = this->Mapper->GetRadiance();
+    vtkDataArray* a = r ? r->GetPointData()->GetArray("Radiance") : nullptr;
+    for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
+      for (int c = 0; c < 3; ++c)
+        out.push_back(float(a->GetComponent(i, c)));
+    return out;
+  }
+
+  std::vector<float> Preview()
+  {
+    this->Window->Render();
+    return this->Radiance();
+  }
+
+  // Monte Carlo until converged (samples samples per pixel).
+  std::vector<float> Estimate(int samples)
+  {
+    this->Mapper->SetRenderModeToMonteCarlo();
+    this->Mapper->SetMaximumSamples(samples);
+    this->Mapper->SetSamplesPerFrame(samples);
+    for (int i = 0; i < 4 && !this->Mapper->IsConverged(); ++i)
+      this->Window->Render();
+    this->Window->Render();
+    std::vector<float> out = this->Radiance();
+    this->Mapper->SetRenderModeToPreview();
+    return out;
+  }
+
+  // The window's mean pixel value (emission-absorption has no radiance image).
+  double WindowMean()
+  {
+    this->Window->Render();
+    const std::vector<int> px = vstest::WindowPixels(this->Window);
+    double s = 0.0;
+    for (int v : px)
+      s += v;
+    return px.empty() ? 0.0 : s / double(px.size());
+  }
+};
+
+double Mean(const std::vector<float>& v)
+{
+  double s = 0.0;
+  for (float x : v)
+    s += x;
+  return v.empty() ? 0.0 : s / double(v.size());
+}
+}
+
+int TestMapperPreviewLights(int, char*[])
+{
+  Scene s;
+  vtkCamera* camera = s.Renderer->GetActiveCamera();
+  double position[3], focal[3], up[3];
+  camera->GetPosition(position);
+  camera->GetFocalPoint(focal);
+  camera->GetViewUp(up);
+  const std::vector<float> unlit = s.Preview();
+  const int builds0 = s.Mapper->GetLightVolumeBuildCount();
+
+  vtkNew<vtkLight> key;
+  key->SetLightTypeToSceneLight();
+  key->SetPositional(false);
+  key->SetPosition(100.0, 40.0, 60.0);
+  key->SetFocalPoint(12.0, 12.0, 12.0);
+  key->SetIntensity(4.0);
+  key->SetColor(1.0, 0.9, 0.8);
+  s.Renderer->AddLight(key);
+  const std::vector<float> lit = s.Preview();
+  std::cout << "preview mean without lights " << Mean(unlit) << ", with a key light " << Mean(lit) << "\n";
+  Check(Mean(lit) > 1.2 * Mean(unlit), "a key light brightens the preview");
+  Check(s.Mapper->GetLightVolumeBuildCount() == builds0 + 1, "adding a light builds the light volume again");
+
+  s.Renderer->GetActiveCamera()->Azimuth(30.0);
+  s.Preview();
+  Check(s.Mapper->GetLightVolumeBuildCount() == builds0 + 1, "a camera move builds no light volume");
+  key->SetPosition(-100.0, 40.0, 60.0);
+  const std::vector<float> moved = s.Preview();
+  Check(s.Mapper->GetLightVolumeBuildCount() == builds0 + 2, "a moved light builds the light volume again");
+  key->SwitchOff();
+  camera->SetPosition(position);
+  camera->SetFocalPoint(focal);
+  camera->SetViewUp(up);
+  const std::vector<float> off = s.Preview();
+  Check(off == unlit, "a light switched off is no light: the preview without it, bit for bit");
+
+  // A headlight the user made (intensity 1.5) follows the camera.
+  vtkNew<vtkLight> head;
+  head->SetLightTypeToHeadlight();
+  head->SetIntensity(1.5);
+  s.Renderer->AddLight(head);
+  s.Preview();
+  int b = s.Mapper->GetLightVolumeBuildCount();
+  s.Renderer->GetActiveCamera()->Azimuth(20.0);
+  s.Preview();
+  Check(s.Mapper->GetLightVolumeBuildCount() == b + 1, "a still camera move moves the headlight: built again");
+  s.Window->SetDesiredUpdateRate(15.0); // dragging
+  s.Renderer->GetActiveCamera()->Azimuth(20.0);
+  s.Preview();
+  s.Renderer->GetActiveCamera()->Azimuth(20.0);
+  s.Preview();
+  Check(s.Mapper->GetLightVolumeBuildCount() == b + 1, "drag frames keep the headlight where it was: nothing built");
+  s.Window->SetDesiredUpdateRate(0.0001); // still
+  s.Preview();
+  Check(s.Mapper->GetLightVolumeBuildCount() == b + 2, "the still frame after the drag builds it for the headlight");
+  head->SwitchOff();
+
+  // The surface lobe against the estimate: the key light alone (no sky), one scattering event (the preview's
+  // multiple scattering has its own, documented bias), Lambert plus a GGX lobe.
+  key->SwitchOn();
+  s.Mapper->SetEnvironmentIntensity(0.0);
+  s.Mapper->SetMaximumScatteringEvents(1);
+  s.Property->ShadeOn();
+  s.Property->SetDiffuse(0.8);
+  s.Property->SetSpecular(0.2);
+  s.Property->SetSpecularPower(20.0);
+  const std::vector<float> surfacePreview = s.Preview();
+  const std::vector<float> surfaceEstimate = s.Estimate(256);
+  s.Property->ShadeOff();
+  const std::vector<float> volumetricPreview = s.Preview();
+  const double m = Mean(surfaceEstimate), ps = Mean(surfacePreview), pv = Mean(volumetricPreview);
+  std::printf("key light, ShadeOn: estimate %.5f, preview with the surface lobe %.5f (%+.1f%%), volumetric preview "
+              "%.5f (%+.1f%%)\n",
+    m, ps, 100.0 * (ps / m - 1.0), pv, 100.0 * (pv / m - 1.0));
+  const double bound = 0.10;
+  Check(std::abs(ps / m - 1.0) < bound, "the preview with the surface lobe within 10% of the estimate's mean");
+  Check(std::abs(pv / m - 1.0) > bound, "the volumetric preview is not: the test can tell");
+  s.Mapper->SetEnvironmentIntensity(1.0);
+
+  // EmissionAbsorption: Phong with the renderer's lights (the automatic headlight and the key light).
+  s.Mapper->SetRenderModeToEmissionAbsorption();
+  s.Property->ShadeOn();
+  key->SwitchOff();
+  const double shadedWithout = s.WindowMean();
+  key->SwitchOn();
+  const double shadedWith = s.WindowMean();
+  s.Property->ShadeOff();
+  key->SwitchOff();
+  const double flatWithout = s.WindowMean();
+  key->SwitchOn();
+  const double flatWith = s.WindowMean();
+  std::cout << "emission-absorption: shaded " << shadedWithout << " -> " << shadedWith << " with the key light, unshaded "
+            << flatWithout << " -> " << flatWith << "\n";
+  Check(shadedWith > shadedWithout + 2.0, "ShadeOn: the key light brightens the emission-absorption image");
+  Check(std::abs(flatWith - flatWithout) < 0.5, "ShadeOff: the lights change nothing");
+  Check(std::string(s.Mapper->GetLastError()).empty(), std::string("no error: ") + s.Mapper->GetLastError());
+  return vstest::ExitCode();
+}
