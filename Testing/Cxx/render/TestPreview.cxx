@@ -826,3 +826,41 @@ TEST(PreviewLights, RebuiltWhenALightChangesNotForACameraMove)
   std::vector<vs::shared::VsSceneLight> nine(9, key);
   EXPECT_THROW(slab.Update(nine, 4), vs::InputError);
 }
+
+// A point light inside the volume (allowed, as in the estimate): the transmittance from each cell's centre
+// runs to the light, not to the box, exp(-sigma |c - p|) to 1e-4; with the physical inverse square, the
+// preview of a pixel through the light's column is brighter than that of a pixel farther from it.
+TEST(PreviewLights, PointLightInsideTheVolume)
+{
+  const double sigma = 0.05;
+  LitSlab slab(sigma, 0.8);
+  vs::shared::VsSceneLight point{};
+  const glm::vec3 where(24.0f, 24.0f, 8.0f);
+  point.kind = vs::shared::VS_LIGHT_POSITIONAL;
+  point.position = where;
+  point.direction = glm::vec3(0.0f, 0.0f, 1.0f);
+  point.cosCone = -2.0f;
+  point.irradiance = glm::vec3(float(Pi * 50.0));
+  point.attenuation = glm::vec3(0.0f, 0.0f, 1.0f);
+  ASSERT_TRUE(slab.Update({ point }, 1));
+  const std::vector<float> T = slab.Light.DownloadTransmittance();
+  const auto c = slab.Grid.Cells();
+  const glm::dvec3 cs(slab.Grid.CellSize());
+  double worst = 0.0;
+  for (uint32_t z = 0; z < c[2]; ++z)
+    for (uint32_t y = 0; y < c[1]; ++y)
+      for (uint32_t x = 0; x < c[0]; ++x)
+      {
+        const glm::dvec3 centre = (glm::dvec3(x, y, z) + 0.5) * cs;
+        const double expected = std::exp(-sigma * glm::length(centre - glm::dvec3(where)));
+        worst = std::max(worst, std::abs(T[4 * ((size_t(z) * c[1] + y) * c[0] + x)] - expected) / expected);
+      }
+  std::printf("point light inside: transmittance worst relative error %.1e\n", worst);
+  EXPECT_LT(worst, 1e-4);
+  const std::vector<float> rgba = slab.Render(); // pixels over x, y in [20, 28]: the light at their centre
+  const float centre = rgba[4 * ((LitSlab::H / 2) * LitSlab::W + LitSlab::W / 2) + 1];
+  const float corner = rgba[1];
+  std::printf("point light inside: centre pixel %.5f, corner pixel %.5f\n", centre, corner);
+  EXPECT_GT(corner, 0.0f);
+  EXPECT_GT(centre, 1.5f * corner);
+}
