@@ -16,7 +16,9 @@
  * units), l the headlight, two-sided; where the gradient vanishes, ambient only. With P.lightCount > 0
  * (issue 38: the renderer's lights, VTK's automatic headlight included, as VTK's GPU mapper lights
  * with them) the sum over the lights instead, each of radiance E / pi towards the sample (E its irradiance
- * there, sampling/scene_lights.h: intensity x colour x attenuation x spot) in place of the intensity.
+ * there, sampling/scene_lights.h: intensity x colour x attenuation x spot) in place of the intensity, and
+ * with P.ambientFromLights (lights other than a lone headlight) VTK's ambient term of such lights, ambient x
+ * the sum of their ambient colours x intensities, in place of ambient x albedo.
  * With VS_EA_LIGHTING (ea_params.h) the composite is lit from the light volume uLight instead of
  * emitting the colour transfer function (issue 15's preview): per segment of constant medium,
  * sigma_t and the albedo at one point of it, offset by the pixel's fixed pattern (dither.h: no random
@@ -135,7 +137,9 @@ vec3 shade(vec3 x, vec3 albedo, ivec3 dims, vec3 toEye)
 {
   vec3 gw = vs_world_gradient(x, dims, P.volume.interpolation, P.volume.worldToIndex);
   float len = length(gw);
-  vec3 color = P.ambient * albedo;
+  vec3 color = P.ambientFromLights != 0u && P.lightCount > 0u
+    ? P.ambient * vec3(P.ambientLightR, P.ambientLightG, P.ambientLightB)
+    : P.ambient * albedo;
   if (len > 0.0 && !isnan(len) && !isinf(len))
   {
     vec3 n = -gw / len;

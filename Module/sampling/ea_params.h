@@ -68,7 +68,10 @@ struct VsEmissionAbsorptionParams
   float environmentScale;
   uint ditherFrame; /* the lit modes' offsets: the pixel's fixed pattern rotated by this frame's share of
                        the golden ratio (dither.h vs_dither_offset; 0: the pattern itself) */
-  uint unused4;
+  uint ambientFromLights; /* VS_EA_SHADE with lightCount > 0: 1 where the renderer's lights are not a lone
+                             headlight (VTK's lighting complexity 2 and 3): the ambient term is then ambient x
+                             ambientLight, VTK's sum of the lights' ambient colours x intensities (black by
+                             default), not ambient x the colour (VTK's headlight-only shading) */
   /* ---- issue 38: VTK's lights and the surface lobe. Added at the end. ---- */
   uint lightCount;         /* lights[0 .. lightCount): VS_EA_SHADE's Phong lights (then lightDirection and
                               lightIntensity are not used), or the preview's lights (VS_EA_LIGHTING_PREVIEW: their
@@ -82,9 +85,9 @@ struct VsEmissionAbsorptionParams
   float surfaceRoughness;
   float gradientScale;
   float opacityDistance;
-  uint surfacePad0;
-  uint surfacePad1;
-  uint surfacePad2;
+  float ambientLightR;     /* ambientFromLights: the lights' ambient colours x intensities, summed */
+  float ambientLightG;
+  float ambientLightB;
   VsSceneLight lights[VS_MAX_SCENE_LIGHTS];
 };
 

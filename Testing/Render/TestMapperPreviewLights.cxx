@@ -7,7 +7,10 @@
 //    bound of the Monte Carlo estimate's, and the volumetric preview (ShadeOff) outside it: the lobe is
 //    what brings the preview to the estimate.
 //  - Full transport under the sky and the key light: the preview no more biased than the sky-lit preview.
-//  - EmissionAbsorption with ShadeOn is shaded by the key light (brighter), with ShadeOff it is not.
+//  - EmissionAbsorption with ShadeOn is shaded by the key light (brighter), with ShadeOff it is not; and
+//    it looks like vtkGPUVolumeRayCastMapper's with ShadeOn (where this VTK has it): a ball under VTK's
+//    automatic headlight, and under a key light alone, within 1 grey level in the mean (the key light's
+//    side brighter in both).
 #include "vsRenderTestUtilities.h"
 #include "vtkVisibilitySweepVolumeMapper.h"
 
@@ -23,6 +26,10 @@
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+
+#ifdef VISSWEEP_TEST_GPU_VOLUME
+#include "vtkGPUVolumeRayCastMapper.h"
+#endif
 
 #include <cmath>
 #include <cstdio>
@@ -110,6 +117,89 @@ struct Scene
     return px.empty() ? 0.0 : s / double(px.size());
   }
 };
+
+// Mean |difference| of the window images of VisSweep's emission-absorption mode and VTK's GPU ray caster,
+// ShadeOn, on a ball of radial density (96^2, black background), under VTK's automatic headlight or a key
+// light alone; the left and right halves' means of each (the key light comes from +x). -1 without the GPU
+// mapper.
+struct Comparison
+{
+  double Difference = -1.0, VisLeft = 0.0, VisRight = 0.0, VtkLeft = 0.0, VtkRight = 0.0;
+};
+
+std::vector<int> ShadedBall(vtkVolumeMapper* mapper, bool key)
+{
+  vtkSmartPointer<vtkImageData> data = vstest::FloatVolume(48, [](int x, int y, int z) {
+    const double r = std::sqrt((x - 23.5) * (x - 23.5) + (y - 23.5) * (y - 23.5) + (z - 23.5) * (z - 23.5));
+    return float(std::max(0.0, 1.0 - r / 20.0));
+  });
+  mapper->SetInputDataObject(data);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.0);
+  opacity->AddPoint(0.3, 0.0);
+  opacity->AddPoint(0.5, 0.8);
+  opacity->AddPoint(1.0, 0.8);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0.0, 0.9, 0.7, 0.5);
+  color->AddRGBPoint(1.0, 0.9, 0.7, 0.5);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetScalarOpacity(opacity);
+  property->SetColor(color);
+  property->SetInterpolationTypeToLinear();
+  property->ShadeOn();
+  property->SetAmbient(0.1);
+  property->SetDiffuse(0.7);
+  property->SetSpecular(0.2);
+  property->SetSpecularPower(20.0);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddVolume(volume);
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetSize(96, 96);
+  window->AddRenderer(renderer);
+  renderer->ResetCamera();
+  vtkNew<vtkLight> light;
+  if (key)
+  {
+    light->SetLightTypeToSceneLight();
+    light->SetPositional(false);
+    light->SetPosition(100.0, 23.5, 53.5);
+    light->SetFocalPoint(23.5, 23.5, 23.5);
+    renderer->AddLight(light);
+  }
+  window->Render();
+  window->Render();
+  return vstest::WindowPixels(window);
+}
+
+Comparison CompareWithVtk(bool key)
+{
+  Comparison c;
+#ifdef VISSWEEP_TEST_GPU_VOLUME
+  vtkNew<vtkGPUVolumeRayCastMapper> gpu;
+  gpu->SetSampleDistance(0.25);
+  gpu->AutoAdjustSampleDistancesOff();
+  vtkNew<vtkVisibilitySweepVolumeMapper> vis;
+  vis->SetRenderModeToEmissionAbsorption();
+  vis->SetSampleDistance(0.25);
+  const std::vector<int> a = ShadedBall(vis, key), b = ShadedBall(gpu, key);
+  c.Difference = vstest::MeanAbsoluteDifference(a, b);
+  const size_t channels = a.size() / (96 * 96);
+  for (size_t i = 0; i < a.size() && channels > 0; ++i)
+  {
+    const bool left = (i / channels) % 96 < 48;
+    (left ? c.VisLeft : c.VisRight) += a[i] / double(a.size() / 2);
+    (left ? c.VtkLeft : c.VtkRight) += b[i] / double(b.size() / 2);
+  }
+#else
+  (void)key;
+#endif
+  return c;
+}
 
 double Mean(const std::vector<float>& v)
 {
@@ -238,5 +328,24 @@ int TestMapperPreviewLights(int, char*[])
   Check(shadedWith > shadedWithout + 2.0, "ShadeOn: the key light brightens the emission-absorption image");
   Check(std::abs(flatWith - flatWithout) < 0.5, "ShadeOff: the lights change nothing");
   Check(std::string(s.Mapper->GetLastError()).empty(), std::string("no error: ") + s.Mapper->GetLastError());
+
+  for (bool withKey : { false, true })
+  {
+    const Comparison c = CompareWithVtk(withKey);
+    if (c.Difference < 0.0)
+    {
+      std::cout << "this VTK has no RenderingVolumeOpenGL2: vtkGPUVolumeRayCastMapper not compared\n";
+      break;
+    }
+    std::printf("ShadeOn, %s: mean |VisSweep - vtkGPUVolumeRayCastMapper| %.2f grey levels; left/right half VisSweep "
+                "%.1f/%.1f, VTK %.1f/%.1f\n",
+      withKey ? "a key light from +x" : "VTK's automatic headlight", c.Difference, c.VisLeft, c.VisRight, c.VtkLeft,
+      c.VtkRight);
+    Check(c.Difference < 1.0, "the emission-absorption mode's shading looks like VTK's GPU mapper's (mean |diff| < 1)");
+    if (withKey)
+    {
+      Check(c.VisRight > c.VisLeft + 2.0 && c.VtkRight > c.VtkLeft + 2.0, "the key light's side is brighter in both");
+    }
+  }
   return vstest::ExitCode();
 }
