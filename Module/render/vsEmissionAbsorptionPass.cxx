@@ -34,12 +34,12 @@ EmissionAbsorptionPass::EmissionAbsorptionPass(std::shared_ptr<Context> context)
 }
 
 const ComputePipeline& EmissionAbsorptionPass::PipelineFor(
-  bool factor, bool shade, uint32_t lighting, bool projection, bool display)
+  bool factor, bool shade, uint32_t lighting, bool projection, bool display, bool lights)
 {
   // The preview's shading is the surface lobe (issue 38); ambient occlusion is not shaded.
   shade = shade && lighting != shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION;
-  const std::array<uint32_t, 5> constants = { factor ? 1u : 0u, shade ? 1u : 0u, lighting, projection ? 1u : 0u,
-    display ? 1u : 0u };
+  const std::array<uint32_t, 6> constants = { factor ? 1u : 0u, shade ? 1u : 0u, lighting, projection ? 1u : 0u,
+    display ? 1u : 0u, lights ? 1u : 0u };
   auto& pipeline = this->Pipelines_[constants];
   if (!pipeline)
   {
@@ -52,6 +52,7 @@ const ComputePipeline& EmissionAbsorptionPass::PipelineFor(
                    : (shade ? std::string(" (") + shaded + ")" : std::string());
     name += projection ? ", projections" : "";
     name += display ? ", with its window image" : "";
+    name += lights ? ", VTK's lights" : "";
     pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_ea_render),
       BindingTypes(shared::VS_EA_BINDING_COUNT,
         { { shared::VS_EA_VOLUME, BindingType::StorageImage }, { shared::VS_EA_TF, BindingType::UniformTexelBuffer },
@@ -178,8 +179,8 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
     const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     this->NoLight_->Upload(zero, sizeof(zero));
   }
-  const ComputePipeline& pipeline = this->PipelineFor(
-    volume.Factor() != nullptr, shade, lighting, params.blend != shared::VS_BLEND_COMPOSITE, display);
+  const ComputePipeline& pipeline = this->PipelineFor(volume.Factor() != nullptr, shade, lighting,
+    params.blend != shared::VS_BLEND_COMPOSITE, display, params.lightCount > 0u);
   DescriptorSet set(pipeline);
   set.Bind(shared::VS_EA_VOLUME, volume.Image())
     .BindTexels(shared::VS_EA_TF, tf.Lut(), vk::Format::eR32G32B32A32Sfloat)

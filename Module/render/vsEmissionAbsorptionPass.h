@@ -64,12 +64,13 @@ public:
 
 private:
   /** The pipeline with or without the extinction factor, shading, lighting, a projection (a blend
-   *  other than the composite) and the window image (made on first use; ea_render.comp's
+   *  other than the composite), the window image and VTK's lights (made on first use; ea_render.comp's
    *  specialization constants). */
-  const ComputePipeline& PipelineFor(bool factor, bool shade, uint32_t lighting, bool projection, bool display);
+  const ComputePipeline& PipelineFor(bool factor, bool shade, uint32_t lighting, bool projection, bool display,
+    bool lights);
 
   std::shared_ptr<Context> Context_;
-  std::map<std::array<uint32_t, 5>, std::shared_ptr<ComputePipeline>> Pipelines_;
+  std::map<std::array<uint32_t, 6>, std::shared_ptr<ComputePipeline>> Pipelines_;
   std::unique_ptr<Buffer> Params_, Depth_, Out_, Display_;
   std::unique_ptr<Image3D> NoLight_; // the 1-texel placeholder of VS_EA_LIGHT and VS_EA_BRICKS (zero)
   double LastSeconds_ = 0.0;
