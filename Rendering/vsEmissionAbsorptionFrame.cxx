@@ -6,10 +6,13 @@
 
 #include "vsTransferFunctionTable.h"
 #include "vsVolumeParams.h"
+#include "vsSceneLights.h"
 #include "vsVolumeScene.h"
 #include "sampling/interpolation.h"
 
 #include "vtkCamera.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkImageData.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
@@ -71,6 +74,36 @@ shared::VsEmissionAbsorptionParams EmissionAbsorptionFrame::Params(vtkVisibility
     ren->GetActiveCamera()->GetDirectionOfProjection(dop);
     p.lightDirection = glm::vec3(float(-dop[0]), float(-dop[1]), float(-dop[2]));
     p.lightIntensity = 1.0f;
+    // Issue 38: the renderer's switched-on lights, its automatic headlight included, as VTK's GPU mapper
+    // shades with them (ea_render.comp shade); none (a renderer without lights): the headlight above.
+    vs::shared::VsMonteCarloParams lights{};
+    vs::SceneLights::Set(lights, ren, true);
+    p.lightCount = lights.lightCount;
+    std::copy(lights.lights, lights.lights + lights.lightCount, p.lights);
+    // VTK's GPU mapper shades a lone headlight with ambient x colour (its lighting complexity 1), any other
+    // lights with ambient x the sum of their ambient colours x intensities (vtkLight's default ambient colour
+    // is black).
+    int on = 0, headlights = 0;
+    glm::vec3 ambientLight(0.0f);
+    vtkLightCollection* collection = ren->GetLights();
+    collection->InitTraversal();
+    for (vtkLight* light = collection->GetNextItem(); light; light = collection->GetNextItem())
+    {
+      if (light->GetSwitch() && light->GetIntensity() > 0.0)
+      {
+        ++on;
+        headlights += light->LightTypeIsHeadlight() ? 1 : 0;
+        const double* a = light->GetAmbientColor();
+        ambientLight += glm::vec3(float(a[0]), float(a[1]), float(a[2])) * float(light->GetIntensity());
+      }
+    }
+    if (lights.lightCount > 0 && !(on == 1 && headlights == 1))
+    {
+      p.ambientFromLights = 1u;
+      p.ambientLightR = ambientLight.r;
+      p.ambientLightG = ambientLight.g;
+      p.ambientLightB = ambientLight.b;
+    }
   }
   return p;
 }

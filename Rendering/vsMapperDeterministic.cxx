@@ -29,6 +29,8 @@
 #include "vsSelectionMask.h"
 #include "vsVoxelPicker.h"
 #include "vsRenderTargetLimits.h"
+#include "vsSceneLights.h"
+#include "vsSurfaceScattering.h"
 #include "vsStrategySelector.h"
 #include "vsVisibilityGrid.h"
 #include "vsVisibilityGridUpdater.h"
@@ -123,6 +125,7 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(
   bool shade = false;
   vs::shared::VsEmissionAbsorptionParams p =
     EmissionAbsorptionFrame::Params(this, ren, vol, geometry, view, *I.Scene, I.Frame++, shade);
+  vs::shared::VsMonteCarloParams mc{}; // the preview's lights, phase and surface lobe, as the estimate's
   if (grid)
   {
     if (!I.Light)
@@ -138,8 +141,62 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(
     scattering.Params = p.volume;
     scattering.Events = uint32_t(std::clamp(this->MaximumScatteringEvents, 1, int(vs::shared::VS_MAX_SCATTERING_EVENTS)));
     scattering.Orders = preview ? uint32_t(std::max(this->PreviewScatteringOrders, 1)) : 1u;
+    if (preview)
+    {
+      // Issue 38: the preview lights with what the Monte Carlo estimate lights with (VTK's lights but its
+      // automatic headlight, vsSceneLights.h), scatters by its phase's anisotropy towards them and, with
+      // ShadeOn, by its surface lobe. Lights that follow the camera (headlights, camera lights) move with
+      // every camera move: while the user drags, the light volume keeps them where they were when it was
+      // built (a rebuild per drag frame would cost more than the frame), and the view's first still frame
+      // builds it for where they are. A change of any other light builds it again at once.
+      vs::mapper::CopyKernelSettings(this, vol ? vol->GetProperty() : nullptr, mc);
+      mc.volume = p.volume;
+      vs::mapper::SetSurface(mc, vol ? vol->GetProperty() : nullptr, this->VolumetricScatteringBlending,
+        I.Scene->Geometry(), this->DensityScale);
+      uint32_t follows = 0u;
+      vs::SceneLights::Set(mc, ren, false, &follows);
+      scattering.Lights.assign(mc.lights, mc.lights + mc.lightCount);
+      const std::vector<vs::shared::VsSceneLight>& built = I.Light->Lights();
+      if (this->IsInteractiveFrame(ren) && follows != 0u && I.Light->Valid() &&
+        built.size() == scattering.Lights.size())
+      {
+        bool othersSame = true;
+        for (size_t i = 0; i < built.size(); ++i)
+        {
+          if (!(follows & (1u << i)) && std::memcmp(&built[i], &scattering.Lights[i], sizeof(built[i])) != 0)
+          {
+            othersSame = false;
+          }
+        }
+        if (othersSame)
+        {
+          scattering.Lights = built; // the camera's lights as the light volume has them
+        }
+      }
+    }
     I.Light->Update(*grid, I.Environment.Device(), this->EnvironmentIntensity, scattering);
     this->LightVolumeBuildCount = int(I.Light->Builds());
+  }
+  // The preview's lights are those the light volume was built with (its transmittance is towards them).
+  p.lightCount = 0u;
+  if (preview && grid && I.Light->Transmittance())
+  {
+    const std::vector<vs::shared::VsSceneLight>& lights = I.Light->Lights();
+    p.lightCount = uint32_t(lights.size());
+    std::copy(lights.begin(), lights.end(), p.lights);
+  }
+  shade = false;
+  if (preview)
+  {
+    p.anisotropy = mc.anisotropy;
+    shade = vs::SurfaceScattering::Enabled(mc);
+    p.surface = shade ? 1u : 0u;
+    p.surfaceBlending = mc.surfaceBlending;
+    p.surfaceDiffuse = mc.surfaceDiffuse;
+    p.surfaceSpecular = mc.surfaceSpecular;
+    p.surfaceRoughness = mc.surfaceRoughness;
+    p.gradientScale = mc.gradientScale;
+    p.opacityDistance = mc.opacityDistance;
   }
   if (grid)
   {
@@ -229,9 +286,10 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(
     I.EA = std::make_unique<vs::EmissionAbsorptionPass>(I.Context);
   }
   std::vector<float> rgba = reuse ? still.Rgba
-    : I.EA->Render(I.Scene->Volume(), I.Scene->TF(), &I.Scene->Majorants(), p, depth, false,
+    : I.EA->Render(I.Scene->Volume(), I.Scene->TF(), &I.Scene->Majorants(), p, depth, shade,
         preview ? vs::shared::VS_EA_LIGHTING_PREVIEW : vs::shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION,
-        grid ? &I.Light->Image() : nullptr, preview ? &I.Environment.Device().Radiance() : nullptr);
+        grid ? &I.Light->Image() : nullptr, preview ? &I.Environment.Device().Radiance() : nullptr,
+        grid ? I.Light->Transmittance() : nullptr);
   if (guide)
   {
     *guide = std::move(rgba);

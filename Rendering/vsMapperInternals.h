@@ -40,6 +40,19 @@
 #include <vector>
 
 class vtkWindow;
+class vtkVolumeProperty;
+
+namespace vs
+{
+namespace mapper
+{
+// vsMapperMonteCarlo.cxx: the mapper's kernel settings (transport, phase anisotropy, ...) and the surface
+// lobe's (issue 38) in Monte Carlo parameters; the preview reads its anisotropy and lobe from them too.
+void CopyKernelSettings(vtkVisibilitySweepVolumeMapper* m, vtkVolumeProperty* property, shared::VsMonteCarloParams& p);
+void SetSurface(shared::VsMonteCarloParams& p, vtkVolumeProperty* property, double blending,
+  const VolumeGeometry& geometry, double densityScale);
+}
+}
 
 struct vtkVisibilitySweepVolumeMapper::Internals
 {

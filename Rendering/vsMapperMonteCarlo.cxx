@@ -68,7 +68,9 @@
 
 using vs::EmissionAbsorptionFrame;
 
-namespace
+namespace vs
+{
+namespace mapper
 {
 // The mapper's kernel settings in the parameters, copied here and nowhere else (the first frame's
 // prewarm and every frame use it): the cell mode, the trackers, the sampler, TwoStep's ε and
@@ -131,6 +133,9 @@ void SetSurface(vs::shared::VsMonteCarloParams& p, vtkVolumeProperty* property, 
     property ? property->GetScalarOpacityUnitDistance(0) : 1.0, densityScale);
 }
 }
+}
+using vs::mapper::CopyKernelSettings;
+using vs::mapper::SetSurface;
 
 void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars)
 {

@@ -18,9 +18,14 @@ bool SceneLights::IsAutomaticHeadlight(vtkLight* light)
     c[2] == 1.0 && !light->GetPositional();
 }
 
-int SceneLights::Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer)
+int SceneLights::Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer, bool withAutomaticHeadlight,
+  uint32_t* followsCamera)
 {
   params.lightCount = 0u;
+  if (followsCamera)
+  {
+    *followsCamera = 0u;
+  }
   vtkLightCollection* lights = renderer ? renderer->GetLights() : nullptr;
   vtkCamera* camera = renderer ? renderer->GetActiveCamera() : nullptr;
   if (!lights || !camera)
@@ -31,7 +36,7 @@ int SceneLights::Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer)
   lights->InitTraversal();
   for (vtkLight* light = lights->GetNextItem(); light; light = lights->GetNextItem())
   {
-    if (!light->GetSwitch() || light->GetIntensity() <= 0.0 || IsAutomaticHeadlight(light))
+    if (!light->GetSwitch() || light->GetIntensity() <= 0.0 || (!withAutomaticHeadlight && IsAutomaticHeadlight(light)))
     {
       continue;
     }
@@ -75,6 +80,10 @@ int SceneLights::Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer)
     if (SceneLightParams::Make(l, light->GetPositional() != 0, position, focal, light->GetIntensity(),
           glm::dvec3(c[0], c[1], c[2]), light->GetConeAngle(), light->GetExponent(), glm::dvec3(a[0], a[1], a[2])))
     {
+      if (followsCamera && (light->LightTypeIsHeadlight() || light->LightTypeIsCameraLight()))
+      {
+        *followsCamera |= 1u << params.lightCount;
+      }
       params.lights[params.lightCount++] = l;
     }
   }

@@ -18,8 +18,12 @@ class SceneLights
 {
 public:
   /** Fills params.lightCount and params.lights from the renderer's lights; returns how many switched-on
-   *  lights were left out (beyond VS_MAX_SCENE_LIGHTS). */
-  static int Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer);
+   *  lights were left out (beyond VS_MAX_SCENE_LIGHTS). With `withAutomaticHeadlight` VTK's automatic
+   *  headlight is a light too (the emission-absorption mode's Phong shading, as VTK's GPU mapper lights
+   *  with it). `followsCamera`, if given: bit i set where light i follows the camera (a headlight or a
+   *  camera light: it moves with every camera move). */
+  static int Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer, bool withAutomaticHeadlight = false,
+    uint32_t* followsCamera = nullptr);
 
   /** Whether `light` is what VTK's renderer creates by itself when no light is on (vtkRenderer::
    *  CreateLight): a headlight at vtkLight's defaults (intensity 1, white, not positional). The estimate

@@ -19,7 +19,8 @@
  *   while the visibility grid is recomputed only when extinction changes (data,
  *   opacity, unit distance, density scale, clipping).
  * - EmissionAbsorption: ray casting of VTK's transfer functions (opacity per
- *   ScalarOpacityUnitDistance, colour as emission), a jittered sample per step.
+ *   ScalarOpacityUnitDistance, colour as emission), a jittered sample per step; ShadeOn: Phong with
+ *   the renderer's lights (its automatic headlight included), as vtkGPUVolumeRayCastMapper.
  * - Preview: a noise-free, deterministic ray march of the camera rays (the emission-absorption
  *   pass without jitter) lit from the light volume, the environment light reaching each visibility
  *   cell directly and after up to MaximumScatteringEvents - 1 scatterings in the volume
@@ -28,7 +29,11 @@
  *   the grid's resolution and the step; the image the Monte Carlo mode converges to, at the cost
  *   of one emission-absorption render once the grid is swept. The grid (at DirectionResolution)
  *   and the light volume are made when the volume, the environment or its intensity change, never
- *   for a camera move (GetLightVolumeBuildCount()). Shown through the display transform as
+ *   for a camera move (GetLightVolumeBuildCount()). The renderer's vtkLights (as the Monte Carlo mode
+ *   takes them) light each step directly through the light volume's transmittance towards them, and
+ *   their multiple scattering is in I; a light's change builds the light volume again (lights that
+ *   follow the camera: at the still frames only). With ShadeOn, the Monte Carlo mode's surface lobe
+ *   (docs/reference.md). Shown through the display transform as
  *   MonteCarlo (Exposure, ToneMapping, the environment as background), the window image made on
  *   the device with the radiance. Steps of one voxel unless SampleDistance is set, three times
  *   that in an interactive frame (InteractiveUpdateRate), in this mode and in AmbientOcclusion;

@@ -13,7 +13,12 @@
  * With VS_EA_SHADE, the composite's colour is Phong-shaded as vtkGPUVolumeRayCastMapper shades it
  * (the vtkVolumeProperty's ShadeOn): ambient x albedo + intensity x (diffuse |n.l| albedo +
  * specular |n.h|^power), n the normalised gradient of the scalar (central differences, in world
- * units), l the headlight, two-sided; where the gradient vanishes, ambient only.
+ * units), l the headlight, two-sided; where the gradient vanishes, ambient only. With P.lightCount > 0
+ * (issue 38: the renderer's lights, VTK's automatic headlight included, as VTK's GPU mapper lights
+ * with them) the sum over the lights instead, each of radiance E / pi towards the sample (E its irradiance
+ * there, sampling/scene_lights.h: intensity x colour x attenuation x spot) in place of the intensity, and
+ * with P.ambientFromLights (lights other than a lone headlight) VTK's ambient term of such lights, ambient x
+ * the sum of their ambient colours x intensities, in place of ambient x albedo.
  * With VS_EA_LIGHTING (ea_params.h) the composite is lit from the light volume uLight instead of
  * emitting the colour transfer function (issue 15's preview): per segment of constant medium,
  * sigma_t and the albedo at one point of it, offset by the pixel's fixed pattern (dither.h: no random
@@ -21,7 +26,16 @@
  * T (1 - exp(-sigma_t dt)) albedo I(x) / (4 pi), the exact integral of T sigma_s I / (4 pi) over it
  * (VS_EA_LIGHTING_PREVIEW: single scattering of the light volume I, trilinear between cell centres,
  * clamped at the box); VS_EA_LIGHTING_AMBIENT_OCCLUSION puts 4 pi lightIntensity V(x) for I, V the
- * mean visibility (the light volume's alpha). Alpha is 1 - T. Not shaded (VS_EA_SHADE ignored).
+ * mean visibility (the light volume's alpha). Alpha is 1 - T.
+ * The preview and VTK's lights (issue 38): with P.lightCount > 0 each sample is lit by each light directly,
+ * E_l T_l k(w_l), T_l the light volume's transmittance towards the light (uLightT, trilinear between the
+ * cells' centres as uLight), E_l its irradiance at the sample and k the phase function (g = P.anisotropy)
+ * times the albedo; the light volume's I carries the lights' multiple scattering (vsLightVolume.h).
+ * With VS_EA_SHADE in the preview: the surface lobe of the Monte Carlo kernel (surface_scattering.glsl),
+ * the same mixture k(w) = (1 - P_s) albedo f_HG + P_s f_r |n.w| towards each light, and towards the
+ * environment (1 - P_s) albedo I / (4 pi) + P_s (k_d albedo + k_s) I / (4 pi): the light volume's I / (4 pi)
+ * stands for the radiance arriving from every direction (exact under a uniform incident radiance, which the
+ * lobe reflects as k_d albedo + k_s E(wo), E <= 1 the GGX lobe's albedo; docs/reference.md for its bias).
  * With P.display (VS_EA_DISPLAY_*), the environment seen through the volume (T x its radiance) and
  * the window image are made here too (write_pixel).
  * The composite skips the majorant grid's empty bricks (skip_empty: no extinction there, so nothing
@@ -35,6 +49,8 @@
 #include "environment_display.glsl"
 #include "rng.h"
 #include "ea_params.h"
+#include "microfacet.h"
+#include "scene_lights.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = VS_EA_VOLUME, r32f) uniform readonly image3D uVolume;
@@ -48,6 +64,7 @@ layout(binding = VS_EA_BRICKS, rgba32f) uniform readonly image3D uBricks; /* the
                                                    (vsMajorantGrid.h), read when volume.majorantBrickSize > 0 */
 layout(binding = VS_EA_ENVIRONMENT) uniform samplerBuffer uEnvironment; /* read with VS_EA_DISPLAY_ENVIRONMENT */
 layout(std430, binding = VS_EA_DISPLAY) writeonly buffer Display { vec4 uDisplay[]; }; /* VS_EA_DISPLAY_IMAGE */
+layout(binding = VS_EA_LIGHT_TRANSMITTANCE, rgba32f) uniform readonly image3D uLightT; /* the preview with lights */
 layout(constant_id = 0) const uint VS_EA_FACTOR = 0u;
 layout(constant_id = 1) const uint VS_EA_SHADE = 0u;
 layout(constant_id = 2) const uint VS_EA_LIGHTING = 0u; /* VS_EA_LIGHTING_* */
@@ -58,6 +75,10 @@ layout(constant_id = 2) const uint VS_EA_LIGHTING = 0u; /* VS_EA_LIGHTING_* */
  * frame at 512^2 (an early return measured 39, 29 and 19 ms with both, one and none). */
 layout(constant_id = 3) const uint VS_EA_PROJECTION = 0u;
 layout(constant_id = 4) const uint VS_EA_WINDOW_IMAGE = 0u;
+/* Whether P.lightCount > 0 (issue 38: VTK's lights in the preview or the Phong shading): the lights' code
+ * only in the pipelines that run it. A loop over no lights in every pipeline made the preview's drag frame
+ * 1.3-1.9x slower on lavapipe (measured on ch2 at 512^2, loaded machine). */
+layout(constant_id = 5) const uint VS_EA_LIGHTS = 0u;
 #define VS_FACTOR_IMAGE
 #define VS_TF_ENTRY_TEXELS
 
@@ -113,24 +134,46 @@ vec4 project(vec3 oi, vec3 di, vec2 t, float stepSize, uint blend, float jitter)
   return vec4(vec3(clamp(sum, 0.0, 1.0)), 1.0);
 }
 
+mat4 gIndexToWorld = mat4(1.0); /* the inverse of P.volume.worldToIndex (main, with lights) */
+
 /* Phong shading at index-space point x of a sample of colour albedo (VS_EA_SHADE). */
 vec3 shade(vec3 x, vec3 albedo, ivec3 dims, vec3 toEye)
 {
   vec3 gw = vs_world_gradient(x, dims, P.volume.interpolation, P.volume.worldToIndex);
   float len = length(gw);
-  vec3 color = P.ambient * albedo;
+  vec3 color = VS_EA_LIGHTS == 1u && P.ambientFromLights != 0u
+    ? P.ambient * vec3(P.ambientLightR, P.ambientLightG, P.ambientLightB)
+    : P.ambient * albedo;
   if (len > 0.0 && !isnan(len) && !isinf(len))
   {
     vec3 n = -gw / len;
-    vec3 l = P.lightDirection;
-    vec3 h = normalize(l + toEye);
-    float nl = abs(dot(n, l)), nh = abs(dot(n, h));
-    color += P.lightIntensity * (P.diffuse * nl * albedo + P.specular * pow(nh, P.specularPower) * vec3(1.0));
+    if (VS_EA_LIGHTS == 0u)
+    {
+      vec3 l = P.lightDirection;
+      vec3 h = normalize(l + toEye);
+      float nl = abs(dot(n, l)), nh = abs(dot(n, h));
+      color += P.lightIntensity * (P.diffuse * nl * albedo + P.specular * pow(nh, P.specularPower) * vec3(1.0));
+    }
+    else
+    {
+      vec3 xw = (gIndexToWorld * vec4(x, 1.0)).xyz;
+      for (uint i = 0u; i < P.lightCount; ++i)
+      {
+        vec3 l;
+        float distance;
+        vec3 radiance = vs_scene_light_incident(P.lights[i], xw, l, distance) * (1.0 / VS_PI);
+        vec3 h = normalize(l + toEye);
+        float nl = abs(dot(n, l)), nh = abs(dot(n, h));
+        color += radiance * (P.diffuse * nl * albedo + P.specular * pow(nh, P.specularPower) * vec3(1.0));
+      }
+    }
   }
   return color;
 }
 
 /* The light volume at index-space point x: trilinear between the cells' centres, clamped at the box. */
+ivec3 gLerpI0, gLerpI1;
+vec3 gLerpF;
 vec4 light_at(vec3 x)
 {
   ivec3 cells = ivec3(P.grid.cells);
@@ -138,11 +181,79 @@ vec4 light_at(vec3 x)
   ivec3 i0 = min(ivec3(floor(g)), cells - 1);
   ivec3 i1 = min(i0 + 1, cells - 1);
   vec3 f = g - vec3(i0);
+  if (VS_EA_LIGHTS == 1u)
+  {
+    gLerpI0 = i0; /* for transmittance_at, at the same point */
+    gLerpI1 = i1;
+    gLerpF = f;
+  }
   vec4 c00 = mix(imageLoad(uLight, ivec3(i0.x, i0.y, i0.z)), imageLoad(uLight, ivec3(i1.x, i0.y, i0.z)), f.x);
   vec4 c10 = mix(imageLoad(uLight, ivec3(i0.x, i1.y, i0.z)), imageLoad(uLight, ivec3(i1.x, i1.y, i0.z)), f.x);
   vec4 c01 = mix(imageLoad(uLight, ivec3(i0.x, i0.y, i1.z)), imageLoad(uLight, ivec3(i1.x, i0.y, i1.z)), f.x);
   vec4 c11 = mix(imageLoad(uLight, ivec3(i0.x, i1.y, i1.z)), imageLoad(uLight, ivec3(i1.x, i1.y, i1.z)), f.x);
   return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
+}
+
+/* The transmittance towards lights 4 k .. 4 k + 3 at the point of the last light_at (the same weights),
+ * from layer k of uLightT (vsLightVolume.h). */
+vec4 transmittance_at(uint k)
+{
+  ivec3 i0 = gLerpI0, i1 = gLerpI1;
+  vec3 f = gLerpF;
+  int z = int(k * P.grid.cells.z);
+  i0.z += z;
+  i1.z += z;
+  vec4 c00 = mix(imageLoad(uLightT, ivec3(i0.x, i0.y, i0.z)), imageLoad(uLightT, ivec3(i1.x, i0.y, i0.z)), f.x);
+  vec4 c10 = mix(imageLoad(uLightT, ivec3(i0.x, i1.y, i0.z)), imageLoad(uLightT, ivec3(i1.x, i1.y, i0.z)), f.x);
+  vec4 c01 = mix(imageLoad(uLightT, ivec3(i0.x, i0.y, i1.z)), imageLoad(uLightT, ivec3(i1.x, i0.y, i1.z)), f.x);
+  vec4 c11 = mix(imageLoad(uLightT, ivec3(i0.x, i1.y, i1.z)), imageLoad(uLightT, ivec3(i1.x, i1.y, i1.z)), f.x);
+  return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
+}
+
+/* The preview's radiance towards the camera per unit collision at index-space point x (issue 38): the
+ * sample's albedo, extinction sigma, the camera ray's world direction d, and I / (4 pi) of the light
+ * volume there (light_at just read). Without lights and the lobe: albedo I / (4 pi), as before. */
+vec3 preview_radiance(vec3 x, vec3 albedo, float sigma, vec3 d, vec3 inScattered, ivec3 dims)
+{
+  float ps = 0.0;
+  vec3 n = vec3(0.0, 0.0, 1.0);
+  vec3 kd = albedo * P.surfaceDiffuse;
+  vec3 L;
+  if (VS_EA_SHADE == 1u)
+  {
+    /* P_s and the normal as the Monte Carlo kernel's surface_event. */
+    vec3 gw = vs_world_gradient(x, dims, P.volume.interpolation, P.volume.worldToIndex);
+    float len = length(gw);
+    if (len > 0.0 && !isinf(len))
+    {
+      float g = min(1.0, len * P.gradientScale);
+      float alpha = 1.0 - exp(-sigma * P.opacityDistance);
+      ps = vs_surface_probability(P.surfaceBlending, g, isnan(alpha) ? 0.0 : alpha);
+      n = gw / len;
+    }
+    L = ((1.0 - ps) * albedo + ps * (kd + vec3(P.surfaceSpecular))) * inScattered;
+  }
+  else
+    L = albedo * inScattered;
+  vec4 T4 = vec4(0.0);
+  for (uint l = 0u; VS_EA_LIGHTS == 1u && l < P.lightCount; ++l)
+  {
+    if ((l & 3u) == 0u)
+      T4 = transmittance_at(l >> 2u);
+    vec3 xw = (gIndexToWorld * vec4(x, 1.0)).xyz;
+    vec3 w;
+    float distance;
+    vec3 E = vs_scene_light_incident(P.lights[l], xw, w, distance);
+    vec3 k = albedo * vs_hg_pdf(dot(d, w), P.anisotropy);
+    if (VS_EA_SHADE == 1u)
+    {
+      k *= 1.0 - ps;
+      if (ps > 0.0)
+        k += ps * abs(dot(n, w)) * vs_surface_brdf(n, -d, w, kd, P.surfaceSpecular, P.surfaceRoughness);
+    }
+    L += T4[l & 3u] * E * k;
+  }
+  return L;
 }
 
 /* Empty-space skipping of the composite: a brick whose majorant is 0 (vsMajorantGrid.h) holds no
@@ -197,6 +308,8 @@ void main()
     return;
   uint idx = pix.y * W + pix.x;
   vs_set_cropping(P.volume.cropLo, P.volume.cropHi, P.volume.cropFlags);
+  if (VS_EA_LIGHTS == 1u)
+    gIndexToWorld = inverse(P.volume.worldToIndex);
   VsRng rng = vs_rng_init(pix, P.camera.frame, P.camera.seed);
 
   vec2 ndc = (vec2(pix) + 0.5) / vec2(W, H) * 2.0 - 1.0;
@@ -267,7 +380,7 @@ void main()
       if (c.w > 0.0)
       {
         if (VS_EA_LIGHTING == VS_EA_LIGHTING_PREVIEW)
-          c.rgb *= light_at(x).rgb * (1.0 / (4.0 * VS_PI));
+          c.rgb = preview_radiance(x, c.rgb, c.w, d, light_at(x).rgb * (1.0 / (4.0 * VS_PI)), dims);
         else if (VS_EA_LIGHTING == VS_EA_LIGHTING_AMBIENT_OCCLUSION)
           c.rgb *= P.lightIntensity * light_at(x).a;
         else if (VS_EA_SHADE == 1u)

@@ -34,11 +34,12 @@ EmissionAbsorptionPass::EmissionAbsorptionPass(std::shared_ptr<Context> context)
 }
 
 const ComputePipeline& EmissionAbsorptionPass::PipelineFor(
-  bool factor, bool shade, uint32_t lighting, bool projection, bool display)
+  bool factor, bool shade, uint32_t lighting, bool projection, bool display, bool lights)
 {
-  shade = shade && lighting == shared::VS_EA_LIGHTING_NONE; // the lit modes are not Phong-shaded
-  const std::array<uint32_t, 5> constants = { factor ? 1u : 0u, shade ? 1u : 0u, lighting, projection ? 1u : 0u,
-    display ? 1u : 0u };
+  // The preview's shading is the surface lobe (issue 38); ambient occlusion is not shaded.
+  shade = shade && lighting != shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION;
+  const std::array<uint32_t, 6> constants = { factor ? 1u : 0u, shade ? 1u : 0u, lighting, projection ? 1u : 0u,
+    display ? 1u : 0u, lights ? 1u : 0u };
   auto& pipeline = this->Pipelines_[constants];
   if (!pipeline)
   {
@@ -46,9 +47,12 @@ const ComputePipeline& EmissionAbsorptionPass::PipelineFor(
     std::string name = lighting == shared::VS_EA_LIGHTING_PREVIEW ? "preview"
       : lighting == shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION     ? "ambient occlusion"
                                                                   : "emission-absorption";
-    name += factor ? (shade ? " (gradient opacity, shaded)" : " (gradient opacity)") : (shade ? " (shaded)" : "");
+    const char* shaded = lighting == shared::VS_EA_LIGHTING_PREVIEW ? "surface lobe" : "shaded";
+    name += factor ? (shade ? std::string(" (gradient opacity, ") + shaded + ")" : std::string(" (gradient opacity)"))
+                   : (shade ? std::string(" (") + shaded + ")" : std::string());
     name += projection ? ", projections" : "";
     name += display ? ", with its window image" : "";
+    name += lights ? ", VTK's lights" : "";
     pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_ea_render),
       BindingTypes(shared::VS_EA_BINDING_COUNT,
         { { shared::VS_EA_VOLUME, BindingType::StorageImage }, { shared::VS_EA_TF, BindingType::UniformTexelBuffer },
@@ -57,7 +61,8 @@ const ComputePipeline& EmissionAbsorptionPass::PipelineFor(
           { shared::VS_EA_FACTOR_IMAGE, BindingType::StorageImage },
           { shared::VS_EA_LIGHT, BindingType::StorageImage }, { shared::VS_EA_BRICKS, BindingType::StorageImage },
           { shared::VS_EA_ENVIRONMENT, BindingType::UniformTexelBuffer },
-          { shared::VS_EA_DISPLAY, BindingType::StorageBuffer } }),
+          { shared::VS_EA_DISPLAY, BindingType::StorageBuffer },
+          { shared::VS_EA_LIGHT_TRANSMITTANCE, BindingType::StorageImage } }),
       0, name, std::vector<uint32_t>(constants.begin(), constants.end()));
   }
   return *pipeline;
@@ -67,12 +72,13 @@ EmissionAbsorptionPass::~EmissionAbsorptionPass() = default;
 
 // Rows of 16 bytes (volume_params.h): a member that breaks the rule changes the size.
 static_assert(sizeof(shared::VsEmissionAbsorptionParams) ==
-    sizeof(shared::VsCameraParams) + sizeof(shared::VsVolumeParams) + 4 * 16 + sizeof(shared::VsGridParams) + 16,
+    sizeof(shared::VsCameraParams) + sizeof(shared::VsVolumeParams) + 4 * 16 + sizeof(shared::VsGridParams) + 16 + 3 * 16 +
+      shared::VS_MAX_SCENE_LIGHTS * sizeof(shared::VsSceneLight),
   "VsEmissionAbsorptionParams: rows of 16 bytes (volume_params.h)");
 
 std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
   const TransferFunctionTable& tf, const MajorantGrid* majorants, const shared::VsEmissionAbsorptionParams& inParams, const std::vector<float>& depth,
-  bool shade, uint32_t lighting, const Image3D* light, const Buffer* environment)
+  bool shade, uint32_t lighting, const Image3D* light, const Buffer* environment, const Image3D* lightTransmittance)
 {
   this->LastDisplay_.clear();
   if (lighting > shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION)
@@ -104,6 +110,28 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
     {
       params.grid.cells = glm::uvec3(1u);
       params.grid.cellSize = glm::max(params.volume.boxMax - params.volume.boxMin, glm::vec3(1e-30f));
+    }
+  }
+  if (params.lightCount > shared::VS_MAX_SCENE_LIGHTS)
+  {
+    throw InputError("the emission-absorption pass takes at most " + std::to_string(shared::VS_MAX_SCENE_LIGHTS) +
+      " lights, got " + std::to_string(params.lightCount));
+  }
+  if (lighting == shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION || (lighting == shared::VS_EA_LIGHTING_NONE && !shade))
+  {
+    params.lightCount = 0u; // unread
+  }
+  if (lighting == shared::VS_EA_LIGHTING_PREVIEW && params.lightCount > 0u)
+  {
+    if (!light)
+    {
+      params.lightCount = 0u; // a volume without extinction: transparent anyway
+    }
+    else if (!lightTransmittance || lightTransmittance->Width() != light->Width() ||
+      lightTransmittance->Height() != light->Height() || lightTransmittance->Depth() != 2 * light->Depth())
+    {
+      throw InputError("the preview's " + std::to_string(params.lightCount) +
+        " lights need the light volume's transmittance towards them, of the light volume's cells with 2 layers");
     }
   }
   if ((params.display & shared::VS_EA_DISPLAY_ENVIRONMENT) != 0u)
@@ -151,8 +179,8 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
     const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     this->NoLight_->Upload(zero, sizeof(zero));
   }
-  const ComputePipeline& pipeline = this->PipelineFor(
-    volume.Factor() != nullptr, shade, lighting, params.blend != shared::VS_BLEND_COMPOSITE, display);
+  const ComputePipeline& pipeline = this->PipelineFor(volume.Factor() != nullptr, shade, lighting,
+    params.blend != shared::VS_BLEND_COMPOSITE, display, params.lightCount > 0u);
   DescriptorSet set(pipeline);
   set.Bind(shared::VS_EA_VOLUME, volume.Image())
     .BindTexels(shared::VS_EA_TF, tf.Lut(), vk::Format::eR32G32B32A32Sfloat)
@@ -172,6 +200,8 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
     set.BindTexels(shared::VS_EA_ENVIRONMENT, tf.Lut(), vk::Format::eR32G32B32A32Sfloat);
   }
   set.Bind(shared::VS_EA_DISPLAY, display ? *this->Display_ : *this->Out_);
+  set.Bind(shared::VS_EA_LIGHT_TRANSMITTANCE,
+    lighting == shared::VS_EA_LIGHTING_PREVIEW && params.lightCount > 0u ? *lightTransmittance : *this->NoLight_);
   Batch batch(this->Context_);
   batch.BeginTimer("render");
   batch.Dispatch(pipeline, set, nullptr, 0, (w + 7) / 8, (h + 7) / 8, 1);

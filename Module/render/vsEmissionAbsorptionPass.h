@@ -45,10 +45,15 @@ public:
    *  params.environmentSize^2 texels, DeviceEnvironment::Radiance), added to the returned radiance
    *  through the transmittance; with VS_EA_DISPLAY_IMAGE the pass also makes the window image
    *  (display_transform.h), then in LastDisplay(). Throws InputError for VS_EA_DISPLAY_ENVIRONMENT
-   *  without an environment of that size. */
+   *  without an environment of that size.
+   *  params.lightCount > 0 (issue 38): with `shade` and no lighting, the Phong lights; in the preview, its
+   *  lights, lit through `lightTransmittance` (LightVolume::Transmittance of the same build as `light`), and
+   *  `shade` is the surface lobe there (params.surface*). Throws InputError for more than VS_MAX_SCENE_LIGHTS
+   *  or a preview with lights without their transmittance. */
   std::vector<float> Render(const DeviceVolume& volume, const TransferFunctionTable& tf,
     const MajorantGrid* majorants, const shared::VsEmissionAbsorptionParams& params, const std::vector<float>& depth, bool shade = false,
-    uint32_t lighting = shared::VS_EA_LIGHTING_NONE, const Image3D* light = nullptr, const Buffer* environment = nullptr);
+    uint32_t lighting = shared::VS_EA_LIGHTING_NONE, const Image3D* light = nullptr, const Buffer* environment = nullptr,
+    const Image3D* lightTransmittance = nullptr);
 
   /** The premultiplied window image (RGBA, rows bottom-up) of the last Render with
    *  VS_EA_DISPLAY_IMAGE; empty after one without. */
@@ -59,12 +64,13 @@ public:
 
 private:
   /** The pipeline with or without the extinction factor, shading, lighting, a projection (a blend
-   *  other than the composite) and the window image (made on first use; ea_render.comp's
+   *  other than the composite), the window image and VTK's lights (made on first use; ea_render.comp's
    *  specialization constants). */
-  const ComputePipeline& PipelineFor(bool factor, bool shade, uint32_t lighting, bool projection, bool display);
+  const ComputePipeline& PipelineFor(bool factor, bool shade, uint32_t lighting, bool projection, bool display,
+    bool lights);
 
   std::shared_ptr<Context> Context_;
-  std::map<std::array<uint32_t, 5>, std::shared_ptr<ComputePipeline>> Pipelines_;
+  std::map<std::array<uint32_t, 6>, std::shared_ptr<ComputePipeline>> Pipelines_;
   std::unique_ptr<Buffer> Params_, Depth_, Out_, Display_;
   std::unique_ptr<Image3D> NoLight_; // the 1-texel placeholder of VS_EA_LIGHT and VS_EA_BRICKS (zero)
   double LastSeconds_ = 0.0;

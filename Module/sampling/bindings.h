@@ -51,7 +51,10 @@ VS_CONST uint VS_EA_ENVIRONMENT = 8u;    /* rgba32f texel buffer: the environmen
                                             equal-area map (VS_EA_DISPLAY_ENVIRONMENT; a placeholder otherwise) */
 VS_CONST uint VS_EA_DISPLAY = 9u;        /* storage buffer: the window image (VS_EA_DISPLAY_IMAGE; a placeholder
                                             otherwise) */
-VS_CONST uint VS_EA_BINDING_COUNT = 10u;
+VS_CONST uint VS_EA_LIGHT_TRANSMITTANCE = 10u; /* rgba32f image: the light volume's transmittance towards each
+                                            scene light (VS_LIGHTMS_TRANSMITTANCE's layout), read by the preview
+                                            with P.lightCount > 0 (a 1-texel placeholder otherwise) */
+VS_CONST uint VS_EA_BINDING_COUNT = 11u;
 
 /* The sweeps' march along each direction (visibility/sweep_march.glsl: the full-resolution volume
  * or, VS_SWEEP_POOLED, the pooled extinction volume and its occupancy). */
@@ -131,7 +134,12 @@ VS_CONST uint VS_LIGHTMS_SOURCES = 8u;    /* storage buffer: VisibilityGrid::Dir
 VS_CONST uint VS_LIGHTMS_STEPS = 9u;      /* storage buffer: vec4 per direction, xyz its step in cells */
 VS_CONST uint VS_LIGHTMS_ORDER_IN = 10u;  /* rgba32f image per cell: rgb I_k (the tail's ratio) */
 VS_CONST uint VS_LIGHTMS_ORDER_OUT = 11u; /* the same of order k + 1 */
-VS_CONST uint VS_LIGHTMS_BINDING_COUNT = 12u;
+VS_CONST uint VS_LIGHTMS_DIRECT = 12u;    /* rgba32f image per cell: rgb the scene lights' direct light sum_l T_l E_l
+                                             (light_volume_lights.comp; the albedo pass adds it to the first order) */
+VS_CONST uint VS_LIGHTMS_TRANSMITTANCE = 13u; /* rgba32f image of cells.x x cells.y x 2 cells.z: per cell the
+                                             transmittance towards light l at z + (l / 4) cells.z, component l % 4 */
+VS_CONST uint VS_LIGHTMS_SCENE = 14u;     /* storage buffer: VsLightSceneParams (light_volume_lights.comp) */
+VS_CONST uint VS_LIGHTMS_BINDING_COUNT = 15u;
 
 /* The majorant bricks' scalar ranges (volume/majorant_minmax.comp, volume/vsMajorantGrid.cxx). */
 VS_CONST uint VS_RANGES_VOLUME = 0u;

@@ -7,6 +7,7 @@
 #define VS_EA_PARAMS_H
 #include "camera_params.h"
 #include "grid_params.h"
+#include "scene_lights.h"
 #include "volume_params.h"
 
 VS_NAMESPACE_BEGIN
@@ -67,7 +68,27 @@ struct VsEmissionAbsorptionParams
   float environmentScale;
   uint ditherFrame; /* the lit modes' offsets: the pixel's fixed pattern rotated by this frame's share of
                        the golden ratio (dither.h vs_dither_offset; 0: the pattern itself) */
-  uint unused4;
+  uint ambientFromLights; /* VS_EA_SHADE with lightCount > 0: 1 where the renderer's lights are not a lone
+                             headlight (VTK's lighting complexity 2 and 3): the ambient term is then ambient x
+                             ambientLight, VTK's sum of the lights' ambient colours x intensities (black by
+                             default), not ambient x the colour (VTK's headlight-only shading) */
+  /* ---- issue 38: VTK's lights and the surface lobe. Added at the end. ---- */
+  uint lightCount;         /* lights[0 .. lightCount): VS_EA_SHADE's Phong lights (then lightDirection and
+                              lightIntensity are not used), or the preview's lights (VS_EA_LIGHTING_PREVIEW: their
+                              transmittance from the light volume's VS_EA_LIGHT_TRANSMITTANCE) */
+  float anisotropy;        /* the preview's Henyey-Greenstein g towards the lights (the environment's light volume is
+                              isotropic) */
+  uint surface;            /* the preview's surface lobe (1: as the Monte Carlo kernel's, mc_params.h surface*) */
+  float surfaceBlending;   /* mc_params.h's surface fields, the same meaning */
+  float surfaceDiffuse;
+  float surfaceSpecular;
+  float surfaceRoughness;
+  float gradientScale;
+  float opacityDistance;
+  float ambientLightR;     /* ambientFromLights: the lights' ambient colours x intensities, summed */
+  float ambientLightG;
+  float ambientLightB;
+  VsSceneLight lights[VS_MAX_SCENE_LIGHTS];
 };
 
 VS_NAMESPACE_END

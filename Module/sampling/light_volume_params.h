@@ -7,6 +7,7 @@
 #define VS_LIGHT_VOLUME_PARAMS_H
 #include "vs_prelude.h"
 #include "volume_params.h"
+#include "scene_lights.h"
 
 VS_NAMESPACE_BEGIN
 
@@ -27,7 +28,25 @@ struct VsLightAlbedoParams
   vec3 cellSize;         /* index units per cell */
   uint samplesPerAxis;   /* the cell's samples per axis (stratified, fixed: deterministic) */
   uvec3 cells;
-  uint unused;
+  uint lit;              /* 1: add the scene lights' direct light (VS_LIGHTMS_DIRECT) to the first order's
+                            emission and light (they scatter into the later orders; the preview lights
+                            the first order itself) */
+};
+
+/* VTK's lights in the light volume (issue 38, light_volume_lights.comp): per cell and light, the
+ * transmittance from the cell's centre towards the light (to the light, or to where the ray leaves the
+ * volume), marched through the volume in steps of `step` (world units, at their midpoints: nothing
+ * random), and the cell's direct light sum_l T_l E_l (E_l the light's irradiance at the centre,
+ * scene_lights.h). A storage buffer. */
+struct VsLightSceneParams
+{
+  VsVolumeParams volume; /* volume.boxMin: the grid's origin (index space) */
+  mat4 indexToWorld;     /* the inverse of volume.worldToIndex (the lights are in world space) */
+  vec3 cellSize;         /* index units per cell */
+  uint lightCount;       /* lights[0 .. lightCount) */
+  uvec3 cells;
+  float step;            /* the march's step, world units */
+  VsSceneLight lights[VS_MAX_SCENE_LIGHTS];
 };
 
 /* One order of scattering (light_volume_scatter.glsl): push constants. */
@@ -57,6 +76,10 @@ static_assert(offsetof(vs::shared::VsLightAlbedoParams, cellSize) == sizeof(vs::
   "VsLightAlbedoParams layout");
 static_assert(sizeof(vs::shared::VsLightAlbedoParams) == sizeof(vs::shared::VsVolumeParams) + 32,
   "VsLightAlbedoParams layout");
+static_assert(sizeof(vs::shared::VsLightSceneParams) ==
+    sizeof(vs::shared::VsVolumeParams) + 64 + 32 + vs::shared::VS_MAX_SCENE_LIGHTS * sizeof(vs::shared::VsSceneLight),
+  "VsLightSceneParams: rows of 16 bytes");
+static_assert(offsetof(vs::shared::VsLightSceneParams, lights) % 16 == 0, "VsLightSceneParams layout");
 #endif
 
 #endif

@@ -8,6 +8,9 @@
  * extinction sigma; and the first order's emission (sigma a I_1, sigma) and I_1 (the single-scattering
  * light volume), which the first order of scattering reads (light_volume_scatter.glsl). One invocation
  * per cell; nothing random: the same inputs give the same values.
+ * With P.lit (VTK's lights, issue 38), the lights' direct light sum_l T_l E_l of the cell
+ * (light_volume_lights.comp) joins I_1 in the first order's emission and light, not the total (the
+ * preview lights the first order itself, towards each light): the lights' multiple scattering.
  */
 #include "bindings.h"
 #include "light_volume_params.h"
@@ -20,6 +23,7 @@ layout(binding = VS_LIGHTMS_ALBEDO, rgba32f) uniform writeonly image3D uAlbedo;
 layout(binding = VS_LIGHTMS_LIGHT, rgba32f) uniform readonly image3D uLight;
 layout(binding = VS_LIGHTMS_EMIT_OUT, rgba32f) uniform writeonly image3D uEmit;
 layout(binding = VS_LIGHTMS_ORDER_OUT, rgba32f) uniform writeonly image3D uOrder;
+layout(binding = VS_LIGHTMS_DIRECT, rgba32f) uniform readonly image3D uDirect; /* read with P.lit */
 #define VS_TF_ENTRY_TEXELS
 #include "volume_access.glsl"
 
@@ -45,6 +49,8 @@ void main()
   float sigma = extinction / float(S * S * S);
   imageStore(uAlbedo, ivec3(cell), vec4(albedo, sigma));
   vec3 light = imageLoad(uLight, ivec3(cell)).rgb;
+  if (P.lit != 0u)
+    light += imageLoad(uDirect, ivec3(cell)).rgb;
   imageStore(uEmit, ivec3(cell), vec4(sigma * albedo * light, sigma));
   imageStore(uOrder, ivec3(cell), vec4(light, 0.0));
 }

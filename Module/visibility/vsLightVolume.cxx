@@ -17,12 +17,15 @@
 #include "vsTransferFunctionTable.h"
 
 #include "vs_spirv_light_volume_albedo.h"
+#include "vs_spirv_light_volume_lights.h"
 #include "vs_spirv_light_volume_r16.h"
 #include "vs_spirv_light_volume_scatter_r16.h"
 #include "vs_spirv_light_volume_scatter_r32f.h"
 #include "vs_spirv_light_volume_scatter_r8.h"
 #include "vs_spirv_light_volume_r32f.h"
 #include "vs_spirv_light_volume_r8.h"
+
+#include <glm/gtc/matrix_inverse.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -63,7 +66,9 @@ std::vector<BindingType> ScatterBindings()
       { shared::VS_LIGHTMS_LIGHT, B::StorageImage }, { shared::VS_LIGHTMS_EMIT_IN, B::StorageImage },
       { shared::VS_LIGHTMS_EMIT_OUT, B::StorageImage }, { shared::VS_LIGHTMS_VISIBILITY, B::StorageImage },
       { shared::VS_LIGHTMS_SOURCES, B::StorageBuffer }, { shared::VS_LIGHTMS_STEPS, B::StorageBuffer },
-      { shared::VS_LIGHTMS_ORDER_IN, B::StorageImage }, { shared::VS_LIGHTMS_ORDER_OUT, B::StorageImage } });
+      { shared::VS_LIGHTMS_ORDER_IN, B::StorageImage }, { shared::VS_LIGHTMS_ORDER_OUT, B::StorageImage },
+      { shared::VS_LIGHTMS_DIRECT, B::StorageImage }, { shared::VS_LIGHTMS_TRANSMITTANCE, B::StorageImage },
+      { shared::VS_LIGHTMS_SCENE, B::StorageBuffer } });
 }
 
 std::shared_ptr<ComputePipeline> ScatterPipeline(const std::shared_ptr<Context>& context, vk::Format format, uint32_t D)
@@ -141,9 +146,16 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
   const MultipleScattering& scattering)
 {
   const bool multiple = scattering.Orders >= 2 && scattering.Events >= 2;
-  if (multiple && (!scattering.Volume || !scattering.TF))
+  const bool lit = !scattering.Lights.empty();
+  if ((multiple || lit) && (!scattering.Volume || !scattering.TF))
   {
-    throw InputError("the light volume's multiple scattering needs the volume and its transfer function");
+    throw InputError(std::string("the light volume's ") + (multiple ? "multiple scattering" : "lights") +
+      " need the volume and its transfer function");
+  }
+  if (scattering.Lights.size() > shared::VS_MAX_SCENE_LIGHTS)
+  {
+    throw InputError("the light volume takes at most " + std::to_string(shared::VS_MAX_SCENE_LIGHTS) + " lights, got " +
+      std::to_string(scattering.Lights.size()));
   }
   if (multiple && !(scattering.MaxRatio >= 0.0f && scattering.MaxRatio < 1.0f))
   {
@@ -172,6 +184,22 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
     h = Hash(h, counts, sizeof(counts));
     h = Hash(h, &m.MaxRatio, sizeof(m.MaxRatio));
     s.Scattering = h | 1u; // never 0
+  }
+  if (lit)
+  {
+    // What the lights' march reads: the lights, the volume, its transfer function and parameters, the step.
+    const MultipleScattering& m = scattering;
+    uint64_t h = 1099511628211ull;
+    const uintptr_t volume = reinterpret_cast<uintptr_t>(m.Volume);
+    h = Hash(h, &volume, sizeof(volume));
+    const TransferFunctionSamples& tf = m.TF->Samples();
+    h = Hash(h, &tf.ScalarMin, sizeof(float));
+    h = Hash(h, &tf.ScalarMax, sizeof(float));
+    h = Hash(h, tf.Entries.data(), tf.Entries.size() * sizeof(float));
+    h = Hash(h, &m.Params, sizeof(m.Params));
+    h = Hash(h, m.Lights.data(), m.Lights.size() * sizeof(shared::VsSceneLight));
+    h = Hash(h, &m.LightStep, sizeof(m.LightStep));
+    s.Lights = h | 1u;
   }
   if (this->Image_ && s == this->Built_)
   {
@@ -219,9 +247,15 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
   batch.Submit();
   this->LastSeconds_ = batch.Seconds("light volume");
   this->LastScatterSeconds_ = 0.0;
+  this->Built_ = Signature(); // a build that throws half-way is built again
+  if (lit)
+  {
+    this->LightPass(grid, scattering);
+  }
+  this->BuiltLights_ = scattering.Lights;
   if (multiple)
   {
-    this->Scatter(grid, scattering);
+    this->Scatter(grid, scattering, lit);
   }
   this->LastWallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   this->Built_ = s;
@@ -229,7 +263,90 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
   return true;
 }
 
-void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& m)
+// VTK's lights: per cell the transmittance towards each light and the direct light (light_volume_lights.comp).
+void LightVolume::LightPass(const VisibilityGrid& grid, const MultipleScattering& m)
+{
+  const std::array<uint32_t, 3> cells = this->Cells_;
+  const auto image = [&](std::unique_ptr<Image3D>& img, uint32_t depth, const char* name) {
+    if (!img || img->Width() != cells[0] || img->Height() != cells[1] || img->Depth() != depth)
+    {
+      img.reset();
+      img = std::make_unique<Image3D>(this->Context_, cells[0], cells[1], depth, vk::Format::eR32G32B32A32Sfloat, name);
+    }
+  };
+  image(this->Direct_, cells[2], "light volume direct light of the scene lights");
+  image(this->Transmittance_, 2 * cells[2], "light volume transmittance towards the scene lights");
+  shared::VsLightSceneParams params{};
+  params.volume = m.Params;
+  params.indexToWorld = glm::inverse(m.Params.worldToIndex);
+  params.cellSize = grid.CellSize();
+  params.lightCount = uint32_t(m.Lights.size());
+  params.cells = glm::uvec3(cells[0], cells[1], cells[2]);
+  float step = m.LightStep;
+  if (!(step > 0.0f))
+  {
+    // The smallest voxel spacing: the world length of one index unit along each axis.
+    step = std::numeric_limits<float>::max();
+    for (int a = 0; a < 3; ++a)
+    {
+      step = std::min(step, glm::length(glm::vec3(params.indexToWorld[a])));
+    }
+  }
+  params.step = step;
+  for (size_t i = 0; i < m.Lights.size(); ++i)
+  {
+    params.lights[i] = m.Lights[i];
+  }
+  if (!this->SceneParams_)
+  {
+    this->SceneParams_ = std::make_unique<Buffer>(this->Context_, sizeof(params), "light volume scene lights");
+  }
+  this->SceneParams_->Upload(&params, sizeof(params));
+  if (!this->AlbedoParams_)
+  {
+    this->AlbedoParams_ =
+      std::make_unique<Buffer>(this->Context_, sizeof(shared::VsLightAlbedoParams), "light volume albedo parameters");
+  }
+  const std::shared_ptr<ComputePipeline> pipeline = SharedPipeline(this->Context_,
+    VS_SPIRV(vs_spirv_light_volume_lights), ScatterBindings(), 0, "light volume scene lights");
+  DescriptorSet set(*pipeline);
+  // Every binding of the shared layout; the pass reads the volume, the table, its parameters and writes two.
+  set.Bind(shared::VS_LIGHTMS_VOLUME, m.Volume->Image())
+    .BindTexels(shared::VS_LIGHTMS_TF, m.TF->Lut(), vk::Format::eR32G32B32A32Sfloat)
+    .Bind(shared::VS_LIGHTMS_PARAMS, *this->AlbedoParams_)
+    .Bind(shared::VS_LIGHTMS_ALBEDO, *this->Direct_)
+    .Bind(shared::VS_LIGHTMS_LIGHT, *this->Image_)
+    .Bind(shared::VS_LIGHTMS_EMIT_IN, *this->Direct_)
+    .Bind(shared::VS_LIGHTMS_EMIT_OUT, *this->Direct_)
+    .Bind(shared::VS_LIGHTMS_VISIBILITY, grid.Image())
+    .Bind(shared::VS_LIGHTMS_SOURCES, grid.DirectionSourceBuffer())
+    .Bind(shared::VS_LIGHTMS_STEPS, *this->SceneParams_)
+    .Bind(shared::VS_LIGHTMS_ORDER_IN, *this->Direct_)
+    .Bind(shared::VS_LIGHTMS_ORDER_OUT, *this->Direct_)
+    .Bind(shared::VS_LIGHTMS_DIRECT, *this->Direct_)
+    .Bind(shared::VS_LIGHTMS_TRANSMITTANCE, *this->Transmittance_)
+    .Bind(shared::VS_LIGHTMS_SCENE, *this->SceneParams_);
+  Batch batch(this->Context_);
+  batch.BeginTimer("lights");
+  batch.Dispatch(*pipeline, set, nullptr, 0, (cells[0] + 3) / 4, (cells[1] + 3) / 4, (cells[2] + 3) / 4);
+  batch.EndTimer();
+  batch.Submit();
+  this->LastSeconds_ += batch.Seconds("lights");
+}
+
+std::vector<float> LightVolume::DownloadTransmittance() const
+{
+  std::vector<float> out;
+  if (!this->Transmittance())
+  {
+    return out;
+  }
+  out.resize(size_t(4) * this->Cells_[0] * this->Cells_[1] * 2 * this->Cells_[2]);
+  this->Transmittance_->Download(out.data(), out.size() * sizeof(float));
+  return out;
+}
+
+void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& m, bool lit)
 {
   const std::array<uint32_t, 3> cells = this->Cells_;
   const uint32_t side = grid.Side();
@@ -270,6 +387,7 @@ void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& 
   albedo.cellSize = cellSize;
   albedo.samplesPerAxis = std::max(1u, std::min(m.AlbedoSamples, 16u));
   albedo.cells = glm::uvec3(cells[0], cells[1], cells[2]);
+  albedo.lit = lit ? 1u : 0u;
   if (!this->AlbedoParams_)
   {
     this->AlbedoParams_ = std::make_unique<Buffer>(this->Context_, sizeof(albedo), "light volume albedo parameters");
@@ -292,7 +410,11 @@ void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& 
       .Bind(shared::VS_LIGHTMS_SOURCES, grid.DirectionSourceBuffer())
       .Bind(shared::VS_LIGHTMS_STEPS, *this->Steps_)
       .Bind(shared::VS_LIGHTMS_ORDER_IN, orderIn)
-      .Bind(shared::VS_LIGHTMS_ORDER_OUT, orderOut);
+      .Bind(shared::VS_LIGHTMS_ORDER_OUT, orderOut)
+      // The lights' (read by the albedo pass with lit; placeholders otherwise, unread)
+      .Bind(shared::VS_LIGHTMS_DIRECT, lit ? *this->Direct_ : *this->Albedo_)
+      .Bind(shared::VS_LIGHTMS_TRANSMITTANCE, lit ? *this->Transmittance_ : *this->Albedo_)
+      .Bind(shared::VS_LIGHTMS_SCENE, lit ? *this->SceneParams_ : *this->AlbedoParams_);
   };
   const uint32_t gx = (cells[0] + 3) / 4, gy = (cells[1] + 3) / 4, gz = (cells[2] + 3) / 4;
   const uint32_t orders = std::min(m.Orders, m.Events);

@@ -22,10 +22,21 @@
 // scattering events in all, as the Monte Carlo kernel's MaximumScatteringEvents). It is built again
 // when the albedo or the volume's parameters (MultipleScattering::Key), the orders or the events change
 // too, never for a camera move. Its bias against Monte Carlo: TestPreview's furnace and box.
+//
+// VTK's lights (issue 38: MultipleScattering::Lights, sampling/scene_lights.h). Per cell and light, the
+// transmittance T_l from the cell's centre towards the light, marched through the volume
+// (light_volume_lights.comp; Transmittance(): rgba32f of cells.x x cells.y x 2 cells.z, light l at z +
+// (l / 4) cells.z, component l % 4), which the preview interpolates to light each sample directly with
+// the phase function (or the surface lobe) towards the light. The lights' direct light sum_l T_l E_l
+// joins the first order of the multiple scattering (not the image's I: the preview adds the first order
+// itself), so the orders 2 .. Events carry the lights' scattered light too. Built again when a light
+// changes (Lights are part of the signature), never for a camera move as such (lights that follow the
+// camera change with it: the mapper decides when to pass them; docs/reference.md).
 #ifndef vsLightVolume_h
 #define vsLightVolume_h
 
 #include "vissweepCoreModule.h"
+#include "sampling/scene_lights.h"
 #include "sampling/volume_params.h"
 
 #include <glm/glm.hpp>
@@ -75,9 +86,16 @@ public:
     uint32_t AlbedoSamples = 4;
     /** The tail's ratio between successive orders is clamped to this (< 1). */
     float MaxRatio = 0.98f;
+    /** VTK's lights (world space; at most VS_MAX_SCENE_LIGHTS), whatever the orders: their transmittance
+     *  per cell (Transmittance()) and, with multiple scattering, their scattered light. They need Volume
+     *  and TF, as multiple scattering does. */
+    std::vector<shared::VsSceneLight> Lights;
+    /** The lights' march step in world units (<= 0: the smallest voxel spacing of Params). */
+    float LightStep = 0.0f;
   };
-  /** Update with multiple scattering (Orders >= 2 and Events >= 2; else as Update above). Throws
-   *  InputError as Update, and for a missing volume or transfer function. */
+  /** Update with multiple scattering (Orders >= 2 and Events >= 2; else as Update above) and the lights.
+   *  Throws InputError as Update, for a missing volume or transfer function, and for more than
+   *  VS_MAX_SCENE_LIGHTS lights. */
   bool Update(const VisibilityGrid& grid, const DeviceEnvironment& environment, double intensity,
     const MultipleScattering& scattering);
 
@@ -89,6 +107,13 @@ public:
   bool Valid() const { return this->Image_ != nullptr; }
   /** The rgba32f image (after a successful Update). */
   const Image3D& Image() const { return *this->Image_; }
+  /** The transmittance towards each light of the last build (layout above); nullptr when it had none. */
+  const Image3D* Transmittance() const { return this->Built_.Lights != 0 ? this->Transmittance_.get() : nullptr; }
+  /** The lights of the last build. */
+  const std::vector<shared::VsSceneLight>& Lights() const { return this->BuiltLights_; }
+  /** The transmittance towards each light per cell, as Download() (cells.x x cells.y x 2 cells.z); empty
+   *  without lights. */
+  std::vector<float> DownloadTransmittance() const;
   std::array<uint32_t, 3> Cells() const { return this->Cells_; }
   /** RGBA per cell, cell (x, y, z) at 4 * ((z * cells.y + y) * cells.x + x); empty before a build. */
   std::vector<float> Download() const;
@@ -108,13 +133,15 @@ private:
     uint64_t Grid = 0, Environment = 0;
     double Intensity = -1.0;
     uint64_t Scattering = 0; // 0: single scattering; else a hash of MultipleScattering's inputs
+    uint64_t Lights = 0;     // 0: no lights; else a hash of the lights and what their march reads
     bool operator==(const Signature& o) const
     {
       return Grid == o.Grid && Environment == o.Environment && Intensity == o.Intensity &&
-        Scattering == o.Scattering;
+        Scattering == o.Scattering && Lights == o.Lights;
     }
   };
-  void Scatter(const VisibilityGrid& grid, const MultipleScattering& scattering);
+  void Scatter(const VisibilityGrid& grid, const MultipleScattering& scattering, bool lit);
+  void LightPass(const VisibilityGrid& grid, const MultipleScattering& scattering);
   void AddTail(const Image3D& last, const Image3D& before, uint32_t events, float maxRatio);
 
   std::shared_ptr<Context> Context_;
@@ -124,6 +151,10 @@ private:
   // direction, the albedo pass's parameters.
   std::unique_ptr<Image3D> Albedo_, EmitA_, EmitB_, OrderA_, OrderB_;
   std::unique_ptr<Buffer> Steps_, AlbedoParams_;
+  // VTK's lights: per cell the direct light and the transmittance towards each light; their parameters.
+  std::unique_ptr<Image3D> Direct_, Transmittance_;
+  std::unique_ptr<Buffer> SceneParams_;
+  std::vector<shared::VsSceneLight> BuiltLights_;
   std::array<uint32_t, 3> Cells_{ { 0, 0, 0 } };
   Signature Built_;
   uint64_t Builds_ = 0;

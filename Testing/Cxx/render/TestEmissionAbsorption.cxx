@@ -7,10 +7,13 @@
 #include "vsDeviceVolume.h"
 #include "vsEmissionAbsorptionPass.h"
 #include "vsTransferFunctionTable.h"
+#include "vsError.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 
 using namespace vs;
 
@@ -171,4 +174,90 @@ TEST(EmissionAbsorption, NonFiniteVoxelsAreEmptyAndCounted)
   EXPECT_EQ(volume.NonFiniteCount(), 3u);
   EXPECT_EQ(volume.Range()[0], 1.0f);
   EXPECT_EQ(volume.Range()[1], 1.0f);
+}
+
+// The emission-absorption mode's Phong shading with VTK's lights (issue 38): a ball whose gradient gives
+// every sample a normal, shaded
+//   - with one directional light of intensity 1 along the view (E = pi: radiance 1 towards the sample), as
+//     with the built-in headlight (lightCount 0): the same image to float precision;
+//   - with the light from the side: another image (the lights change the shading), and with two lights
+//     the sum of each alone less one ambient term;
+//   - without shading, the lights change nothing: the same image bit for bit.
+TEST(EmissionAbsorption, ShadingFollowsVtkLights)
+{
+  auto ctx = Context::Default();
+  const uint32_t n = 24;
+  std::vector<float> voxels(n * n * n);
+  for (uint32_t z = 0; z < n; ++z)
+    for (uint32_t y = 0; y < n; ++y)
+      for (uint32_t x = 0; x < n; ++x)
+      {
+        const float r = std::sqrt(float((x - 11.5) * (x - 11.5) + (y - 11.5) * (y - 11.5) + (z - 11.5) * (z - 11.5)));
+        voxels[(z * n + y) * n + x] = std::max(0.0f, 1.0f - r / 10.0f);
+      }
+  DeviceVolume volume(ctx, voxels.data(), { { n, n, n } });
+  auto samples = TransferFunctionSamples::FromFunctions(0.0f, 1.0f, 256, [&](double s) { return 0.3 * s; },
+    [&](double, double c[3]) { c[0] = 0.9, c[1] = 0.6, c[2] = 0.3; }, 1.0, 1.0);
+  TransferFunctionTable tf(ctx, samples);
+  const uint32_t W = 24, H = 24;
+  auto p = OrthoAlongZ(W, H, 0.0f, 23.0f, -10.0f, 40.0f);
+  p.volume.boxMin = glm::vec3(0.0f);
+  p.volume.boxMax = glm::vec3(float(n - 1));
+  p.volume.dims = glm::vec3(float(n));
+  p.volume.tf = tf.Params();
+  p.step = 0.5f;
+  p.terminationOpacity = 0.999f;
+  p.ambient = 0.1f;
+  p.diffuse = 0.7f;
+  p.specular = 0.3f;
+  p.specularPower = 20.0f;
+  p.lightDirection = glm::vec3(0.0f, 0.0f, -1.0f); // towards the light: against the view (+z)
+  p.lightIntensity = 1.0f;
+  const auto light = [](glm::vec3 travel) {
+    shared::VsSceneLight l{};
+    l.kind = shared::VS_LIGHT_DIRECTIONAL;
+    l.direction = glm::normalize(travel);
+    l.cosCone = -2.0f;
+    l.irradiance = glm::vec3(3.14159265f);
+    l.attenuation = glm::vec3(1.0f, 0.0f, 0.0f);
+    return l;
+  };
+  EmissionAbsorptionPass pass(ctx);
+  const std::vector<float> headlight = pass.Render(volume, tf, nullptr, p, {}, true);
+  p.lightCount = 1;
+  p.lights[0] = light(glm::vec3(0.0f, 0.0f, 1.0f));
+  const std::vector<float> along = pass.Render(volume, tf, nullptr, p, {}, true);
+  double worst = 0.0, sum = 0.0;
+  for (size_t i = 0; i < along.size(); ++i)
+  {
+    worst = std::max(worst, double(std::abs(along[i] - headlight[i])));
+    sum += headlight[i];
+  }
+  EXPECT_GT(sum, 10.0);
+  EXPECT_LT(worst, 1e-5) << "a light along the view is the headlight";
+  p.lights[0] = light(glm::vec3(1.0f, 0.0f, 0.2f));
+  const std::vector<float> side = pass.Render(volume, tf, nullptr, p, {}, true);
+  double change = 0.0;
+  for (size_t i = 0; i < side.size(); ++i)
+    change = std::max(change, double(std::abs(side[i] - headlight[i])));
+  EXPECT_GT(change, 0.05) << "a light from the side shades otherwise";
+  // Two lights: the sum of each alone less the ambient term counted twice (ambient x albedo, composited).
+  p.lightCount = 2;
+  p.lights[1] = light(glm::vec3(0.0f, 0.0f, 1.0f));
+  const std::vector<float> both = pass.Render(volume, tf, nullptr, p, {}, true);
+  p.lightCount = 0;
+  p.diffuse = 0.0f;
+  p.specular = 0.0f;
+  const std::vector<float> ambient = pass.Render(volume, tf, nullptr, p, {}, true);
+  for (size_t i = 0; i < both.size(); ++i)
+    if (i % 4 != 3)
+      EXPECT_NEAR(both[i], side[i] + along[i] - ambient[i], 1e-4) << i;
+  // Shading off: the lights are not read.
+  p.lightCount = 0;
+  const std::vector<float> unlit = pass.Render(volume, tf, nullptr, p, {}, false);
+  p.lightCount = 2;
+  const std::vector<float> unlitWithLights = pass.Render(volume, tf, nullptr, p, {}, false);
+  EXPECT_EQ(0, std::memcmp(unlit.data(), unlitWithLights.data(), unlit.size() * sizeof(float)));
+  p.lightCount = 9;
+  EXPECT_THROW(pass.Render(volume, tf, nullptr, p, {}, true), InputError);
 }
