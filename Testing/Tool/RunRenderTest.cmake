@@ -134,7 +134,7 @@ if (MODE STREQUAL "good" OR MODE STREQUAL "budget" OR MODE STREQUAL "preview")
   # parts inside "scene"; each is a lap of the frame, so none is longer than the frame.
   if (NOT MODE STREQUAL "preview")
     string(JSON first GET "${json}" first_frame_seconds)
-    foreach (phase IN ITEMS scene scene.convert scene.upload scene.ranges scene.table scene.majorants environment
+    foreach (phase IN ITEMS scene scene.upload scene.ranges scene.table scene.majorants environment
         grid frame pipeline render display)
       string(JSON seconds ERROR_VARIABLE missing GET "${json}" first_frame_phases ${phase})
       if (missing OR seconds LESS 0 OR seconds GREATER first)
@@ -142,6 +142,11 @@ if (MODE STREQUAL "good" OR MODE STREQUAL "budget" OR MODE STREQUAL "preview")
           "(${seconds} s of ${first} s): ${missing}")
       endif ()
     endforeach ()
+    # A contiguous one-component array is uploaded from its own values: no float copy, no "convert".
+    string(JSON seconds ERROR_VARIABLE missing GET "${json}" first_frame_phases scene.convert)
+    if (NOT missing)
+      message(FATAL_ERROR "stats: first_frame_phases.scene.convert (${seconds} s): the scene's array was copied to floats")
+    endif ()
   endif ()
   check_no_leftovers()
 elseif (MODE STREQUAL "frames")
