@@ -18,7 +18,29 @@ bool SceneLights::IsAutomaticHeadlight(vtkLight* light)
     c[2] == 1.0 && !light->GetPositional();
 }
 
-int SceneLights::Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer)
+std::string SceneLights::LeftOutWarning(vtkRenderer* renderer)
+{
+  shared::VsMonteCarloParams scratch{};
+  std::vector<int> leftOut;
+  Set(scratch, renderer, &leftOut);
+  if (leftOut.empty())
+  {
+    return std::string();
+  }
+  const int used = int(scratch.lightCount);
+  std::string positions;
+  for (size_t i = 0; i < leftOut.size(); ++i)
+  {
+    positions += (i == 0 ? "" : i + 1 == leftOut.size() ? " and " : ", ") + std::to_string(leftOut[i] + 1);
+  }
+  return "the renderer has " + std::to_string(used + int(leftOut.size())) +
+    " switched-on lights (VTK's automatic headlight not counted): the Monte Carlo estimate uses at most " +
+    std::to_string(shared::VS_MAX_SCENE_LIGHTS) + ", the first " + std::to_string(used) +
+    "; it leaves out the light" + (leftOut.size() > 1 ? "s" : "") + " at position" + (leftOut.size() > 1 ? "s " : " ") +
+    positions + " of vtkRenderer::GetLights() (counted from 1)";
+}
+
+int SceneLights::Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer, std::vector<int>* leftOutPositions)
 {
   params.lightCount = 0u;
   vtkLightCollection* lights = renderer ? renderer->GetLights() : nullptr;
@@ -27,10 +49,11 @@ int SceneLights::Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer)
   {
     return 0;
   }
-  int leftOut = 0;
+  int leftOut = 0, at = -1;
   lights->InitTraversal();
   for (vtkLight* light = lights->GetNextItem(); light; light = lights->GetNextItem())
   {
+    ++at;
     if (!light->GetSwitch() || light->GetIntensity() <= 0.0 || IsAutomaticHeadlight(light))
     {
       continue;
@@ -38,6 +61,10 @@ int SceneLights::Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer)
     if (params.lightCount >= shared::VS_MAX_SCENE_LIGHTS)
     {
       ++leftOut;
+      if (leftOutPositions)
+      {
+        leftOutPositions->push_back(at);
+      }
       continue;
     }
     glm::dvec3 position, focal;

@@ -9,6 +9,9 @@
 
 #include "sampling/mc_params.h"
 
+#include <string>
+#include <vector>
+
 class vtkLight;
 class vtkRenderer;
 
@@ -18,8 +21,14 @@ class SceneLights
 {
 public:
   /** Fills params.lightCount and params.lights from the renderer's lights; returns how many switched-on
-   *  lights were left out (beyond VS_MAX_SCENE_LIGHTS). */
-  static int Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer);
+   *  lights were left out (beyond VS_MAX_SCENE_LIGHTS), and with `leftOut` their positions in the
+   *  renderer's light collection (from 0). */
+  static int Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer, std::vector<int>* leftOut = nullptr);
+
+  /** "" when every light Set takes is used; else a warning naming how many switched-on lights the
+   *  renderer has, how many are used and which are left out (their positions in vtkRenderer::GetLights(),
+   *  counted from 1). */
+  static std::string LeftOutWarning(vtkRenderer* renderer);
 
   /** Whether `light` is what VTK's renderer creates by itself when no light is on (vtkRenderer::
    *  CreateLight): a headlight at vtkLight's defaults (intensity 1, white, not positional). The estimate
