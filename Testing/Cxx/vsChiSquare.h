@@ -38,9 +38,35 @@
 namespace vstest
 {
 
-// Upper bound of the number of chi-square tests in the Sampling* suites.
+// Upper bound of the number of chi-square tests (ChiSquare() calls) in the unit tests: the Bonferroni
+// correction's count. ChiSquareRuns() counts them and a global test environment checks the bound when the
+// test binary ends (run it whole to check it; ctest runs one test a process, far below it).
 constexpr int kChiSquareTestCount = 100;
 constexpr double kChiSquareSignificance = 1e-3 / kChiSquareTestCount;
+
+inline int& ChiSquareRuns()
+{
+  static int runs = 0;
+  return runs;
+}
+
+class ChiSquareBudget : public testing::Environment
+{
+public:
+  void TearDown() override
+  {
+    if (ChiSquareRuns() > 0)
+    {
+      std::cout << "[ chi-square ] " << ChiSquareRuns() << " tests run, at most " << kChiSquareTestCount
+                << " budgeted (significance " << kChiSquareSignificance << " each)\n";
+    }
+    EXPECT_LE(ChiSquareRuns(), kChiSquareTestCount)
+      << "more chi-square tests than kChiSquareTestCount: raise it (vsChiSquare.h), or the suite's false-failure "
+         "rate exceeds 1e-3";
+  }
+};
+inline testing::Environment* const kChiSquareBudgetEnvironment =
+  testing::AddGlobalTestEnvironment(new ChiSquareBudget);
 
 // ------------------------------------------------------------ distributions
 
@@ -104,6 +130,7 @@ struct ChiSquareResult
 inline ChiSquareResult ChiSquare(const std::vector<double>& observed,
   const std::vector<double>& expected, double minExpected = 5.0)
 {
+  ++ChiSquareRuns();
   ChiSquareResult r;
   std::vector<std::pair<double, double>> cells; // (expected, observed)
   double pooledExpected = 0.0, pooledObserved = 0.0;
