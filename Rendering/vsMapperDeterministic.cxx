@@ -240,7 +240,7 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(
       vs::EnvironmentBackground::Observe(ren);
     }
     const bool behind = asBackground && vs::EnvironmentBackground::InFrame(ren);
-    const bool paints = this->EnvironmentVisible && !behind && vs::RendererFrame::Claim(ren, this);
+    const bool paints = this->GetShowsEnvironment() && !behind && vs::RendererFrame::Claim(ren, this);
     seesEnvironment = asBackground || paints;
     p.display = vs::shared::VS_EA_DISPLAY_IMAGE;
     p.display |= seesEnvironment ? vs::shared::VS_EA_DISPLAY_ENVIRONMENT : 0u;

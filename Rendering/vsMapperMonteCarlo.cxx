@@ -243,7 +243,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     vs::EnvironmentBackground::Observe(ren);
   }
   const bool behind = asBackground && vs::EnvironmentBackground::InFrame(ren);
-  const bool paints = this->EnvironmentVisible && !behind && vs::RendererFrame::Claim(ren, this);
+  const bool paints = this->GetShowsEnvironment() && !behind && vs::RendererFrame::Claim(ren, this);
   p.background = asBackground ? vs::shared::VS_BACKGROUND_ENVIRONMENT_COVERAGE
     : paints                   ? vs::shared::VS_BACKGROUND_ENVIRONMENT
                                : vs::shared::VS_BACKGROUND_TRANSPARENT;

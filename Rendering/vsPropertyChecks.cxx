@@ -1,4 +1,6 @@
 #include "vsPropertyChecks.h"
+#include "vsSceneLights.h"
+#include "vtkVisibilitySweepVolumeMapper.h"
 
 #include "vtkRenderer.h"
 #include "vtkVolumeMapper.h"
@@ -58,7 +60,31 @@ std::vector<std::string> PropertyChecks::Ignored(
     // The Monte Carlo mode honours Shade since issue 38 (hybrid scattering: Diffuse, Specular and
     // SpecularPower shape the surface lobe; Ambient has no counterpart, the environment is the ambient
     // light, docs/reference.md "Surface scattering"): nothing to warn.
-    (void)monteCarlo;
+  }
+  // Settings of vtkGPUVolumeRayCastMapper that mean something else here (issue 38, item 5): said once
+  // per change, not at every render of a converging view.
+  auto* sweep = vtkVisibilitySweepVolumeMapper::SafeDownCast(mapper);
+  if (sweep && monteCarlo && sweep->GetRenderMode() == vtkVisibilitySweepVolumeMapper::MonteCarlo &&
+    sweep->GetSampleDistance() > 0.0)
+  {
+    ignored.push_back("SampleDistance is not a step of the Monte Carlo estimate (delta and ratio tracking are "
+                      "exact and need none, unlike vtkGPUVolumeRayCastMapper's ray march): in the MonteCarlo mode "
+                      "it is only the step of the preview shown while the view is dragged; it is the step of the "
+                      "EmissionAbsorption, Preview and AmbientOcclusion modes and of the projections");
+  }
+  if (sweep && !sweep->GetAutoAdjustSampleDistances())
+  {
+    ignored.push_back("AutoAdjustSampleDistances off has no effect: VisSweep lengthens the deterministic modes' "
+                      "step threefold while the view is dragged (InteractiveUpdateRate), and the Monte Carlo "
+                      "estimate has no step");
+  }
+  if (monteCarlo && renderer)
+  {
+    const std::string lights = SceneLights::LeftOutWarning(renderer);
+    if (!lights.empty())
+    {
+      ignored.push_back(lights);
+    }
   }
   // Composite is light transport (or emission-absorption); MIP, MinIP, average and additive are
   // projections, rendered through the emission-absorption path. What is left is not supported.

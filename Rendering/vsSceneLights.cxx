@@ -18,8 +18,30 @@ bool SceneLights::IsAutomaticHeadlight(vtkLight* light)
     c[2] == 1.0 && !light->GetPositional();
 }
 
+std::string SceneLights::LeftOutWarning(vtkRenderer* renderer)
+{
+  shared::VsMonteCarloParams scratch{};
+  std::vector<int> leftOut;
+  Set(scratch, renderer, false, nullptr, &leftOut);
+  if (leftOut.empty())
+  {
+    return std::string();
+  }
+  const int used = int(scratch.lightCount);
+  std::string positions;
+  for (size_t i = 0; i < leftOut.size(); ++i)
+  {
+    positions += (i == 0 ? "" : i + 1 == leftOut.size() ? " and " : ", ") + std::to_string(leftOut[i] + 1);
+  }
+  return "the renderer has " + std::to_string(used + int(leftOut.size())) +
+    " switched-on lights (VTK's automatic headlight not counted): the Monte Carlo estimate uses at most " +
+    std::to_string(shared::VS_MAX_SCENE_LIGHTS) + ", the first " + std::to_string(used) +
+    "; it leaves out the light" + (leftOut.size() > 1 ? "s" : "") + " at position" + (leftOut.size() > 1 ? "s " : " ") +
+    positions + " of vtkRenderer::GetLights() (counted from 1)";
+}
+
 int SceneLights::Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer, bool withAutomaticHeadlight,
-  uint32_t* followsCamera)
+  uint32_t* followsCamera, std::vector<int>* leftOutPositions)
 {
   params.lightCount = 0u;
   if (followsCamera)
@@ -32,10 +54,11 @@ int SceneLights::Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer, 
   {
     return 0;
   }
-  int leftOut = 0;
+  int leftOut = 0, at = -1;
   lights->InitTraversal();
   for (vtkLight* light = lights->GetNextItem(); light; light = lights->GetNextItem())
   {
+    ++at;
     if (!light->GetSwitch() || light->GetIntensity() <= 0.0 || (!withAutomaticHeadlight && IsAutomaticHeadlight(light)))
     {
       continue;
@@ -43,6 +66,10 @@ int SceneLights::Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer, 
     if (params.lightCount >= shared::VS_MAX_SCENE_LIGHTS)
     {
       ++leftOut;
+      if (leftOutPositions)
+      {
+        leftOutPositions->push_back(at);
+      }
       continue;
     }
     glm::dvec3 position, focal;

@@ -9,6 +9,9 @@
 
 #include "sampling/mc_params.h"
 
+#include <string>
+#include <vector>
+
 class vtkLight;
 class vtkRenderer;
 
@@ -21,9 +24,15 @@ public:
    *  lights were left out (beyond VS_MAX_SCENE_LIGHTS). With `withAutomaticHeadlight` VTK's automatic
    *  headlight is a light too (the emission-absorption mode's Phong shading, as VTK's GPU mapper lights
    *  with it). `followsCamera`, if given: bit i set where light i follows the camera (a headlight or a
-   *  camera light: it moves with every camera move). */
+   *  camera light: it moves with every camera move). `leftOut`, if given: the left-out lights' positions
+   *  in the renderer's light collection (from 0). */
   static int Set(shared::VsMonteCarloParams& params, vtkRenderer* renderer, bool withAutomaticHeadlight = false,
-    uint32_t* followsCamera = nullptr);
+    uint32_t* followsCamera = nullptr, std::vector<int>* leftOut = nullptr);
+
+  /** "" when every light Set takes is used; else a warning naming how many switched-on lights the
+   *  renderer has, how many are used and which are left out (their positions in vtkRenderer::GetLights(),
+   *  counted from 1). */
+  static std::string LeftOutWarning(vtkRenderer* renderer);
 
   /** Whether `light` is what VTK's renderer creates by itself when no light is on (vtkRenderer::
    *  CreateLight): a headlight at vtkLight's defaults (intensity 1, white, not positional). The estimate

@@ -437,11 +437,55 @@ float vtkVisibilitySweepVolumeMapper::OpaqueAlpha(bool autoStrategy)
   return vs::CombinedAccumulators::OpaqueAlpha(this->Impl->MC.get(), this->Impl->MCGrid.get(), autoStrategy);
 }
 
+bool vtkVisibilitySweepVolumeMapper::GetShowsEnvironment()
+{
+  // Issue 38: the default white sky lights the volume but is not shown; the renderer's background is,
+  // as a vtkGPUVolumeRayCastMapper pipeline had it before the mapper was swapped.
+  return this->EnvironmentVisible && this->GetNumberOfInputConnections(1) > 0;
+}
+
 bool vtkVisibilitySweepVolumeMapper::GetShowsEnvironmentAsBackground()
 {
-  return this->EnvironmentVisible && this->EnvironmentAsBackground &&
+  return this->GetShowsEnvironment() && this->EnvironmentAsBackground &&
     (this->RenderMode == MonteCarlo || this->RenderMode == Preview) &&
     !EmissionAbsorptionFrame::IsProjection(this->BlendMode);
+}
+
+int vtkVisibilitySweepVolumeMapper::RenderUntilConverged(vtkRenderWindow* window, double timeBudgetSeconds)
+{
+  if (!window)
+  {
+    vtkErrorMacro(<< "RenderUntilConverged: no render window");
+    return this->AccumulatedSamples;
+  }
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const bool timed = timeBudgetSeconds > 0.0 && std::isfinite(timeBudgetSeconds);
+  int stalled = 0;
+  while (true)
+  {
+    const int before = this->AccumulatedSamples;
+    const auto frameStart = Clock::now();
+    window->Render();
+    const auto now = Clock::now();
+    if (!this->Impl->LastError.empty() || this->IsConverged())
+    {
+      break;
+    }
+    // A frame that adds nothing (an interactive frame, a window without this volume) would spin.
+    stalled = this->AccumulatedSamples > before ? 0 : stalled + 1;
+    if (stalled >= 3)
+    {
+      break;
+    }
+    // The next frame costs what this one did less its one-off update (new data, sweeps).
+    const double frame = std::max(0.0, std::chrono::duration<double>(now - frameStart).count() - this->LastUpdateSeconds);
+    if (timed && std::chrono::duration<double>(now - start).count() + frame > timeBudgetSeconds)
+    {
+      break;
+    }
+  }
+  return this->AccumulatedSamples;
 }
 
 vtkImageData* vtkVisibilitySweepVolumeMapper::GetRadiance(bool variance)
@@ -671,6 +715,8 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "EnvironmentIntensity: " << this->EnvironmentIntensity << "\n";
   os << indent << "EnvironmentVisible: " << (this->EnvironmentVisible ? "On" : "Off") << "\n";
+  os << indent << "ShowsEnvironment: " << (this->GetShowsEnvironment() ? "Yes" : "No")
+     << " (only a connected environment is shown; the default white sky lights the volume unseen)\n";
   os << indent << "EnvironmentAsBackground: " << (this->EnvironmentAsBackground ? "On" : "Off")
      << " (the visible environment as the renderer's background, a vtkSkybox behind everything)\n";
   os << indent << "ShowsEnvironmentAsBackground: " << (this->GetShowsEnvironmentAsBackground() ? "Yes" : "No") << "\n";
@@ -687,6 +733,8 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastDenoiseSeconds: " << this->LastDenoiseSeconds << "\n";
   os << indent << "SampleDistance: " << this->SampleDistance
      << " (EmissionAbsorption, Preview and AmbientOcclusion: MonteCarlo tracking is exact and needs no step)\n";
+  os << indent << "AutoAdjustSampleDistances: " << (this->AutoAdjustSampleDistances ? "On" : "Off")
+     << " (vtkGPUVolumeRayCastMapper's; no effect here)\n";
   os << indent << "DensityScale: " << this->DensityScale << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
   os << indent << "VolumeUploadCount: " << this->VolumeUploadCount << "\n";

@@ -55,7 +55,8 @@
  *
  * The environment is input port 1: SetEnvironmentConnection(reader->GetOutputPort())
  * with a vtkEnvironmentMapReader or vtkEnvironmentMapSource; without one, a constant
- * white sky of radiance 1.
+ * white sky of radiance 1 lights the volume, and the renderer's background is seen behind it
+ * (EnvironmentVisible shows a connected environment only).
  *
  * Conventions (docs/reference.md): world units are those of the image data (origin,
  * spacing, direction matrix) under the vtkVolume's matrix; extinction is
@@ -79,6 +80,7 @@
 
 class vtkAlgorithmOutput;
 class vtkImageData;
+class vtkRenderWindow;
 class vtkVolumeProperty;
 
 class VISSWEEPRENDERING_EXPORT vtkVisibilitySweepVolumeMapper : public vtkVolumeMapper
@@ -402,10 +404,17 @@ public:
   /** Whether camera rays that leave the volume see the environment (default on); off, they are
    *  transparent and the renderer's background shows (the environment still lights the volume).
    *  GetRadiance() holds the full radiance either way: with it on, that of the environment seen
-   *  through the volume included. How the environment is drawn: EnvironmentAsBackground. */
+   *  through the volume included. How the environment is drawn: EnvironmentAsBackground.
+   *  Only an environment connected to port 1 is shown: without one the default white sky lights the
+   *  volume but is not drawn, and the renderer's background (its colour, gradient or texture) shows,
+   *  as with vtkGPUVolumeRayCastMapper (issue 38). To see a white sky, connect a
+   *  vtkEnvironmentMapSource (Constant, the default); not to be lit by it, set EnvironmentIntensity 0. */
   vtkSetMacro(EnvironmentVisible, bool);
   vtkGetMacro(EnvironmentVisible, bool);
   vtkBooleanMacro(EnvironmentVisible, bool);
+  /** Whether camera rays that leave the volume see the environment now: EnvironmentVisible on and an
+   *  environment connected to port 1. */
+  bool GetShowsEnvironment();
   ///@}
 
   ///@{
@@ -519,6 +528,17 @@ public:
   {
     return this->LastRenderComplete || this->AccumulatedSamples >= this->MaximumSamples;
   }
+
+  /** Renders `window` (which shows this mapper's volume) until the view is converged (IsConverged():
+   *  MaximumSamples reached, or the one render of a deterministic mode or projection), in one call:
+   *  where vtkGPUVolumeRayCastMapper's one Render() is the whole image, this mapper's adds only
+   *  SamplesPerFrame samples per pixel. With `timeBudgetSeconds` > 0 it also stops before a frame that
+   *  would end after that many seconds (predicted from the last frame; at least one frame is
+   *  rendered). It stops, too, after a render that failed (GetLastError()) or three frames that added
+   *  no sample (an interactive frame, a window that does not show the volume). Returns the samples per
+   *  pixel accumulated (GetAccumulatedSamples()); a vtkWindowToImageFilter with ShouldRerenderOff()
+   *  then grabs the image. */
+  int RenderUntilConverged(vtkRenderWindow* window, double timeBudgetSeconds = 0.0);
 
   /** The linear HDR radiance of the last render (of the view rendered last) as image data (width x height, point array
    *  "Radiance" with 3 floats and "Alpha"), rows bottom-up; nullptr before the first render. It is what
@@ -660,6 +680,16 @@ public:
    *  transmittance, so no step size enters the estimate. */
   virtual void SetSampleDistance(double distance);
   vtkGetMacro(SampleDistance, double);
+  ///@}
+
+  ///@{
+  /** vtkGPUVolumeRayCastMapper's AutoAdjustSampleDistances, for pipelines that swap that mapper for
+   *  this one: accepted and printed, but it has no effect. VisSweep always lengthens the deterministic
+   *  modes' step threefold while the user drags (InteractiveUpdateRate) and the Monte Carlo estimate
+   *  has no step; turning it off is warned about once per change. Default on, as in VTK. */
+  vtkSetMacro(AutoAdjustSampleDistances, vtkTypeBool);
+  vtkGetMacro(AutoAdjustSampleDistances, vtkTypeBool);
+  vtkBooleanMacro(AutoAdjustSampleDistances, vtkTypeBool);
   ///@}
 
   ///@{
@@ -849,6 +879,7 @@ protected:
   int EnvironmentUploadCount = 0;
   double LastSweepSeconds = 0.0;
   double SampleDistance = 0.0;
+  vtkTypeBool AutoAdjustSampleDistances = 1;
   double DensityScale = 1.0;
   int Seed = 1;
   double LastDeviceSeconds = 0.0;

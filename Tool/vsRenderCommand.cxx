@@ -305,6 +305,10 @@ Scene LoadScene(const RenderOptions& o)
   {
     scene.TransferFunction.Shade = true;
   }
+  if (o.NoLights)
+  {
+    scene.Lights.clear();
+  }
   return scene;
 }
 
@@ -541,6 +545,8 @@ void AddRender(CLI::App& app)
   // issue 38: hybrid scattering.
   cmd->add_flag("--shade", o->Shade,
     "the volume property's shading on (transfer_function.shade): a surface lobe where the gradient is strong");
+  cmd->add_flag("--no-lights", o->NoLights,
+    "render without the scene's lights (its \"lights\": VTK's vtkLights beside the environment)");
   cmd->add_option("--volumetric-scattering-blending", o->ScatteringBlending,
     "with shading: 0 a surface wherever the gradient allows, 1 where the gradient is strong and the medium opaque, 2 volumetric only (VTK 9.2's "
     "VolumetricScatteringBlending; overrides render.volumetric_scattering_blending, default 0)");

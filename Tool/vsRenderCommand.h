@@ -38,6 +38,7 @@ struct RenderOptions
   int MaxScatteringEvents = 0;  // 0: the scene's render.max_scattering_events
   std::optional<double> Anisotropy; // the scene's render.anisotropy when absent
   std::optional<double> ScatteringBlending; // issue 38: the scene's render.volumetric_scattering_blending when absent
+  bool NoLights = false; // issue 38: --no-lights renders without the scene's lights
   bool Shade = false; // issue 38: --shade turns the property's shading on (transfer_function.shade)
   bool Denoise = false; // issue 39: --denoise, the PNG/JPEG shows the estimate through the display filter
   int Seed = -1;

@@ -11,6 +11,7 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkLight.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -335,6 +336,38 @@ SceneObjects BuildScene(const Scene& scene, bool openGLWindow)
   const auto& bg = scene.Environment.Background;
   o.Renderer->SetBackground(bg[0], bg[1], bg[2]);
   o.Renderer->AddVolume(o.Volume);
+  // issue 38: the scene's lights, as vtkLights of the renderer (the mapper's estimate takes them, beside
+  // the environment; docs/reference.md "VTK's lights").
+  for (const auto& l : scene.Lights)
+  {
+    vtkNew<vtkLight> light;
+    if (l.FollowCamera)
+    {
+      light->SetLightTypeToCameraLight();
+    }
+    else
+    {
+      light->SetLightTypeToSceneLight();
+    }
+    light->SetPositional(l.Type != "directional");
+    light->SetFocalPoint(l.FocalPoint.data());
+    if (l.Direction)
+    {
+      const Vec3 d = Normalized(*l.Direction);
+      const Vec3 p{ l.FocalPoint[0] + d[0], l.FocalPoint[1] + d[1], l.FocalPoint[2] + d[2] };
+      light->SetPosition(p.data());
+    }
+    else
+    {
+      light->SetPosition(l.Position.data());
+    }
+    light->SetColor(l.Color.data());
+    light->SetIntensity(l.Intensity);
+    light->SetConeAngle(l.Type == "spot" ? l.ConeAngle : 90.0); // VTK: a cone of 90 degrees or more is no spot
+    light->SetExponent(l.Exponent);
+    light->SetAttenuationValues(l.Attenuation.data());
+    o.Renderer->AddLight(light);
+  }
   vtkCamera* camera = o.Renderer->GetActiveCamera();
   camera->SetPosition(scene.Camera.Position.data());
   camera->SetFocalPoint(scene.Camera.FocalPoint.data());

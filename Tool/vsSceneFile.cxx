@@ -287,6 +287,66 @@ std::vector<Scene::ClipPlane> ParseClipPlanes(const json& v)
   }
   return planes;
 }
+
+// issue 38: VTK's lights, each checked by the schema's "lights[]" entries and by what its type allows.
+std::vector<Scene::Light> ParseLights(const json& v)
+{
+  if (!v.is_array())
+  {
+    Fail("lights", std::string("expected an array of light objects ({\"type\", \"position\", ...}), got ") +
+        v.type_name());
+  }
+  std::vector<Scene::Light> lights;
+  for (size_t i = 0; i < v.size(); ++i)
+  {
+    const SceneSection light(v[i], "lights[]", At("lights", i));
+    Scene::Light l;
+    light.Read("type", l.Type);
+    const bool positional = l.Type != "directional", spot = l.Type == "spot";
+    for (const char* key : { "cone_angle", "exponent" })
+    {
+      if (!spot && light.Has(key))
+      {
+        Fail(light.Key(key), "only for a spot light (\"type\": \"spot\"), not a " + l.Type + " one");
+      }
+    }
+    if (!positional && light.Has("attenuation"))
+    {
+      Fail(light.Key("attenuation"), "only for a positional or spot light (a directional light does not fall off)");
+    }
+    if (light.Has("direction") && light.Has("position"))
+    {
+      Fail(light.Key("direction"), "give either 'direction' or 'position', not both");
+    }
+    if (positional && light.Has("direction"))
+    {
+      Fail(light.Key("direction"), "only for a directional light (a " + l.Type + " light has a 'position')");
+    }
+    light.Read("position", l.Position);
+    Vec3 direction{};
+    if (light.Read("direction", direction))
+    {
+      l.Direction = direction;
+    }
+    light.Read("focal_point", l.FocalPoint);
+    if (!l.Direction && l.Position == l.FocalPoint)
+    {
+      Fail(light.Key("position"), "the position is the focal point: the light has no direction");
+    }
+    light.Read("color", l.Color);
+    light.Read("intensity", l.Intensity);
+    light.Read("cone_angle", l.ConeAngle);
+    light.Read("exponent", l.Exponent);
+    light.Read("attenuation", l.Attenuation);
+    if (l.Attenuation[0] == 0.0 && l.Attenuation[1] == 0.0 && l.Attenuation[2] == 0.0)
+    {
+      Fail(light.Key("attenuation"), "all three coefficients are 0: the light would be infinitely bright");
+    }
+    light.Read("follow_camera", l.FollowCamera);
+    lights.push_back(l);
+  }
+  return lights;
+}
 }
 
 Vec3 Normalized(const Vec3& d)
@@ -365,6 +425,10 @@ Scene ParseScene(const json& value, const std::string& baseDir)
   if (j.Has("clip_planes"))
   {
     s.ClipPlanes = ParseClipPlanes(j["clip_planes"]);
+  }
+  if (j.Has("lights"))
+  {
+    s.Lights = ParseLights(j["lights"]);
   }
   return s;
 }

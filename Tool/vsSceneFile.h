@@ -136,6 +136,21 @@ struct Scene
     Vec3 Normal{ 0, 0, 1 };
     bool operator==(const ClipPlane& o) const;
   };
+  // issue 38: a vtkLight of the renderer (docs/reference.md, "VTK's lights").
+  struct Light
+  {
+    std::string Type = "directional"; // "directional" | "positional" | "spot"
+    Vec3 Position{ 0, 0, 1 };         // vtkLight's defaults
+    std::optional<Vec3> Direction;    // directional only, instead of Position: towards the light
+    Vec3 FocalPoint{ 0, 0, 0 };
+    Vec3 Color{ 1, 1, 1 };
+    double Intensity = 1.0;
+    double ConeAngle = 30.0;          // spot only
+    double Exponent = 1.0;            // spot only
+    Vec3 Attenuation{ 1, 0, 0 };      // positional and spot only
+    bool FollowCamera = false;        // a camera light
+    bool operator==(const Light& o) const;
+  };
 
   VolumeSection Volume;
   TransferFunctionSection TransferFunction;
@@ -144,6 +159,7 @@ struct Scene
   RenderSection Render;
   VisibilitySection Visibility;
   std::vector<ClipPlane> ClipPlanes;
+  std::vector<Light> Lights;
 
   bool operator==(const Scene& o) const;
   bool operator!=(const Scene& o) const { return !(*this == o); }

@@ -44,6 +44,7 @@ const std::vector<SceneKey>& SceneSchema()
     { "", "render", T::Section, R::Any, 0, 0, nullptr, false, "", "", {}, "image size, samples and the renderer's settings" },
     { "", "visibility", T::Section, R::Any, 0, 0, nullptr, false, "", "", {}, "the visibility grid's settings (the mapper's)" },
     { "", "clip_planes", T::Planes, R::Any, 0, 0, nullptr, false, "", "", {}, "planes each keeping the half-space its normal points into" },
+    { "", "lights", T::Lights, R::Any, 0, 0, nullptr, false, "", "", {}, "VTK's lights beside the environment (vtkLight), at most 8 used" },
 
     { "volume", "file", T::File, R::Any, 0, 0, nullptr, false, "", "", {}, "one volume file or a DICOM folder (this or 'files' is required)" },
     { "volume", "files", T::Files, R::Any, 0, 0, nullptr, false, "", "", {}, "instead of 'file': a .vdb sequence, one file per time step" },
@@ -123,6 +124,18 @@ const std::vector<SceneKey>& SceneSchema()
 
     { "clip_planes[]", "origin", T::Point, R::Any, 0, 0, nullptr, true, "", "", {}, "a point of the plane" },
     { "clip_planes[]", "normal", T::Direction, R::Any, 0, 0, nullptr, true, "", "", {}, "points into the half-space kept" },
+
+    // issue 38: a vtkLight each, with VTK's semantics (docs/reference.md, "VTK's lights").
+    { "lights[]", "type", T::Word, R::Any, 0, 0, "\"directional\"", false, "light type", "", { "directional", "positional", "spot" }, "directional (from the position towards the focal point), positional (a point light) or spot (a point light with a cone)" },
+    { "lights[]", "position", T::Point, R::Any, 0, 0, "[0, 0, 1]", false, "", "", {}, "the light's position (vtkLight's Position)" },
+    { "lights[]", "direction", T::Direction, R::Any, 0, 0, nullptr, false, "", "", {}, "directional only, instead of position: towards the light, from the focal point" },
+    { "lights[]", "focal_point", T::Point, R::Any, 0, 0, "[0, 0, 0]", false, "", "", {}, "the point the light looks at (vtkLight's FocalPoint)" },
+    { "lights[]", "color", T::Color, R::NonNegativeFloat, 0, kFloatMax, "[1, 1, 1]", false, "colour", "", {}, "the light's colour (vtkLight's DiffuseColor)" },
+    { "lights[]", "intensity", T::Number, R::NonNegativeFloat, 0, kFloatMax, "1", false, "the intensity", "", {}, "vtkLight's Intensity: a plane facing the light receives pi x intensity x colour" },
+    { "lights[]", "cone_angle", T::Number, R::Open, 0, 90, "30", false, "cone angle", " degrees", {}, "spot only: the cone's half angle, degrees (vtkLight's ConeAngle)" },
+    { "lights[]", "exponent", T::Number, R::Closed, 0, 128, "1", false, "exponent", "", {}, "spot only: the falloff (cos)^exponent inside the cone (vtkLight's Exponent)" },
+    { "lights[]", "attenuation", T::Color, R::NonNegativeFloat, 0, kFloatMax, "[1, 0, 0]", false, "attenuation", "", {}, "positional and spot only: 1 / (a0 + a1 r + a2 r^2) (vtkLight's AttenuationValues)" },
+    { "lights[]", "follow_camera", T::Boolean, R::Any, 0, 0, "false", false, "", "", {}, "a camera light: position and focal point in the camera's frame (camera at the origin looking down -z, y up) and moving with it" },
   };
   // clang-format on
   return table;

@@ -26,7 +26,8 @@ enum class SceneType
   Direction, // [x, y, z], not zero; any length (normalised when used)
   Color,     // [r, g, b], each at least 0 and within float's range
   Points,    // [[x, y...], ...] sorted by strictly increasing x: the y values within [Min, Max]
-  Planes     // [{"origin", "normal"}, ...]: the entries of section "clip_planes[]"
+  Planes,    // [{"origin", "normal"}, ...]: the entries of section "clip_planes[]"
+  Lights     // [{"type", ...}, ...]: the entries of section "lights[]" (issue 38: VTK's vtkLights)
 };
 
 /** How Min and Max bound a number (Integer, Number; Points: each point's values). */

@@ -83,10 +83,18 @@ bool Scene::ClipPlane::operator==(const ClipPlane& o) const
   return Origin == o.Origin && Normal == o.Normal;
 }
 
+bool Scene::Light::operator==(const Light& o) const
+{
+  return std::tie(Type, Position, Direction, FocalPoint, Color, Intensity, ConeAngle, Exponent, Attenuation,
+           FollowCamera) == std::tie(o.Type, o.Position, o.Direction, o.FocalPoint, o.Color, o.Intensity, o.ConeAngle,
+                                o.Exponent, o.Attenuation, o.FollowCamera);
+}
+
 bool Scene::operator==(const Scene& o) const
 {
   return Volume == o.Volume && TransferFunction == o.TransferFunction && Environment == o.Environment &&
-    Camera == o.Camera && Render == o.Render && Visibility == o.Visibility && ClipPlanes == o.ClipPlanes;
+    Camera == o.Camera && Render == o.Render && Visibility == o.Visibility && ClipPlanes == o.ClipPlanes &&
+    Lights == o.Lights;
 }
 
 json ToJson(const Scene& s)
@@ -232,6 +240,34 @@ json ToJson(const Scene& s)
       planes.push_back({ { "origin", Array3(p.Origin) }, { "normal", Array3(p.Normal) } });
     }
     j["clip_planes"] = planes;
+  }
+  if (!s.Lights.empty())
+  {
+    json lights = json::array();
+    for (const auto& l : s.Lights)
+    {
+      json light = { { "type", l.Type }, { "focal_point", Array3(l.FocalPoint) }, { "color", Array3(l.Color) },
+        { "intensity", l.Intensity }, { "follow_camera", l.FollowCamera } };
+      if (l.Direction)
+      {
+        light["direction"] = Array3(*l.Direction);
+      }
+      else
+      {
+        light["position"] = Array3(l.Position);
+      }
+      if (l.Type == "spot")
+      {
+        light["cone_angle"] = l.ConeAngle;
+        light["exponent"] = l.Exponent;
+      }
+      if (l.Type != "directional")
+      {
+        light["attenuation"] = Array3(l.Attenuation);
+      }
+      lights.push_back(light);
+    }
+    j["lights"] = lights;
   }
   return j;
 }

@@ -38,9 +38,40 @@
 namespace vstest
 {
 
-// Upper bound of the number of chi-square tests in the Sampling* suites.
+// Upper bound of the number of chi-square tests (ChiSquare() calls) in the unit tests: the Bonferroni
+// correction's count. ChiSquareRuns() counts them and a global test environment prints the count against the
+// bound when the test binary ends (run it whole to see it; ctest runs one test a process).
 constexpr int kChiSquareTestCount = 100;
 constexpr double kChiSquareSignificance = 1e-3 / kChiSquareTestCount;
+
+inline int& ChiSquareRuns()
+{
+  static int runs = 0;
+  return runs;
+}
+
+class ChiSquareBudget : public testing::Environment
+{
+public:
+  void TearDown() override
+  {
+    if (ChiSquareRuns() > 0)
+    {
+      std::cout << "[ chi-square ] " << ChiSquareRuns() << " tests run, at most " << kChiSquareTestCount
+                << " budgeted (significance " << kChiSquareSignificance << " each)\n";
+    }
+    // Not yet a failure: the whole binary's count has not been measured against the bound (issue 38; the
+    // static count of the Sampling* suites' loops is above 100). Run the unit tests whole, set the bound to
+    // the count printed above, then make this an EXPECT_LE.
+    if (ChiSquareRuns() > kChiSquareTestCount)
+    {
+      std::cout << "[ chi-square ] WARNING: more chi-square tests than kChiSquareTestCount (vsChiSquare.h): the "
+                   "suite's false-failure rate exceeds 1e-3\n";
+    }
+  }
+};
+inline testing::Environment* const kChiSquareBudgetEnvironment =
+  testing::AddGlobalTestEnvironment(new ChiSquareBudget);
 
 // ------------------------------------------------------------ distributions
 
@@ -104,6 +135,7 @@ struct ChiSquareResult
 inline ChiSquareResult ChiSquare(const std::vector<double>& observed,
   const std::vector<double>& expected, double minExpected = 5.0)
 {
+  ++ChiSquareRuns();
   ChiSquareResult r;
   std::vector<std::pair<double, double>> cells; // (expected, observed)
   double pooledExpected = 0.0, pooledObserved = 0.0;

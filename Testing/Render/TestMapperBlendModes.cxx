@@ -153,6 +153,7 @@ int TestMapperBlendModes(int, char*[])
   // Iso-surface: not supported, said once; composite renders as before.
   m->SetBlendModeToIsoSurface();
   m->SetRenderModeToMonteCarlo();
+  m->SetSampleDistance(0.0); // the projections' step; set in the Monte Carlo mode it is warned about (issue 38)
   m->SetMaximumSamples(2);
   for (int k = 0; k < 3; ++k)
   {

@@ -8,6 +8,8 @@
 
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkSmartPointer.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
@@ -23,6 +25,7 @@
 #include <cmath>
 #include <iostream>
 #include <sstream>
+#include <vector>
 
 using vstest::Ball;
 using vstest::Check;
@@ -154,6 +157,52 @@ int TestMapperVtkSettings(int, char*[])
   const size_t warnings = recorder->Warnings.size();
   RenderTimes(win, 2);
   Check(recorder->Warnings.size() == warnings, "honoured settings warn nothing");
+  Check(recorder->Errors.empty(), "no errors so far");
+
+  // vtkGPUVolumeRayCastMapper's settings that mean something else here (issue 38, item 5): once each,
+  // not at every render of a converging view.
+  m->SetSampleDistance(0.5);
+  RenderTimes(win, 3);
+  Check(CountContaining(recorder->Warnings, "SampleDistance is not a step") == 1,
+    "SampleDistance in the Monte Carlo mode warns once");
+  m->SetRenderModeToEmissionAbsorption();
+  RenderTimes(win, 2);
+  Check(CountContaining(recorder->Warnings, "SampleDistance is not a step") == 1,
+    "SampleDistance is the emission-absorption mode's step: no warning there");
+  m->SetSampleDistance(0.0);
+  m->SetRenderModeToMonteCarlo();
+  m->AutoAdjustSampleDistancesOff();
+  RenderTimes(win, 3);
+  Check(CountContaining(recorder->Warnings, "AutoAdjustSampleDistances off") == 1,
+    "AutoAdjustSampleDistances off warns once");
+  m->AutoAdjustSampleDistancesOn();
+  // More lights than the estimate takes (issue 38): one warning naming how many and which.
+  std::vector<vtkSmartPointer<vtkLight>> lights;
+  ren->RemoveAllLights(); // VTK's automatic headlight (made at the first render) would be light 1
+  for (int i = 0; i < 10; ++i)
+  {
+    auto light = vtkSmartPointer<vtkLight>::New();
+    light->SetLightTypeToSceneLight();
+    light->SetPosition(10.0 * i, 30.0, 30.0);
+    light->SetFocalPoint(8.0, 8.0, 8.0);
+    light->SetIntensity(0.1);
+    ren->AddLight(light);
+    lights.push_back(light);
+  }
+  RenderTimes(win, 3);
+  Check(CountContaining(recorder->Warnings, "the renderer has 10 switched-on lights") == 1 &&
+      CountContaining(recorder->Warnings, "the first 8; it leaves out the lights at positions 9 and 10") == 1,
+    "10 lights: one warning naming the 8 used and the 2 left out");
+  lights[9]->SwitchOff();
+  RenderTimes(win, 2);
+  Check(CountContaining(recorder->Warnings, "at position 9 of vtkRenderer::GetLights()") == 1,
+    "9 lights: a new warning naming the one left out");
+  lights[8]->SwitchOff();
+  const size_t beforeEight = recorder->Warnings.size();
+  RenderTimes(win, 2);
+  Check(recorder->Warnings.size() == beforeEight, "8 lights: nothing left out, no warning");
+  ren->RemoveAllLights();
+  RenderTimes(win, 1);
   Check(recorder->Errors.empty(), "no errors so far");
 
   // Cropping region flags other than the subvolume are honoured (TestMapperCroppingRegions).

@@ -45,7 +45,12 @@ json FullScene()
                    "filter_angle_fraction": 0.25, "epsilon": 0.02, "cell_mode": "trilinear",
                    "skip_unlit_directions": false, "progressive": false, "sweep_frame_fraction": 0.5,
                    "light_weighted_directions": false, "fill_unswept": false, "extinction_pooling": 2},
-    "clip_planes": [{"origin": [90, 108, 90], "normal": [1, 0, 0]}, {"origin": [0, 0, 0], "normal": [0, 0, -1]}]
+    "clip_planes": [{"origin": [90, 108, 90], "normal": [1, 0, 0]}, {"origin": [0, 0, 0], "normal": [0, 0, -1]}],
+    "lights": [{"type": "directional", "direction": [1, -1, 1], "focal_point": [90, 108, 90], "color": [1, 0.9, 0.8],
+                "intensity": 2},
+               {"type": "spot", "position": [90, -200, 90], "focal_point": [90, 108, 90], "cone_angle": 20,
+                "exponent": 4, "attenuation": [0, 0, 1], "intensity": 5e4},
+               {"type": "positional", "position": [0, 0, 0], "focal_point": [0, 0, -1], "follow_camera": true}]
   })");
 }
 
@@ -117,6 +122,48 @@ TEST(SceneFile, ParsesEverySection)
   EXPECT_EQ(s.Visibility.ExtinctionPooling.value(), 2);
   ASSERT_EQ(s.ClipPlanes.size(), 2u);
   EXPECT_EQ(s.ClipPlanes[1].Normal[2], -1.0);
+  // issue 38: VTK's lights.
+  ASSERT_EQ(s.Lights.size(), 3u);
+  EXPECT_EQ(s.Lights[0].Type, "directional");
+  ASSERT_TRUE(s.Lights[0].Direction.has_value());
+  EXPECT_EQ((*s.Lights[0].Direction)[1], -1.0);
+  EXPECT_EQ(s.Lights[0].Color[2], 0.8);
+  EXPECT_EQ(s.Lights[0].Intensity, 2.0);
+  EXPECT_EQ(s.Lights[1].Type, "spot");
+  EXPECT_EQ(s.Lights[1].ConeAngle, 20.0);
+  EXPECT_EQ(s.Lights[1].Exponent, 4.0);
+  EXPECT_EQ(s.Lights[1].Attenuation[2], 1.0);
+  EXPECT_FALSE(s.Lights[1].FollowCamera);
+  EXPECT_EQ(s.Lights[2].Type, "positional");
+  EXPECT_TRUE(s.Lights[2].FollowCamera);
+  EXPECT_EQ(s.Lights[2].Attenuation[0], 1.0); // vtkLight's default
+}
+
+// issue 38: bad light keys are errors naming the key.
+TEST(SceneFile, BadLights)
+{
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"] = json::object(); }), "lights: expected an array");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"][1]["kind"] = "spot"; }), "lights[1].kind: unknown key");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"][0]["type"] = "area"; }), "lights[0].type: ");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"][0]["intensity"] = -1; }), "lights[0].intensity: ");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"][0]["color"] = { 1, 1 }; }), "lights[0].color: ");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"][1]["cone_angle"] = 90; }), "lights[1].cone_angle: ");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"][1]["exponent"] = 200; }), "lights[1].exponent: ");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"][0]["cone_angle"] = 20; }),
+    "lights[0].cone_angle: only for a spot light");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"][0]["attenuation"] = { 0, 0, 1 }; }),
+    "lights[0].attenuation: only for a positional or spot light");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"][1]["attenuation"] = { 0, 0, 0 }; }),
+    "lights[1].attenuation: all three coefficients are 0");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"][0]["position"] = { 0, 0, 1 }; }),
+    "lights[0].direction: give either");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"][1]["direction"] = { 0, 0, 1 }; }),
+    "lights[1].direction: give either");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"][0]["direction"] = { 0, 0, 0 }; }),
+    "lights[0].direction: the direction must not be zero");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"][2]["position"] = { 0, 0, -1 }; }),
+    "lights[2].position: the position is the focal point");
+  EXPECT_ERROR_STARTS(ErrorAfter([](json& j) { j["lights"][2]["follow_camera"] = 1; }), "lights[2].follow_camera: ");
 }
 
 TEST(SceneFile, DefaultsOfOptionalSections)
@@ -267,6 +314,12 @@ TEST(SceneFile, EqualityNoticesChanges)
   EXPECT_FALSE(a == b);
   b = a;
   b.Render.ShadowRays = a.Render.ShadowRays + 1;
+  EXPECT_FALSE(a == b);
+  b = a;
+  b.Lights[1].ConeAngle = 25.0;
+  EXPECT_FALSE(a == b);
+  b = a;
+  b.Lights[2].FollowCamera = false;
   EXPECT_FALSE(a == b);
 }
 

@@ -28,6 +28,7 @@ struct Reference
   std::map<std::string, std::set<std::string>> TableKeys;    // section -> `key` in its tables' first column
   std::map<std::string, std::set<std::string>> QuotedKeys;   // section -> "key": in its text (nested keys)
   std::map<std::string, std::map<std::string, std::string>> Rows; // section -> key -> its table row
+  std::map<std::string, std::string> Text;                   // section -> its text
 };
 
 Reference ReadReference()
@@ -56,6 +57,10 @@ Reference ReadReference()
       section = m[1];
       r.Sections.insert(section);
       continue;
+    }
+    if (!section.empty())
+    {
+      r.Text[section] += line + "\n";
     }
     for (auto it = std::sregex_iterator(line.begin(), line.end(), quoted); it != std::sregex_iterator(); ++it)
     {
@@ -157,6 +162,17 @@ TEST(SceneFile, ReferenceNamesEveryWord)
       continue;
     }
     SCOPED_TRACE(k.Path());
+    const std::string top = TopSection(k.Section);
+    if (top != k.Section) // a nested key ("lights[].type"): its words in its section's text
+    {
+      ASSERT_TRUE(r.Text.count(top));
+      for (const std::string& word : k.Words)
+      {
+        EXPECT_NE(r.Text.at(top).find("`" + word + "`"), std::string::npos) << "### `" << top << "` does not name `"
+                                                                           << word << "`";
+      }
+      continue;
+    }
     ASSERT_TRUE(r.Rows.count(k.Section) && r.Rows.at(k.Section).count(k.Key));
     const std::string& row = r.Rows.at(k.Section).at(k.Key);
     for (const std::string& word : k.Words)
@@ -190,12 +206,23 @@ TEST(SceneFile, SchemaDefaultsAreTheParsers)
     {
       without["environment"] = json::parse(R"({"sun": {"direction": [0, 0, 1]}})");
     }
+    const bool light = std::string(k.Section) == "lights[]";
+    if (light)
+    {
+      // A spot light takes every key of a light (its cone, exponent and attenuation); the type's own
+      // default is checked on a light without a type.
+      without["lights"] = json::array({ std::string(k.Key) == "type" ? json::object() : json{ { "type", "spot" } } });
+    }
     json with = without;
     json* section = &with;
-    std::istringstream parts(k.Section);
+    std::istringstream parts(light ? std::string() : std::string(k.Section));
     for (std::string part; std::getline(parts, part, '.');)
     {
       section = &(*section)[part];
+    }
+    if (light)
+    {
+      section = &with["lights"][0];
     }
     (*section)[k.Key] = json::parse(k.Default);
     EXPECT_TRUE(vstool::ParseScene(with, "/x") == vstool::ParseScene(without, "/x")) << with.dump();

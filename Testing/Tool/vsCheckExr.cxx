@@ -5,6 +5,8 @@
 // vsCheckExr --header FILE.exr — prints the header's "vissweep.*" attributes, one "name=value" a line.
 // vsCheckExr --same A.exr B.exr — exits 0 when the two images have the same size and the same pixels
 // bit for bit (their headers may differ: the render time is in them).
+// vsCheckExr --brighter A.exr B.exr FACTOR — exits 0 when A's mean radiance (R + G + B) is more than
+// FACTOR times B's (issue 38: a scene's light brightens the image).
 #include <ImfArray.h>
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -63,6 +65,26 @@ int PrintHeader(const char* path)
   return 0;
 }
 
+// The mean of R + G + B over the image.
+double MeanRadiance(const char* path)
+{
+  Imf::RgbaInputFile file(path);
+  const Imath::Box2i dw = file.dataWindow();
+  const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
+  Imf::Array2D<Imf::Rgba> px(h, w);
+  file.setFrameBuffer(&px[0][0] - dw.min.x - dw.min.y * w, 1, size_t(w));
+  file.readPixels(dw.min.y, dw.max.y);
+  double sum = 0.0;
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      sum += double(px[y][x].r) + double(px[y][x].g) + double(px[y][x].b);
+    }
+  }
+  return sum / (double(w) * double(h));
+}
+
 // Every channel's pixels as 32-bit floats' bit patterns (channel by channel, in the header's
 // order), with the channels' names and the size.
 std::vector<unsigned> Pixels(const char* path, int& w, int& h, std::string& channels)
@@ -104,6 +126,13 @@ int main(int argc, char** argv)
     {
       return PrintHeader(argv[2]);
     }
+    if (argc == 5 && std::strcmp(argv[1], "--brighter") == 0)
+    {
+      const double a = MeanRadiance(argv[2]), b = MeanRadiance(argv[3]), factor = std::atof(argv[4]);
+      std::printf("mean radiance: %s %.6g, %s %.6g (ratio %.4g, expected above %g)\n", argv[2], a, argv[3], b,
+        b > 0.0 ? a / b : 0.0, factor);
+      return std::isfinite(a) && std::isfinite(b) && a > factor * b ? 0 : 1;
+    }
     if (argc == 4 && std::strcmp(argv[1], "--same") == 0)
     {
       int wa = 0, ha = 0, wb = 0, hb = 0;
@@ -126,7 +155,8 @@ int main(int argc, char** argv)
   }
   if (argc != 4 && !(argc == 5 && std::string(argv[4]) == "framed"))
   {
-    std::fprintf(stderr, "usage: vsCheckExr FILE.exr WIDTH HEIGHT [framed] | --header FILE.exr | --same A.exr B.exr\n");
+    std::fprintf(stderr, "usage: vsCheckExr FILE.exr WIDTH HEIGHT [framed] | --header FILE.exr | --same A.exr B.exr | "
+                         "--brighter A.exr B.exr FACTOR\n");
     return 2;
   }
   try

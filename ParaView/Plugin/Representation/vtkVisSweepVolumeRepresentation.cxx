@@ -2,6 +2,7 @@
 
 #include "vtkCommunicator.h"
 #include "vtkEnvironmentMapReader.h"
+#include "vtkEnvironmentMapSource.h"
 #include "vtkImageAppend.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -45,6 +46,9 @@ vtkVisSweepVolumeRepresentation::vtkVisSweepVolumeRepresentation()
   // this->VolumeMapper wherever it passes ParaView's volume settings on).
   this->VolumeMapper = vtkSmartPointer<vtkVisibilitySweepVolumeMapper>::New();
   this->EnvironmentReader = vtkEnvironmentMapReader::New();
+  this->WhiteSky = vtkEnvironmentMapSource::New();
+  this->WhiteSky->SetOctahedralSize(16); // the mapper's own default sky, texel for texel
+  this->GetVisSweepMapper()->SetEnvironmentConnection(this->WhiteSky->GetOutputPort());
   // Under MPI (pvbatch, pvserver) every process of the global controller renders the view; a client
   // has a controller of its own process only.
   if (vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController())
@@ -67,6 +71,7 @@ vtkVisSweepVolumeRepresentation::vtkVisSweepVolumeRepresentation()
 vtkVisSweepVolumeRepresentation::~vtkVisSweepVolumeRepresentation()
 {
   this->EnvironmentReader->Delete();
+  this->WhiteSky->Delete();
 }
 
 vtkVisibilitySweepVolumeMapper* vtkVisSweepVolumeRepresentation::GetVisSweepMapper()
@@ -351,7 +356,7 @@ void vtkVisSweepVolumeRepresentation::SetEnvironmentFileName(const char* fileNam
   this->EnvironmentFileName = name;
   if (name.empty())
   {
-    this->GetVisSweepMapper()->SetEnvironmentConnection(nullptr);
+    this->GetVisSweepMapper()->SetEnvironmentConnection(this->WhiteSky->GetOutputPort());
   }
   else
   {

@@ -41,6 +41,7 @@
 #include <vector>
 
 class vtkEnvironmentMapReader;
+class vtkEnvironmentMapSource;
 class vtkVisibilitySweepVolumeMapper;
 
 class VISSWEEPPARAVIEWREPRESENTATION_EXPORT vtkVisSweepVolumeRepresentation
@@ -152,6 +153,9 @@ private:
   std::string EnvironmentFileName;
   double EnvironmentRotation = 0.0;
   vtkEnvironmentMapReader* EnvironmentReader = nullptr;
+  // Without a file, the plugin's white sky, connected so that it is shown as before: the mapper shows
+  // only a connected environment (issue 38) and would otherwise show the view's background.
+  vtkEnvironmentMapSource* WhiteSky = nullptr;
 };
 
 #endif
