@@ -39,9 +39,10 @@ namespace vstest
 {
 
 // Upper bound of the number of chi-square tests (ChiSquare() calls) in the unit tests: the Bonferroni
-// correction's count. ChiSquareRuns() counts them and a global test environment prints the count against the
-// bound when the test binary ends (run it whole to see it; ctest runs one test a process).
-constexpr int kChiSquareTestCount = 100;
+// correction's count. ChiSquareRuns() counts them; when the binary runs them all in one process
+// (ctest's Sampling.ChiSquareBudget) a global test environment fails if the count passes the bound.
+// Measured 2026-12-05: 177 (the Sampling* suites, microfacet included).
+constexpr int kChiSquareTestCount = 200;
 constexpr double kChiSquareSignificance = 1e-3 / kChiSquareTestCount;
 
 inline int& ChiSquareRuns()
@@ -60,14 +61,9 @@ public:
       std::cout << "[ chi-square ] " << ChiSquareRuns() << " tests run, at most " << kChiSquareTestCount
                 << " budgeted (significance " << kChiSquareSignificance << " each)\n";
     }
-    // Not yet a failure: the whole binary's count has not been measured against the bound (issue 38; the
-    // static count of the Sampling* suites' loops is above 100). Run the unit tests whole, set the bound to
-    // the count printed above, then make this an EXPECT_LE.
-    if (ChiSquareRuns() > kChiSquareTestCount)
-    {
-      std::cout << "[ chi-square ] WARNING: more chi-square tests than kChiSquareTestCount (vsChiSquare.h): the "
-                   "suite's false-failure rate exceeds 1e-3\n";
-    }
+    EXPECT_LE(ChiSquareRuns(), kChiSquareTestCount)
+      << "more chi-square tests than kChiSquareTestCount (vsChiSquare.h): the suite's false-failure rate "
+         "exceeds 1e-3; raise the bound to the count";
   }
 };
 inline testing::Environment* const kChiSquareBudgetEnvironment =
