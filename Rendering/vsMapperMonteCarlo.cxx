@@ -137,39 +137,84 @@ void SetSurface(vs::shared::VsMonteCarloParams& p, vtkVolumeProperty* property, 
 using vs::mapper::CopyKernelSettings;
 using vs::mapper::SetSurface;
 
-void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars)
+namespace
 {
-  Internals& I = *this->Impl;
+// The first frame's kernel settings for StartPrewarm and PrecompileRenderKernel (false: none to guess).
+bool PrewarmParameters(vtkVisibilitySweepVolumeMapper* mapper, vtkVolume* volume, vs::shared::VsMonteCarloParams& p)
+{
   vtkVolumeProperty* property = volume->GetProperty();
-  I.Prewarm.MarkStarted();
-  if (this->Cropping)
+  if (mapper->GetCropping())
   {
-    return; // the pipeline depends on the regions the geometry keeps: made when known
+    return false; // the pipeline depends on the regions the geometry keeps: made when known
   }
-  vs::shared::VsMonteCarloParams p{};
   // Auto's first frames sample the environment (its grid fills in first), and so does TwoStep's
   // first progressive frame: its new grid is flat, where TwoStep is rendered as Environment sampling.
-  const bool flatFirst = this->SamplingStrategy == Auto || (this->SamplingStrategy == TwoStep && this->ProgressiveVisibility);
-  p.strategy = uint32_t(flatFirst ? int(Environment) : this->SamplingStrategy);
+  const bool flatFirst = mapper->GetSamplingStrategy() == vtkVisibilitySweepVolumeMapper::Auto || (mapper->GetSamplingStrategy() == vtkVisibilitySweepVolumeMapper::TwoStep && mapper->GetProgressiveVisibility());
+  p.strategy = uint32_t(flatFirst ? int(vtkVisibilitySweepVolumeMapper::Environment) : mapper->GetSamplingStrategy());
   p.volume.interpolation = property->GetInterpolationType() == VTK_NEAREST_INTERPOLATION
     ? vs::shared::VS_INTERPOLATION_NEAREST
     : vs::shared::VS_INTERPOLATION_LINEAR;
   p.volume.extinctionFactor = vs::HasEffectiveGradientOpacity(property) ? 1u : 0u; // the kernel's factor volume
   try
   {
-    CopyKernelSettings(this, property, p);
-    p.surface = property->GetShade(0) && this->VolumetricScatteringBlending < 2.0 ? 1u : 0u; // issue 38
+    CopyKernelSettings(mapper, property, p);
+    p.surface = property->GetShade(0) && mapper->GetVolumetricScatteringBlending() < 2.0 ? 1u : 0u; // issue 38
   }
   catch (const vs::InputError&)
   {
-    return; // the render reports it
+    return false; // the render reports it
+  }
+  return true;
+}
+}
+
+void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars)
+{
+  Internals& I = *this->Impl;
+  I.Prewarm.MarkStarted();
+  vs::shared::VsMonteCarloParams p{};
+  if (!PrewarmParameters(this, volume, p))
+  {
+    return;
   }
   // A pass of its own: the pipeline lands in the context's cache, where the view's pass finds it
   // (waiting for it if the render gets there first); the view's passes come and go (SwitchView).
-  const bool table = this->DirectionTable;
   const bool quads = vs::PipelinePrewarm::GuessQuads(scalars);
   const bool cellWalk = vs::PipelinePrewarm::GuessCellWalk(input, scalars, volume, this->DensityScale, p);
-  I.Prewarm.Start(I.Context, p, table, quads, cellWalk, false);
+  I.Prewarm.Start(I.Context, p, this->DirectionTable, quads, cellWalk, false);
+}
+
+void vtkVisibilitySweepVolumeMapper::PrecompileRenderKernel(
+  vtkVolume* volume, vtkImageData* shape, int scalarType, double rangeMin, double rangeMax)
+{
+  Internals& I = *this->Impl;
+  if (I.Prewarm.Started() || this->RenderMode != MonteCarlo || !volume || !volume->GetProperty() || !shape ||
+    EmissionAbsorptionFrame::IsProjection(this->BlendMode))
+  {
+    return;
+  }
+  try
+  {
+    if (!I.Context)
+    {
+      I.Context = vs::Context::Default();
+    }
+  }
+  catch (const std::exception&)
+  {
+    return; // no device: the first render says so
+  }
+  I.Prewarm.MarkStarted();
+  vs::shared::VsMonteCarloParams p{};
+  if (!PrewarmParameters(this, volume, p))
+  {
+    return;
+  }
+  const double range[2] = { rangeMin, rangeMax };
+  const bool quads =
+    vs::PipelinePrewarm::GuessQuads(scalarType, 1, uint64_t(std::max<vtkIdType>(0, shape->GetNumberOfPoints())), range);
+  const bool cellWalk = vs::PipelinePrewarm::GuessCellWalk(shape, range, volume, this->DensityScale, p);
+  I.Prewarm.Start(I.Context, p, this->DirectionTable, quads, cellWalk, false);
 }
 
 void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolume* vol)
@@ -311,14 +356,20 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
   lap = I.LastFrame.Lap("frame", lap);
   I.Prewarm.Join();
   lap = I.LastFrame.Lap("pipeline", lap);
-  if (autoStrategy && grid && !I.GridPrewarm.Started() && I.Grid->SweptDirections() > 0)
+  // Auto's TwoStep pipeline once the grid has swept a direction (Auto may never use it before), and
+  // TwoStep's own from its first flat-grid frame, rendered as Environment sampling: ready, or begun,
+  // when the grid fills in (issue 39: ch2better's first TwoStep frame waited 1.4 s for the compile).
+  const bool twoStepLater = this->SamplingStrategy == TwoStep && flatGrid && !interactive && !tiled;
+  if ((autoStrategy ? grid && I.Grid->SweptDirections() > 0 : twoStepLater) && !I.GridPrewarm.Started())
   {
     I.GridPrewarm.MarkStarted();
     vs::shared::VsMonteCarloParams q = p;
     q.strategy = uint32_t(TwoStep);
     q.volume.extinctionFactor = I.Scene->Volume().Factor() ? 1u : 0u; // as MonteCarloPass::Render sets it
     const bool cellWalk = vs::MonteCarloPass::NeedsCellWalk(I.Scene->Majorants(), q);
-    const bool quads = I.MC && I.MC->LastUsedVolumeQuads();
+    // As MonteCarloPass::Render decides (VolumeQuads on by default): the view's pass may not exist yet.
+    const bool quads = I.MC ? I.MC->LastUsedVolumeQuads()
+                            : I.Scene->Volume().Quads() != nullptr && q.volume.interpolation == 0u;
     const bool table = this->DirectionTable;
     // On a CPU device the compile would take cores from the frames rendering meanwhile (Auto's
     // paths per device second fell 10-20% in its first seconds): it takes only what they leave.

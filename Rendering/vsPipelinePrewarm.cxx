@@ -65,21 +65,41 @@ void PipelinePrewarm::Join()
 
 bool PipelinePrewarm::GuessQuads(vtkDataArray* scalars)
 {
+  if (!scalars)
+  {
+    return false;
+  }
+  double range[2] = { 0.0, -1.0 };
+  if (scalars->GetNumberOfComponents() == 1 && scalars->GetDataType() != VTK_FLOAT && scalars->GetDataType() != VTK_DOUBLE)
+  {
+    scalars->GetRange(range, 0); // only for integers: a float volume is never integer-coded
+  }
+  return GuessQuads(scalars->GetDataType(), scalars->GetNumberOfComponents(), uint64_t(scalars->GetNumberOfTuples()), range);
+}
+
+bool PipelinePrewarm::GuessQuads(int dataType, int components, uint64_t tuples, const double range[2])
+{
   // Whether the device volume will be integer-coded (vsDeviceVolume.h quads): integer scalars of one
   // component spanning at most 255 (the upload decides; a wrong guess only wastes this thread's work).
-  bool quads = false;
-  if (scalars && scalars->GetNumberOfComponents() == 1 && scalars->GetDataType() != VTK_FLOAT &&
-    scalars->GetDataType() != VTK_DOUBLE &&
-    uint64_t(scalars->GetNumberOfTuples()) * 4 <= vs::DeviceVolume::kMaxQuadBytes)
-  {
-    double range[2];
-    scalars->GetRange(range, 0);
-    quads = range[1] - range[0] <= 255.0;
-  }
-  return quads;
+  return components == 1 && dataType != VTK_FLOAT && dataType != VTK_DOUBLE && tuples * 4 <= vs::DeviceVolume::kMaxQuadBytes &&
+    range[0] <= range[1] && range[1] - range[0] <= 255.0;
 }
 
 bool PipelinePrewarm::GuessCellWalk(vtkImageData* input, vtkDataArray* scalars, vtkVolume* volume,
+  double densityScale, vs::shared::VsMonteCarloParams& p)
+{
+  // Only for input the scene update will accept: sampling a property without functions would
+  // give it default ones (a change, and its error logged again).
+  if (!vs::CheckImage(input, scalars).empty())
+  {
+    return false;
+  }
+  double range[2];
+  scalars->GetRange(range, 0);
+  return GuessCellWalk(input, range, volume, densityScale, p);
+}
+
+bool PipelinePrewarm::GuessCellWalk(vtkImageData* shape, const double range[2], vtkVolume* volume,
   double densityScale, vs::shared::VsMonteCarloParams& p)
 {
   vtkVolumeProperty* property = volume->GetProperty();
@@ -87,20 +107,16 @@ bool PipelinePrewarm::GuessCellWalk(vtkImageData* input, vtkDataArray* scalars, 
   // function's largest extinction over the scalars' range: the largest majorant the upload will
   // find when some brick reaches the function's peak, as it usually does (a wrong guess costs the
   // first frame a compile of its own, ~0.2 s: blind_sunrise's first frames did before).
-  // Only for input the scene update will accept: sampling a property without functions would
-  // give it default ones (a change, and its error logged again).
   bool cellWalk = false;
-  if (vs::CheckImage(input, scalars).empty() && vs::CheckProperty(property).empty())
+  if (shape && property && vs::CheckProperty(property).empty() && range[0] <= range[1])
   {
     try
     {
-      const vs::VolumeGeometry geometry = vs::ComputeGeometry(input, volume->GetMatrix());
+      const vs::VolumeGeometry geometry = vs::ComputeGeometry(shape, volume->GetMatrix());
       if (!vs::CheckGeometry(geometry).empty())
       {
         throw vs::InputError(vs::CheckGeometry(geometry));
       }
-      double range[2];
-      scalars->GetRange(range, 0);
       const vs::TransferFunctionSamples samples = vs::VolumeScene::SampleRenderedTransferFunction(
         property, float(range[0]), float(range[1]), densityScale, geometry);
       float extinction = 0.0f;

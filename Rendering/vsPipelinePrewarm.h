@@ -41,8 +41,15 @@ public:
 
   /** Whether the device volume will be integer-coded (vsDeviceVolume.h quads). */
   static bool GuessQuads(vtkDataArray* scalars);
+  /** The same from what a reader tells before it reads: the scalars' VTK type, components, count and
+   *  range (an 8-bit type's own range, when the data's is not known yet). */
+  static bool GuessQuads(int dataType, int components, uint64_t tuples, const double range[2]);
   /** Whether the first frame walks cells; sets p.worldToIndex when it can tell. */
   static bool GuessCellWalk(vtkImageData* input, vtkDataArray* scalars, vtkVolume* volume, double densityScale,
+    vs::shared::VsMonteCarloParams& p);
+  /** The same from the volume's shape (extent, spacing, origin, direction: its scalars may not be
+   *  read yet) and the scalars' range. */
+  static bool GuessCellWalk(vtkImageData* shape, const double range[2], vtkVolume* volume, double densityScale,
     vs::shared::VsMonteCarloParams& p);
 
 private:

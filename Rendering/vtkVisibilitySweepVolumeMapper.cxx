@@ -142,9 +142,13 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
   {
     return;
   }
-  if (I.Grid && I.Grid->Grid() && I.Scene)
+  if (this->ReleaseKeepsVisibilityGrid && I.Grid && I.Grid->Grid() && I.Scene)
   {
     this->GetVisibilityGrid(); // completes a grid still filling in, then downloads it
+  }
+  else if (!this->ReleaseKeepsVisibilityGrid)
+  {
+    I.VisibilityImage = nullptr; // no copy of an earlier state of the grid either
   }
   I.Prewarm.Join();
   I.GridPrewarm.Join();
@@ -678,6 +682,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SamplingStrategy: " << this->GetSamplingStrategyAsString() << "\n";
   os << indent << "EffectiveStrategy: " << this->GetEffectiveStrategyAsString() << "\n";
   os << indent << "ProgressiveVisibility: " << (this->ProgressiveVisibility ? "On" : "Off") << "\n";
+  os << indent << "ReleaseKeepsVisibilityGrid: " << (this->ReleaseKeepsVisibilityGrid ? "On" : "Off") << "\n";
   os << indent << "SweepFrameFraction: " << this->SweepFrameFraction << "\n";
   os << indent << "AutoProbeFraction: " << this->AutoProbeFraction << "\n";
   os << indent << "LightWeightedDirections: " << (this->LightWeightedDirections ? "On" : "Off") << "\n";

@@ -540,6 +540,20 @@ public:
    *  then grabs the image. */
   int RenderUntilConverged(vtkRenderWindow* window, double timeBudgetSeconds = 0.0);
 
+  /**
+   * Starts making the Monte Carlo render kernel on another thread before the volume is read, so that
+   * its compile (0.7-0.9 s on lavapipe, 2 cores) overlaps the read instead of delaying the first frame
+   * (issue 39). `shape` holds the volume's extent, spacing, origin and direction and no scalars yet
+   * (what a reader tells after UpdateInformation()); `scalarType` (VTK_UNSIGNED_CHAR, ...) and the range
+   * [rangeMin, rangeMax] are the scalars' as far as known before reading (an 8-bit type's own range;
+   * for other types e.g. the transfer function's), with the volume's property and this mapper's
+   * settings as they will be at the first render. The first render uses the kernel when the guess
+   * matches what the data turns out to be and makes its own otherwise: a wrong guess costs only the
+   * other thread's work. Does nothing outside the MonteCarlo mode, after the first render, or on a
+   * second call; needs no render window. `vissweep render` calls it from the volume file's header.
+   */
+  void PrecompileRenderKernel(vtkVolume* volume, vtkImageData* shape, int scalarType, double rangeMin, double rangeMax);
+
   /** The linear HDR radiance of the last render (of the view rendered last) as image data (width x height, point array
    *  "Radiance" with 3 floats and "Alpha"), rows bottom-up; nullptr before the first render. It is what
    *  the last render computed, or nothing: nullptr after a failed render and after a render in a mode
@@ -714,8 +728,15 @@ public:
   /** Forgets the accumulators of the views (renderers) in this window; when no view in another
    *  window remains, frees the device resources too: the next Render() re-creates them and
    *  accumulates anew. The last GetRadiance() (no variance) and GetVisibilityGrid() stay on the
-   *  host, e.g. after the window goes. */
+   *  host, e.g. after the window goes (the grid only with ReleaseKeepsVisibilityGrid). */
   void ReleaseGraphicsResources(vtkWindow*) override;
+  /** Whether releasing the device resources keeps the visibility grid on the host for a later
+   *  GetVisibilityGrid() (default on): it completes the directions still pending and downloads the
+   *  grid first, which costs a program that has no more use for it, at exit, up to a second of
+   *  sweeps on a large volume (issue 39: `vissweep render` turns it off). */
+  vtkSetMacro(ReleaseKeepsVisibilityGrid, bool);
+  vtkGetMacro(ReleaseKeepsVisibilityGrid, bool);
+  vtkBooleanMacro(ReleaseKeepsVisibilityGrid, bool);
 
   /** Device seconds of the last render pass (0 if the device has no timestamps). */
   vtkGetMacro(LastDeviceSeconds, double);
@@ -821,6 +842,7 @@ protected:
   int SamplingStrategy = Auto;
   int EffectiveStrategy = Environment;
   bool ProgressiveVisibility = true;
+  bool ReleaseKeepsVisibilityGrid = true;
   double SweepFrameFraction = 0.25;
   bool LightWeightedDirections = true;
   bool FillUnsweptDirections = true;

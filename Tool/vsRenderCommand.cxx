@@ -159,6 +159,22 @@ int Run(const RenderOptions& o)
   }
   stats["first_frame_phases"] = phases;
   stats["render_device_share"] = renderSeconds > 0.0 ? deviceSeconds / renderSeconds : 0.0;
+  // The sweeps fill the grid the samples are drawn with: the share of the loop spent on both.
+  stats["sampling_device_share"] = renderSeconds > 0.0 ? (deviceSeconds + sweepSeconds) / renderSeconds : 0.0;
+  nlohmann::json frameLog = nlohmann::json::array();
+  for (const auto& f : loop.FrameLog)
+  {
+    frameLog.push_back({ { "seconds", f.Seconds }, { "samples", f.Samples }, { "device_seconds", f.DeviceSeconds },
+      { "sweep_seconds", f.SweepSeconds }, { "update_seconds", f.UpdateSeconds }, { "directions_swept", f.DirectionsSwept },
+      { "strategy", f.Strategy } });
+    nlohmann::json phases = nlohmann::json::object();
+    for (const auto& [name, seconds] : f.Phases)
+    {
+      phases[name] = seconds;
+    }
+    frameLog.back()["phases"] = phases;
+  }
+  stats["frames_log"] = frameLog;
   // The product of visibility and light is made once per grid state (the direction table, whose
   // builds are part of "render": direction_table_seconds below) or per scatter event inside the
   // render kernel (trilinear cells); bench overhead separates the variants per strategy.
@@ -375,6 +391,12 @@ ProgressiveResult RenderProgressively(
     r.DeviceSeconds += mapper->GetLastDeviceSeconds();
     r.SweepSeconds += mapper->GetLastFrameSweepSeconds();
     const int acc = mapper->GetAccumulatedSamples();
+    r.FrameLog.push_back({ frameSeconds, acc - r.Spp, mapper->GetLastDeviceSeconds(), mapper->GetLastFrameSweepSeconds(),
+      mapper->GetLastUpdateSeconds(), mapper->GetDirectionsUpdatedLastFrame(), mapper->GetEffectiveStrategyAsString(), {} });
+    for (int i = 0; i < mapper->GetNumberOfLastFramePhases(); ++i)
+    {
+      r.FrameLog.back().Phases.emplace_back(mapper->GetLastFramePhaseName(i), mapper->GetLastFramePhaseSeconds(i));
+    }
     stalled = acc > r.Spp ? 0 : stalled + 1;
     r.Spp = acc;
     if (stalled >= 3)

@@ -67,6 +67,19 @@ struct ProgressiveResult
   double SweepSeconds = 0.0;    // sweeps on the device
   // The first frame's host time by phase (the mapper's GetLastFramePhaseName), in the order they ran.
   std::vector<std::pair<std::string, double>> FirstFramePhases;
+  // Every frame of the loop (--json's "frames_log"): where the time outside the render passes goes.
+  struct Frame
+  {
+    double Seconds = 0.0;       // the Render() call's wall time
+    int Samples = 0;            // samples it added
+    double DeviceSeconds = 0.0; // its render passes on the device
+    double SweepSeconds = 0.0;  // its sweeps on the device
+    double UpdateSeconds = 0.0; // its scene update (upload, majorants) on the host
+    int DirectionsSwept = 0;
+    std::string Strategy;       // what it sampled with
+    std::vector<std::pair<std::string, double>> Phases; // its host time by phase (GetLastFramePhaseName)
+  };
+  std::vector<Frame> FrameLog;
 };
 
 /** The Vulkan device the renders run on (name, type, driver, Vulkan version), for --json. */

@@ -187,6 +187,9 @@ vtkSmartPointer<vtkAlgorithm> MakeEnvironment(const Scene& scene)
 void ConfigureMapper(vtkVisibilitySweepVolumeMapper* mapper, const Scene& scene)
 {
   mapper->SetRenderMode(RenderModeIndex(scene.Render.Mode));
+  // The tool writes its outputs before the window goes: completing and downloading the grid at exit
+  // would only delay it (issue 39).
+  mapper->ReleaseKeepsVisibilityGridOff();
   mapper->SetSamplingStrategy(StrategyIndex(scene.Render.Strategy));
   mapper->SetSeed(scene.Render.Seed);
   mapper->SetMaximumSamples(scene.Render.Spp);
@@ -304,10 +307,35 @@ SceneObjects BuildScene(const Scene& scene, bool openGLWindow)
   // The image size against the device's limits and the host's memory before anything is read or
   // allocated (issue 13, item 7): a 16384 x 16384 window alone is gigabytes of host memory.
   vs::RenderTargetLimits::Check(*vs::Context::Default(), uint32_t(scene.Render.Width), uint32_t(scene.Render.Height));
+  o.Property = MakeVolumeProperty(scene);
+  o.Mapper = vtkSmartPointer<vtkVisibilitySweepVolumeMapper>::New();
+  ConfigureMapper(o.Mapper, scene);
+  o.Volume = vtkSmartPointer<vtkVolume>::New();
+  o.Volume->SetMapper(o.Mapper);
+  o.Volume->SetProperty(o.Property);
+  // The render kernel's compile (0.7-0.9 s on lavapipe) on the other core while this one reads the
+  // voxels (issue 39: ch2better's first frame waited for it after the read and the upload).
+  const VolumeHeaderSeen precompile = [&o](const VolumeHeader& h) {
+    vtkNew<vtkImageData> shape;
+    shape->SetExtent(const_cast<int*>(h.Extent));
+    shape->SetSpacing(h.Spacing);
+    shape->SetOrigin(h.Origin);
+    double range[2] = { 0.0, -1.0 };
+    if (h.ScalarType == VTK_UNSIGNED_CHAR || h.ScalarType == VTK_SIGNED_CHAR || h.ScalarType == VTK_CHAR)
+    {
+      range[0] = vtkDataArray::GetDataTypeMin(h.ScalarType);
+      range[1] = vtkDataArray::GetDataTypeMax(h.ScalarType);
+    }
+    else if (o.Property->GetScalarOpacity())
+    {
+      o.Property->GetScalarOpacity()->GetRange(range); // the scalars' range is not known before reading
+    }
+    o.Mapper->PrecompileRenderKernel(o.Volume, shape, h.ScalarType, range[0], range[1]);
+  };
   try
   {
     o.Image = scene.Volume.Files.empty()
-      ? ReadVolume(scene.Volume.File, scene.Volume.Grid, vtkIdType(1) << 31, VolumeFits)
+      ? ReadVolume(scene.Volume.File, scene.Volume.Grid, vtkIdType(1) << 31, VolumeFits, precompile)
       : ReadVolumeSequence(scene.Volume.Files, scene.Volume.Grid, scene.Volume.TimeStep);
   }
   catch (const std::exception& e)
@@ -320,17 +348,9 @@ SceneObjects BuildScene(const Scene& scene, bool openGLWindow)
     throw std::runtime_error("volume: the scalars have " + std::to_string(scalars->GetNumberOfComponents()) +
       " components (expected 1)");
   }
-  o.Property = MakeVolumeProperty(scene);
   o.Environment = MakeEnvironment(scene);
-
-  o.Mapper = vtkSmartPointer<vtkVisibilitySweepVolumeMapper>::New();
   o.Mapper->SetInputData(o.Image);
   o.Mapper->SetEnvironmentConnection(o.Environment->GetOutputPort());
-  ConfigureMapper(o.Mapper, scene);
-
-  o.Volume = vtkSmartPointer<vtkVolume>::New();
-  o.Volume->SetMapper(o.Mapper);
-  o.Volume->SetProperty(o.Property);
 
   o.Renderer = vtkSmartPointer<vtkRenderer>::New();
   const auto& bg = scene.Environment.Background;

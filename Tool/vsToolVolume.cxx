@@ -318,8 +318,8 @@ vtkStandardNewMacro(CheckedNrrdReader);
 
 /* Runs a vtkImageReader2 (NIfTI, MetaImage, NRRD): the header first, the size it claims checked
  * against `maxPoints` before anything is allocated, then the data. */
-vtkSmartPointer<vtkImageData> RunImageReader(
-  vtkImageReader2* reader, const std::string& path, vtkIdType maxPoints, const VolumeSizeCheck& check)
+vtkSmartPointer<vtkImageData> RunImageReader(vtkImageReader2* reader, const std::string& path, vtkIdType maxPoints,
+  const VolumeSizeCheck& check, const VolumeHeaderSeen& seen)
 {
   const std::string what = Quote(path);
   const bool metaImage = reader->IsA("vtkMetaImageReader");
@@ -365,6 +365,16 @@ vtkSmartPointer<vtkImageData> RunImageReader(
     {
       Fail(what, problem);
     }
+  }
+  if (seen)
+  {
+    VolumeHeader header;
+    vtkInformation* info = reader->GetOutputInformation(0);
+    std::copy(extent, extent + 6, header.Extent);
+    info->Get(vtkDataObject::SPACING(), header.Spacing);
+    info->Get(vtkDataObject::ORIGIN(), header.Origin);
+    header.ScalarType = reader->GetDataScalarType();
+    seen(header);
   }
   try
   {
@@ -489,8 +499,8 @@ vtkSmartPointer<vtkImageData> ReadVolume(const std::string& path, const std::str
   return ReadVolume(path, grid, maxPoints, VolumeSizeCheck());
 }
 
-vtkSmartPointer<vtkImageData> ReadVolume(
-  const std::string& path, const std::string& grid, vtkIdType maxPoints, const VolumeSizeCheck& check)
+vtkSmartPointer<vtkImageData> ReadVolume(const std::string& path, const std::string& grid, vtkIdType maxPoints,
+  const VolumeSizeCheck& check, const VolumeHeaderSeen& seen)
 {
   auto checked = [&](vtkSmartPointer<vtkImageData> image) {
     if (check && image)
@@ -531,17 +541,17 @@ vtkSmartPointer<vtkImageData> ReadVolume(
   {
     CheckMetaImageDataFile(path);
     vtkNew<vtkMetaImageReader> r;
-    return RunImageReader(r.Get(), path, maxPoints, check);
+    return RunImageReader(r.Get(), path, maxPoints, check, seen);
   }
   if (EndsWith(path, ".nrrd") || EndsWith(path, ".nhdr"))
   {
     vtkNew<CheckedNrrdReader> r;
-    return RunImageReader(r.Get(), path, maxPoints, check);
+    return RunImageReader(r.Get(), path, maxPoints, check, seen);
   }
   if (EndsWith(path, ".nii") || EndsWith(path, ".nii.gz"))
   {
     vtkNew<vtkNIFTIImageReader> r;
-    return RunImageReader(r.Get(), path, maxPoints, check);
+    return RunImageReader(r.Get(), path, maxPoints, check, seen);
   }
   if (EndsWith(path, ".vdb"))
   {

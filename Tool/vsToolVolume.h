@@ -30,10 +30,23 @@ vtkSmartPointer<vtkImageData> ReadVolume(const std::string& path, const std::str
  *  a header of 1200^3 floats made VTK's reader allocate 6.9 GB before the device refused it). */
 using VolumeSizeCheck = std::function<std::string(const std::array<int, 3>& dims)>;
 
+/** What a volume file's header tells before its voxels are read. */
+struct VolumeHeader
+{
+  int Extent[6];
+  double Spacing[3];
+  double Origin[3];
+  int ScalarType; // VTK_UNSIGNED_CHAR, ...
+};
+/** Called with the header once it has passed the checks, before the voxels are read (the render
+ *  command starts compiling its kernel then: vtkVisibilitySweepVolumeMapper::PrecompileRenderKernel). */
+using VolumeHeaderSeen = std::function<void(const VolumeHeader& header)>;
+
 /** ReadVolume with `check` run on the header's dimensions before any data is read (NIfTI,
- *  MetaImage, NRRD, .vdb); other formats are checked after reading. */
-vtkSmartPointer<vtkImageData> ReadVolume(
-  const std::string& path, const std::string& grid, vtkIdType maxPoints, const VolumeSizeCheck& check);
+ *  MetaImage, NRRD, .vdb); other formats are checked after reading. `seen`, when given, is told the
+ *  header of NIfTI, MetaImage and NRRD files before their voxels are read. */
+vtkSmartPointer<vtkImageData> ReadVolume(const std::string& path, const std::string& grid, vtkIdType maxPoints,
+  const VolumeSizeCheck& check, const VolumeHeaderSeen& seen = VolumeHeaderSeen());
 
 /** Reads time step `step` of a .vdb sequence (one file per step, a fixed extent for all steps). */
 vtkSmartPointer<vtkImageData> ReadVolumeSequence(

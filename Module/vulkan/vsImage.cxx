@@ -177,8 +177,15 @@ Image3D::Image3D(std::shared_ptr<Context> context, uint32_t width, uint32_t heig
     throw;
   }
   device.bindImageMemory(this->Image_, this->Memory_, 0);
-  AdviseHugePages(*this->Context_, this->Memory_, requirements.size,
-    uint32_t(this->Context_->FindMemoryType(requirements.memoryTypeBits, vk::MemoryPropertyFlagBits::eDeviceLocal)));
+  this->MemoryBytes_ = requirements.size;
+  const int type = this->Context_->FindMemoryType(requirements.memoryTypeBits, vk::MemoryPropertyFlagBits::eDeviceLocal);
+  AdviseHugePages(*this->Context_, this->Memory_, requirements.size, uint32_t(type));
+  // The memory the allocation took (AllocateMemory: the first device-local type) is the host's own
+  // on a CPU device: MapHostMemory lets the upload fault it in on the host's threads.
+  const auto memoryProps = this->Context_->Physical().getMemoryProperties();
+  this->HostMemoryType_ = type >= 0 && uint32_t(type) < memoryProps.memoryTypeCount &&
+    (memoryProps.memoryTypes[uint32_t(type)].propertyFlags & vk::MemoryPropertyFlagBits::eHostVisible) &&
+    this->Context_->Physical().getProperties().deviceType == vk::PhysicalDeviceType::eCpu;
   vk::ImageViewCreateInfo vci;
   vci.image = this->Image_;
   vci.viewType = vk::ImageViewType::e3D;
@@ -213,6 +220,38 @@ Image3D::~Image3D()
 uint64_t Image3D::Bytes() const
 {
   return uint64_t(this->Extent_[0]) * this->Extent_[1] * this->Extent_[2] * TexelBytes(this->Format_);
+}
+
+Image3D::HostMemory Image3D::MapHostMemory()
+{
+  HostMemory m;
+  if (this->HostMemoryType_)
+  {
+    try
+    {
+      m.Data = static_cast<char*>(this->Context_->Device().mapMemory(this->Memory_, 0, VK_WHOLE_SIZE));
+      m.Bytes = this->MemoryBytes_;
+    }
+    catch (const vk::SystemError&)
+    {
+      m = HostMemory(); // only a speed-up: the upload goes on without it
+    }
+  }
+  return m;
+}
+
+void Image3D::UnmapHostMemory()
+{
+  this->Context_->Device().unmapMemory(this->Memory_);
+}
+
+void Image3D::PrefaultPages(char* data, uint64_t bytes)
+{
+  constexpr uint64_t page = 4096;
+  for (uint64_t i = 0; i < bytes; i += page)
+  {
+    reinterpret_cast<volatile char*>(data)[i] = 0;
+  }
 }
 
 void Image3D::UploadSlices(const void* data, uint32_t z0, uint32_t count)

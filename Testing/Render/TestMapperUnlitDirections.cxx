@@ -8,7 +8,9 @@
 //  - lighting the ground, or switching to the Visibility strategy (which samples by visibility
 //    alone), sweeps exactly the directions skipped before, and nothing else;
 //  - lazy updates after new data sweep k lit directions;
-//  - a black environment sweeps nothing and renders black, without an error.
+//  - a black environment sweeps nothing and renders black, without an error;
+//  - a release keeps the grid, completed, on the host (ReleaseKeepsVisibilityGrid) or, turned off,
+//    sweeps and keeps nothing (issue 39: `vissweep render` spent up to a second on it at exit).
 #include "vtkVisibilitySweepVolumeMapper.h"
 #include "vsRenderTestUtilities.h"
 
@@ -212,6 +214,29 @@ void TestBlackEnvironment()
     black = black && x == 0.0f;
   Check(black, "a black environment renders black");
 }
+
+void TestReleaseKeepsGrid()
+{
+  for (const bool keep : { true, false })
+  {
+    Scene s(true);
+    s.Mapper->SetReleaseKeepsVisibilityGrid(keep);
+    s.Render(keep ? "keep" : "drop");
+    const int unlit = s.Unlit(), before = s.Mapper->GetDirectionsUpdatedTotal();
+    s.Mapper->ReleaseGraphicsResources(s.Window);
+    if (keep)
+    {
+      Check(s.Mapper->GetDirectionsUpdatedTotal() == before + unlit, "a release that keeps the grid completes it");
+      Check(s.Mapper->GetVisibilityGrid() != nullptr, "the grid stays on the host after the release");
+    }
+    else
+    {
+      Check(s.Mapper->GetDirectionsUpdatedTotal() == before, "ReleaseKeepsVisibilityGridOff: no sweeps at the release");
+      Check(s.Mapper->GetVisibilityGrid() == nullptr, "ReleaseKeepsVisibilityGridOff: no grid after the release");
+    }
+    s.Render(keep ? "keep: after the release" : "drop: after the release");
+  }
+}
 }
 
 int TestMapperUnlitDirections(int, char*[])
@@ -220,5 +245,6 @@ int TestMapperUnlitDirections(int, char*[])
   TestEnvironmentAndStrategyChanges();
   TestLazyUpdatesSweepLitDirections();
   TestBlackEnvironment();
+  TestReleaseKeepsGrid();
   return vstest::ExitCode();
 }
