@@ -3,10 +3,11 @@
 and sunrise sky): VisSweep's Monte Carlo mode volumetric (ShadeOff), blended (ShadeOn,
 VolumetricScatteringBlending 1) and surface (ShadeOn, blending 0), each beside VTK's
 vtkGPUVolumeRayCastMapper with shading on (the same property; VTK's headlight), on black
-(docs/gallery/shading_sheet.png, docs/benchmarks.md). From the repository's root:
+(docs/gallery/shading_sheet.png, docs/benchmarks.md). Each tile's label stands in a strip below it. From the
+repository's root:
 
     PYTHONPATH=build xvfb-run -a /usr/bin/python3 Benchmarks/contact_sheet_shading.py \\
-        --output docs/gallery/shading_sheet.png --size 144 --spp 64
+        --output docs/gallery/shading_sheet.png --size 160 --spp 128
 """
 import argparse
 import os
@@ -38,19 +39,53 @@ def volume_property(shade):
     return prop
 
 
+def grab_window(win, width, height):
+    """The window's rgb as drawn, top row first."""
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(win)
+    grab.ShouldRerenderOff()
+    grab.Update()
+    img = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(height, width, -1)[:, :, :3]
+    return img[::-1]
+
+
+LABEL_HEIGHT = 30  # two lines of 11-point text
+_label_window = {}  # one window for every label, kept open (a window per label made xvfb's server reset)
+
+
+def label_strip(label, width):
+    """`label` (one or two lines) in white on black, a strip `width` wide under a tile: the label never
+    covers the volume and never runs past the tile's edge (the lines are short enough for 144 pixels and more)."""
+    if not _label_window:
+        ren = vtk.vtkRenderer()
+        ren.SetBackground(0, 0, 0)
+        text = vtk.vtkTextActor()
+        text.GetTextProperty().SetFontSize(11)
+        text.GetTextProperty().SetColor(1, 1, 1)
+        text.GetTextProperty().SetJustificationToCentered()
+        text.GetTextProperty().SetVerticalJustificationToCentered()
+        ren.AddActor2D(text)
+        win = vtk.vtkRenderWindow()
+        win.SetOffScreenRendering(1)
+        win.SetMultiSamples(0)
+        win.AddRenderer(ren)
+        _label_window.update(text=text, win=win)
+    text, win = _label_window["text"], _label_window["win"]
+    text.SetInput(label)
+    text.SetPosition(width / 2.0, LABEL_HEIGHT / 2.0)
+    win.SetSize(width, LABEL_HEIGHT)
+    win.Render()
+    return grab_window(win, width, LABEL_HEIGHT)
+
+
 def render(reader, mapper, shade, size, label):
+    """The tile: the volume rendered at size x size, its label in a strip below it."""
     volume = vtk.vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(volume_property(shade))
     ren = vtk.vtkRenderer()
     ren.AddVolume(volume)
     ren.SetBackground(0, 0, 0)
-    text = vtk.vtkTextActor()
-    text.SetInput(label)
-    text.GetTextProperty().SetFontSize(11)
-    text.GetTextProperty().SetColor(1, 1, 1)
-    text.SetPosition(3, 3)
-    ren.AddActor2D(text)
     win = vtk.vtkRenderWindow()
     win.SetOffScreenRendering(1)
     win.SetMultiSamples(0)
@@ -71,13 +106,8 @@ def render(reader, mapper, shade, size, label):
     else:
         win.Render()
         what = "one render"
-    print("%-40s %s in %.1f s" % (label, what, time.perf_counter() - t), flush=True)
-    grab = vtk.vtkWindowToImageFilter()
-    grab.SetInput(win)
-    grab.ShouldRerenderOff()
-    grab.Update()
-    img = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(size, size, -1)[:, :, :3]
-    return img[::-1]  # top row first
+    print("%-40s %s in %.1f s" % (label.replace("\n", " "), what, time.perf_counter() - t), flush=True)
+    return np.concatenate([grab_window(win, size, size), label_strip(label, size)], axis=0)
 
 
 def main():
@@ -97,10 +127,11 @@ def main():
 
     gpu = vtk.vtkGPUVolumeRayCastMapper()
     gpu.SetInputConnection(reader.GetOutputPort())
-    theirs = render(reader, gpu, True, args.size, "VTK GPU ray cast, ShadeOn")
+    theirs = render(reader, gpu, True, args.size, "VTK GPU ray cast\n(ShadeOn)")
     rows = []
-    for label, shade, blending in (("volumetric (ShadeOff)", False, 0.0), ("blended (blending 1)", True, 1.0),
-                                   ("surface (blending 0)", True, 0.0)):
+    for label, shade, blending in (("volumetric\n(ShadeOff)", False, 0.0),
+                                   ("blended\n(ShadeOn, blending 1)", True, 1.0),
+                                   ("surface\n(ShadeOn, blending 0)", True, 0.0)):
         mapper = vissweep.vtkVisibilitySweepVolumeMapper()
         mapper.SetInputConnection(reader.GetOutputPort())
         mapper.SetEnvironmentConnection(sky.GetOutputPort())

@@ -7,31 +7,31 @@ so that a loaded machine slows them alike; a round's first frame builds the ligh
 lights changed (reported apart). Prints the median wall time of Render() per configuration.
 
     PYTHONPATH=build LP_NUM_THREADS=2 xvfb-run -a /usr/bin/python3 Benchmarks/preview_lights_frames.py
+
+(--size and --rounds make a quick check of the script itself: the figures are at the defaults.)
 """
+import argparse
 import os
 import statistics
+import sys
 import time
 
 import vtk
 import vissweep
 
+ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+ap.add_argument("--size", type=int, default=512, help="window width and height (default 512)")
+ap.add_argument("--rounds", type=int, default=6, help="rounds of 1 + 3 frames per configuration (default 6)")
+args = ap.parse_args()
 root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+sys.path.insert(0, os.path.join(root, "Examples", "Python"))
+from render_brain import brain_property  # noqa: E402  the README's transfer function, written once there
+
 reader = vtk.vtkNIFTIImageReader()
 reader.SetFileName("/usr/share/mricron/templates/ch2.nii.gz")
 env = vissweep.vtkEnvironmentMapReader()
 env.SetFileName(os.path.join(root, "Data", "envmaps", "sunrise.exr"))
-prop = vtk.vtkVolumeProperty()
-opacity = vtk.vtkPiecewiseFunction()
-for s, a in ((0, 0.0), (40, 0.0), (90, 0.05), (255, 0.3)):
-    opacity.AddPoint(s, a)
-color = vtk.vtkColorTransferFunction()
-color.AddRGBPoint(0, 0, 0, 0)
-color.AddRGBPoint(90, 0.9, 0.6, 0.5)
-color.AddRGBPoint(255, 1.0, 1.0, 0.9)
-prop.SetScalarOpacity(opacity)
-prop.SetColor(color)
-prop.SetInterpolationTypeToLinear()
-prop.SetScalarOpacityUnitDistance(1.0)
+prop = brain_property()
 mapper = vissweep.vtkVisibilitySweepVolumeMapper()
 mapper.SetInputConnection(reader.GetOutputPort())
 mapper.SetEnvironmentConnection(env.GetOutputPort())
@@ -42,7 +42,7 @@ ren = vtk.vtkRenderer()
 ren.AddVolume(volume)
 win = vtk.vtkRenderWindow()
 win.SetOffScreenRendering(1)
-win.SetSize(512, 512)
+win.SetSize(args.size, args.size)
 win.AddRenderer(ren)
 camera = ren.GetActiveCamera()
 camera.SetPosition(0, 1, 0)
@@ -70,7 +70,7 @@ win.SetDesiredUpdateRate(15.0)
 for c in configs:  # warm: pipelines
     setup(c)
     win.Render()
-for rnd in range(6):
+for rnd in range(args.rounds):
     for c in configs:
         setup(c)
         camera.Azimuth(2.0)

@@ -1,13 +1,9 @@
 #include "vsBenchDenoise.h"
 #include "vsBenchOutput.h"
-#include "vsSceneBuild.h"
-#include "vsSceneFile.h"
+#include "vsBenchScene.h"
 #include "vsToolCommand.h"
 
 #include "vtkCamera.h"
-#include "vtkDataArray.h"
-#include "vtkImageData.h"
-#include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkVisibilitySweepVolumeMapper.h"
@@ -41,31 +37,6 @@ struct DenoiseOptions
 
 using Clock = std::chrono::steady_clock;
 
-double SecondsSince(Clock::time_point start)
-{
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// rgb per pixel of an image's "Radiance" (and, with `variance`, the "Variance" array's rgb).
-std::vector<double> Rgb(vtkImageData* image, const char* array = "Radiance")
-{
-  std::vector<double> out;
-  vtkDataArray* a = image ? image->GetPointData()->GetArray(array) : nullptr;
-  if (!a)
-  {
-    return out;
-  }
-  out.reserve(size_t(a->GetNumberOfTuples()) * 3);
-  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      out.push_back(a->GetComponent(i, c));
-    }
-  }
-  return out;
-}
-
 double SquaredError(const std::vector<double>& x, const std::vector<double>& ref)
 {
   if (x.size() != ref.size() || ref.empty())
@@ -78,15 +49,6 @@ double SquaredError(const std::vector<double>& x, const std::vector<double>& ref
     e += (x[i] - ref[i]) * (x[i] - ref[i]);
   }
   return e;
-}
-
-void Check(vtkVisibilitySweepVolumeMapper* mapper)
-{
-  const char* error = mapper->GetLastError();
-  if (error && *error)
-  {
-    throw std::runtime_error(std::string("render failed: ") + error);
-  }
 }
 
 struct Variant
@@ -107,12 +69,8 @@ struct Point
 int Run(const DenoiseOptions& o)
 {
   CheckBenchOutputs({ { "--json", o.Json } });
-  Scene scene = ReadSceneFile(o.SceneFile);
-  scene.Render.Width = scene.Render.Height = o.Size;
-  // The volume's own radiance, as bench preview: the environment seen beside the volume is exact in every
-  // image and would dilute the norm.
-  scene.Environment.VisibleBackground = false;
-  SceneObjects objects = BuildScene(scene);
+  Scene scene;
+  SceneObjects objects = BuildRadianceScene(o.SceneFile, o.Size, scene);
   vtkVisibilitySweepVolumeMapper* mapper = objects.Mapper;
   vtkRenderWindow* win = objects.Window;
   vtkCamera* camera = objects.Renderer->GetActiveCamera();
@@ -129,14 +87,14 @@ int Run(const DenoiseOptions& o)
   camera->Azimuth(3.0);
   win->SetDesiredUpdateRate(dragging);
   win->Render();
-  Check(mapper);
+  CheckRender(mapper);
   win->SetDesiredUpdateRate(still);
   mapper->DisplayDenoiseOn();
   mapper->SetSamplesPerFrame(2);
   for (int i = 0; i < 6; ++i)
   {
     win->Render();
-    Check(mapper);
+    CheckRender(mapper);
   }
   mapper->DisplayDenoiseOff();
   camera->Azimuth(-3.0);
@@ -148,10 +106,10 @@ int Run(const DenoiseOptions& o)
   do
   {
     win->Render();
-    Check(mapper);
+    CheckRender(mapper);
   } while (mapper->GetAccumulatedSamples() < o.ReferenceSpp);
-  const std::vector<double> reference = Rgb(mapper->GetRadiance());
-  const std::vector<double> referenceVariance = Rgb(mapper->GetRadiance(true), "Variance");
+  const std::vector<double> reference = ImageRgb(mapper->GetRadiance());
+  const std::vector<double> referenceVariance = ImageRgb(mapper->GetRadiance(true), "Variance");
   const int referenceSpp = mapper->GetAccumulatedSamples();
   double norm = 0.0, referenceNoise = 0.0;
   for (size_t i = 0; i < reference.size(); ++i)
@@ -186,12 +144,12 @@ int Run(const DenoiseOptions& o)
     camera->Azimuth(3.0);
     win->SetDesiredUpdateRate(v.HandOver ? dragging : still);
     win->Render();
-    Check(mapper);
+    CheckRender(mapper);
     camera->Azimuth(-3.0);
     if (v.HandOver)
     {
       win->Render(); // the drag's last frame: the preview of the measured view
-      Check(mapper);
+      CheckRender(mapper);
       win->SetDesiredUpdateRate(still);
     }
     std::vector<Point> points;
@@ -200,7 +158,7 @@ int Run(const DenoiseOptions& o)
     while (next < times.size())
     {
       win->Render();
-      Check(mapper);
+      CheckRender(mapper);
       const double t = SecondsSince(t0);
       while (next < times.size() && t >= times[next])
       {
@@ -209,7 +167,7 @@ int Run(const DenoiseOptions& o)
         p.Spp = mapper->GetAccumulatedSamples();
         p.Share = mapper->GetLastPreviewShare();
         p.Denoised = mapper->GetLastDisplayDenoised();
-        p.Error = (SquaredError(Rgb(mapper->GetDisplayedRadiance()), reference) - referenceNoise) / norm;
+        p.Error = (SquaredError(ImageRgb(mapper->GetDisplayedRadiance()), reference) - referenceNoise) / norm;
         points.push_back(p);
         ++next;
       }

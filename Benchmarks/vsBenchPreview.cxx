@@ -1,7 +1,6 @@
 #include "vsBenchPreview.h"
 #include "vsBenchOutput.h"
-#include "vsSceneBuild.h"
-#include "vsSceneFile.h"
+#include "vsBenchScene.h"
 #include "vsToolCommand.h"
 
 #include "vtkCamera.h"
@@ -47,30 +46,10 @@ struct PreviewOptions
   std::string Json, ContactSheet, Plot;
 };
 
-double SecondsSince(std::chrono::steady_clock::time_point start)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // The volume's radiance of the last render (rgb per pixel), empty without one.
 std::vector<double> Radiance(vtkVisibilitySweepVolumeMapper* mapper)
 {
-  std::vector<double> out;
-  vtkImageData* image = mapper->GetRadiance();
-  vtkDataArray* a = image ? image->GetPointData()->GetArray("Radiance") : nullptr;
-  if (!a)
-  {
-    return out;
-  }
-  out.reserve(size_t(a->GetNumberOfTuples()) * 3);
-  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      out.push_back(a->GetComponent(i, c));
-    }
-  }
-  return out;
+  return ImageRgb(mapper->GetRadiance());
 }
 
 // sum (x - ref)^2 / sum ref^2 over the pixels' rgb; NaN when they do not compare.
@@ -135,15 +114,6 @@ void WriteContactSheet(const std::string& path, const std::vector<std::vector<un
   }
 }
 
-void CheckRender(vtkVisibilitySweepVolumeMapper* mapper)
-{
-  const char* error = mapper->GetLastError();
-  if (error && *error)
-  {
-    throw std::runtime_error(std::string("render failed: ") + error);
-  }
-}
-
 struct Row
 {
   std::string Mode;
@@ -156,12 +126,8 @@ struct Row
 int Run(const PreviewOptions& o)
 {
   CheckBenchOutputs({ { "--json", o.Json }, { "--contact-sheet", o.ContactSheet }, { "--plot", o.Plot } });
-  Scene scene = ReadSceneFile(o.SceneFile);
-  scene.Render.Width = scene.Render.Height = o.Size;
-  // The volume's own radiance: the environment seen through it is exact in the preview and estimated in
-  // Monte Carlo, and would dominate the norm.
-  scene.Environment.VisibleBackground = false;
-  SceneObjects objects = BuildScene(scene);
+  Scene scene;
+  SceneObjects objects = BuildRadianceScene(o.SceneFile, o.Size, scene);
   vtkVisibilitySweepVolumeMapper* mapper = objects.Mapper;
   mapper->SetSampleDistance(o.SampleDistance);
   vtkCamera* camera = objects.Renderer->GetActiveCamera();

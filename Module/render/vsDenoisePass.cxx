@@ -123,25 +123,24 @@ std::vector<float> DenoisePass::Filter(const std::vector<float>& estimate, const
   p.priorScale = float(1.0 / (n * tau * tau));
   const uint32_t gx = (width + 7) / 8, gy = (height + 7) / 8;
   Batch batch(this->Context_);
+  // The separable box filter of the first `planes` planes: along x through `alongX`, then along y through
+  // `alongY` (which reads what the first wrote), each followed by a barrier.
+  auto box = [&](uint32_t planes, const DescriptorSet& alongX, const DescriptorSet& alongY) {
+    p.planes = planes;
+    p.axis = 0;
+    batch.Dispatch(*stages[1], alongX, &p, sizeof(p), gx, gy);
+    batch.Barrier();
+    p.axis = 1;
+    batch.Dispatch(*stages[1], alongY, &p, sizeof(p), gx, gy);
+    batch.Barrier();
+  };
   batch.BeginTimer("denoise");
   batch.Dispatch(*stages[0], *momentsSet, &p, sizeof(p), gx, gy); // moments -> X
   batch.Barrier();
-  p.planes = shared::VS_DENOISE_MOMENT_PLANES;
-  p.axis = 0;
-  batch.Dispatch(*stages[1], *boxXY, &p, sizeof(p), gx, gy); // X -> Y along x
-  batch.Barrier();
-  p.axis = 1;
-  batch.Dispatch(*stages[1], *boxYX, &p, sizeof(p), gx, gy); // Y -> X along y: the window means
-  batch.Barrier();
+  box(shared::VS_DENOISE_MOMENT_PLANES, *boxXY, *boxYX); // X -> Y -> X: the window means
   batch.Dispatch(*stages[2], *coefficientsSet, &p, sizeof(p), gx, gy); // X -> (a, b) in Y
   batch.Barrier();
-  p.planes = shared::VS_DENOISE_COEFFICIENT_PLANES;
-  p.axis = 0;
-  batch.Dispatch(*stages[1], *boxYX, &p, sizeof(p), gx, gy); // Y -> X along x
-  batch.Barrier();
-  p.axis = 1;
-  batch.Dispatch(*stages[1], *boxXY, &p, sizeof(p), gx, gy); // X -> Y along y: the coefficients' means
-  batch.Barrier();
+  box(shared::VS_DENOISE_COEFFICIENT_PLANES, *boxYX, *boxXY); // Y -> X -> Y: the coefficients' means
   batch.Dispatch(*stages[3], *outputSet, &p, sizeof(p), gx, gy); // a g + b -> output
   batch.EndTimer();
   batch.Submit();

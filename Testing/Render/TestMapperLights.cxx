@@ -4,67 +4,34 @@
 //  - a vtkLight added (a key light) changes the image; switched off, the image is that without it, bit
 //    for bit; moved, the accumulation restarts;
 //  - a headlight the user set up (intensity 1.5) lights the volume.
-#include "vsRenderTestUtilities.h"
-#include "vtkVisibilitySweepVolumeMapper.h"
+#include "vsLitBallScene.h"
 
-#include "vtkColorTransferFunction.h"
-#include "vtkDataArray.h"
-#include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
-#include "vtkPiecewiseFunction.h"
-#include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkVolume.h"
-#include "vtkVolumeProperty.h"
 
-#include <cmath>
 #include <iostream>
 #include <string>
 #include <vector>
 
 using vstest::Check;
+using vstest::Mean;
 
 namespace
 {
-constexpr int kSize = 32;
 constexpr int kSamples = 8;
 
-struct Scene
+// The lit ball in the Monte Carlo mode (the environment strategy), with or without VTK's automatic light.
+struct Scene : vstest::LitBallScene
 {
-  vtkNew<vtkVisibilitySweepVolumeMapper> Mapper;
-  vtkNew<vtkVolume> Volume;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkPiecewiseFunction> Opacity;
-  vtkNew<vtkColorTransferFunction> Color;
-  vtkNew<vtkVolumeProperty> Property;
-
   explicit Scene(bool automaticLight)
   {
-    this->Mapper->SetInputData(vstest::Ball(24));
     this->Mapper->SetMaximumSamples(kSamples);
     this->Mapper->SetSamplesPerFrame(kSamples);
     this->Mapper->SetSamplingStrategyToEnvironment();
-    this->Mapper->SetMaximumScatteringEvents(4);
-    this->Mapper->EnvironmentVisibleOff(); // the images' means are the volume's (lit by the sky still)
-    this->Opacity->AddPoint(0.0, 0.0);
-    this->Opacity->AddPoint(1.0, 0.6);
-    this->Color->AddRGBPoint(0.0, 0.8, 0.8, 0.8);
-    this->Color->AddRGBPoint(1.0, 0.8, 0.8, 0.8);
-    this->Property->SetScalarOpacity(this->Opacity);
-    this->Property->SetColor(this->Color);
-    this->Property->SetInterpolationTypeToLinear();
-    this->Volume->SetMapper(this->Mapper);
-    this->Volume->SetProperty(this->Property);
-    this->Renderer->AddVolume(this->Volume);
     this->Renderer->SetAutomaticLightCreation(automaticLight);
-    this->Window->SetMultiSamples(0);
-    this->Window->SetSize(kSize, kSize);
-    this->Window->AddRenderer(this->Renderer);
-    this->Renderer->ResetCamera();
   }
 
   // Renders until converged; the radiance's rgb.
@@ -73,23 +40,9 @@ struct Scene
     for (int i = 0; i < 4 && !this->Mapper->IsConverged(); ++i)
       this->Window->Render();
     this->Window->Render();
-    std::vector<float> out;
-    vtkImageData* r = this->Mapper->GetRadiance();
-    vtkDataArray* a = r ? r->GetPointData()->GetArray("Radiance") : nullptr;
-    for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
-      for (int c = 0; c < 3; ++c)
-        out.push_back(float(a->GetComponent(i, c)));
-    return out;
+    return this->LastRadiance();
   }
 };
-
-double Mean(const std::vector<float>& v)
-{
-  double s = 0.0;
-  for (float x : v)
-    s += x;
-  return v.empty() ? 0.0 : s / double(v.size());
-}
 }
 
 int TestMapperLights(int, char*[])
@@ -102,13 +55,7 @@ int TestMapperLights(int, char*[])
     "VTK's automatic headlight is no light of the estimate: the image of a renderer without lights, bit for bit");
 
   // A key light: a directional scene light from the side.
-  vtkNew<vtkLight> key;
-  key->SetLightTypeToSceneLight();
-  key->SetPositional(false);
-  key->SetPosition(100.0, 40.0, 60.0);
-  key->SetFocalPoint(12.0, 12.0, 12.0);
-  key->SetIntensity(4.0);
-  key->SetColor(1.0, 0.9, 0.8);
+  vtkSmartPointer<vtkLight> key = vstest::KeyLight();
   none.Renderer->AddLight(key);
   const int resets = none.Mapper->GetAccumulationResetCount();
   const std::vector<float> lit = none.Radiance();

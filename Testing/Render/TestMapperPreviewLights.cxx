@@ -11,8 +11,7 @@
 //    it looks like vtkGPUVolumeRayCastMapper's with ShadeOn (where this VTK has it): a ball under VTK's
 //    automatic headlight, and under a key light alone, within 1 grey level in the mean (the key light's
 //    side brighter in both).
-#include "vsRenderTestUtilities.h"
-#include "vtkVisibilitySweepVolumeMapper.h"
+#include "vsLitBallScene.h"
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -38,58 +37,19 @@
 #include <vector>
 
 using vstest::Check;
+using vstest::Mean;
 
 namespace
 {
-constexpr int kSize = 32;
-
-struct Scene
+// The lit ball in the preview mode.
+struct Scene : vstest::LitBallScene
 {
-  vtkNew<vtkVisibilitySweepVolumeMapper> Mapper;
-  vtkNew<vtkVolume> Volume;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkPiecewiseFunction> Opacity;
-  vtkNew<vtkColorTransferFunction> Color;
-  vtkNew<vtkVolumeProperty> Property;
-
-  Scene()
-  {
-    this->Mapper->SetInputData(vstest::Ball(24));
-    this->Mapper->SetRenderModeToPreview();
-    this->Mapper->SetMaximumScatteringEvents(4);
-    this->Mapper->EnvironmentVisibleOff();
-    this->Opacity->AddPoint(0.0, 0.0);
-    this->Opacity->AddPoint(1.0, 0.6);
-    this->Color->AddRGBPoint(0.0, 0.8, 0.8, 0.8);
-    this->Color->AddRGBPoint(1.0, 0.8, 0.8, 0.8);
-    this->Property->SetScalarOpacity(this->Opacity);
-    this->Property->SetColor(this->Color);
-    this->Property->SetInterpolationTypeToLinear();
-    this->Volume->SetMapper(this->Mapper);
-    this->Volume->SetProperty(this->Property);
-    this->Renderer->AddVolume(this->Volume);
-    this->Window->SetMultiSamples(0);
-    this->Window->SetSize(kSize, kSize);
-    this->Window->AddRenderer(this->Renderer);
-    this->Renderer->ResetCamera();
-  }
-
-  std::vector<float> Radiance()
-  {
-    std::vector<float> out;
-    vtkImageData* r = this->Mapper->GetRadiance();
-    vtkDataArray* a = r ? r->GetPointData()->GetArray("Radiance") : nullptr;
-    for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
-      for (int c = 0; c < 3; ++c)
-        out.push_back(float(a->GetComponent(i, c)));
-    return out;
-  }
+  Scene() { this->Mapper->SetRenderModeToPreview(); }
 
   std::vector<float> Preview()
   {
     this->Window->Render();
-    return this->Radiance();
+    return this->LastRadiance();
   }
 
   // Monte Carlo until converged (samples samples per pixel).
@@ -101,7 +61,7 @@ struct Scene
     for (int i = 0; i < 4 && !this->Mapper->IsConverged(); ++i)
       this->Window->Render();
     this->Window->Render();
-    std::vector<float> out = this->Radiance();
+    std::vector<float> out = this->LastRadiance();
     this->Mapper->SetRenderModeToPreview();
     return out;
   }
@@ -201,13 +161,6 @@ Comparison CompareWithVtk(bool key)
   return c;
 }
 
-double Mean(const std::vector<float>& v)
-{
-  double s = 0.0;
-  for (float x : v)
-    s += x;
-  return v.empty() ? 0.0 : s / double(v.size());
-}
 }
 
 int TestMapperPreviewLights(int, char*[])
@@ -221,13 +174,7 @@ int TestMapperPreviewLights(int, char*[])
   const std::vector<float> unlit = s.Preview();
   const int builds0 = s.Mapper->GetLightVolumeBuildCount();
 
-  vtkNew<vtkLight> key;
-  key->SetLightTypeToSceneLight();
-  key->SetPositional(false);
-  key->SetPosition(100.0, 40.0, 60.0);
-  key->SetFocalPoint(12.0, 12.0, 12.0);
-  key->SetIntensity(4.0);
-  key->SetColor(1.0, 0.9, 0.8);
+  vtkSmartPointer<vtkLight> key = vstest::KeyLight();
   s.Renderer->AddLight(key);
   const std::vector<float> lit = s.Preview();
   std::cout << "preview mean without lights " << Mean(unlit) << ", with a key light " << Mean(lit) << "\n";

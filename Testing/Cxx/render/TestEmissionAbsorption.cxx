@@ -19,12 +19,20 @@ using namespace vs;
 
 namespace
 {
-// An orthographic view along +z (vstest::OrthoAlongZ) of a volume in world = index space.
-shared::VsEmissionAbsorptionParams OrthoAlongZ(uint32_t w, uint32_t h, float lo, float hi, float z0, float z1)
+// An orthographic view along +z (vstest::OrthoAlongZ) of an n^3 volume in world = index space (its box from
+// voxel 0 to n - 1) through `tf`, marched at `step`; rays end at opacity 0.999.
+shared::VsEmissionAbsorptionParams OrthoAlongZ(uint32_t w, uint32_t h, float lo, float hi, float z0, float z1,
+  uint32_t n, const TransferFunctionTable& tf, float step)
 {
   shared::VsEmissionAbsorptionParams p{};
   p.camera = vstest::OrthoAlongZ(w, h, lo, hi, z0, z1);
   p.volume.worldToIndex = glm::mat4(1.0f);
+  p.volume.boxMin = glm::vec3(0.0f);
+  p.volume.boxMax = glm::vec3(float(n - 1));
+  p.volume.dims = glm::vec3(float(n));
+  p.volume.tf = tf.Params();
+  p.step = step;
+  p.terminationOpacity = 0.999f;
   return p;
 }
 }
@@ -46,13 +54,7 @@ TEST(EmissionAbsorption, HomogeneousCubeIsAnalytic)
   TransferFunctionTable tf(ctx, samples);
 
   const uint32_t W = 32, H = 32;
-  auto p = OrthoAlongZ(W, H, -4.0f, 19.0f, -10.0f, 30.0f);
-  p.volume.boxMin = glm::vec3(0.0f);
-  p.volume.boxMax = glm::vec3(float(n - 1));
-  p.volume.dims = glm::vec3(float(n));
-  p.volume.tf = tf.Params();
-  p.step = 0.37f; // a step that does not divide L
-  p.terminationOpacity = 0.999f;
+  auto p = OrthoAlongZ(W, H, -4.0f, 19.0f, -10.0f, 30.0f, n, tf, 0.37f); // a step that does not divide L
 
   EmissionAbsorptionPass pass(ctx);
   std::vector<float> rgba = pass.Render(volume, tf, nullptr, p, {});
@@ -99,13 +101,7 @@ TEST(EmissionAbsorption, EmptySpaceSkippingKeepsTheImage)
     },
     0.1);
   const uint32_t W = 48, H = 48;
-  auto p = OrthoAlongZ(W, H, 0.0f, float(n - 1), -10.0f, 80.0f);
-  p.volume.boxMin = glm::vec3(0.0f);
-  p.volume.boxMax = glm::vec3(float(n - 1));
-  p.volume.dims = glm::vec3(float(n));
-  p.volume.tf = scene.TF->Params();
-  p.step = 0.37f;
-  p.terminationOpacity = 0.999f;
+  auto p = OrthoAlongZ(W, H, 0.0f, float(n - 1), -10.0f, 80.0f, n, *scene.TF, 0.37f);
   ASSERT_GT(scene.Majorants->MaxMajorant(), 0.0f);
   EmissionAbsorptionPass pass(scene.Context);
   const std::vector<float> skipped = pass.Render(*scene.Volume, *scene.TF, scene.Majorants.get(), p, {});
@@ -145,13 +141,7 @@ TEST(EmissionAbsorption, OpaqueDepthStopsRays)
   TransferFunctionTable tf(ctx, TransferFunctionSamples::FromFunctions(0.0f, 1.0f, 16,
     [](double) { return 0.5; }, [](double, double c[3]) { c[0] = c[1] = c[2] = 1.0; }, 1.0, 1.0));
   const uint32_t W = 8, H = 8;
-  auto p = OrthoAlongZ(W, H, 1.0f, 6.0f, -10.0f, 30.0f);
-  p.volume.boxMin = glm::vec3(0.0f);
-  p.volume.boxMax = glm::vec3(float(n - 1));
-  p.volume.dims = glm::vec3(float(n));
-  p.volume.tf = tf.Params();
-  p.step = 0.25f;
-  p.terminationOpacity = 0.999f;
+  auto p = OrthoAlongZ(W, H, 1.0f, 6.0f, -10.0f, 30.0f, n, tf, 0.25f);
   // Opaque surface at world z = 2 (window depth = (z - z0) / (z1 - z0) for this linear projection).
   std::vector<float> depth(W * H, float((2.0 + 10.0) / 40.0));
   EmissionAbsorptionPass pass(ctx);
@@ -200,13 +190,7 @@ TEST(EmissionAbsorption, ShadingFollowsVtkLights)
     [&](double, double c[3]) { c[0] = 0.9, c[1] = 0.6, c[2] = 0.3; }, 1.0, 1.0);
   TransferFunctionTable tf(ctx, samples);
   const uint32_t W = 24, H = 24;
-  auto p = OrthoAlongZ(W, H, 0.0f, 23.0f, -10.0f, 40.0f);
-  p.volume.boxMin = glm::vec3(0.0f);
-  p.volume.boxMax = glm::vec3(float(n - 1));
-  p.volume.dims = glm::vec3(float(n));
-  p.volume.tf = tf.Params();
-  p.step = 0.5f;
-  p.terminationOpacity = 0.999f;
+  auto p = OrthoAlongZ(W, H, 0.0f, 23.0f, -10.0f, 40.0f, n, tf, 0.5f);
   p.ambient = 0.1f;
   p.diffuse = 0.7f;
   p.specular = 0.3f;
