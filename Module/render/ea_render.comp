@@ -33,8 +33,8 @@
  * times the albedo; the light volume's I carries the lights' multiple scattering (vsLightVolume.h).
  * The preview's phase towards the environment (issue 39): with VS_EA_ANISOTROPIC (P.anisotropy != 0 and the light
  * volume's band-1 moment uLightM, vsLightVolume.h) the single scattering of the environment's light is
- * Henyey-Greenstein's up to band 1, (I + 3 g M.d) / (4 pi) clamped at 0 (sampling/phase_moments.h; M trilinear
- * as I); the orders 2 .. K in I stay isotropic. Without it, I / (4 pi) as before (the same code).
+ * Henyey-Greenstein's, exact in bands 0 and 1 (I + 3 g M.d) / (4 pi), the light taken as one HG lobe around M
+ * (sampling/phase_moments.h vs_hg_lobe_light; M trilinear as I); the orders 2 .. K in I stay isotropic. Without it, I / (4 pi) as before (the same code).
  * With VS_EA_SHADE in the preview: the surface lobe of the Monte Carlo kernel (surface_scattering.glsl),
  * the same mixture k(w) = (1 - P_s) albedo f_HG + P_s f_r |n.w| towards each light, and towards the
  * environment (1 - P_s) albedo I / (4 pi) + P_s (k_d albedo + k_s) I / (4 pi): the light volume's I / (4 pi)
@@ -237,19 +237,19 @@ vec3 moment_at(int a)
 }
 
 /* The light volume's I at index-space point x for a camera ray along d, over 4 pi: isotropic (I / 4 pi), or with
- * VS_EA_ANISOTROPIC the phase's band 1 added (phase_moments.h). iso: the isotropic I / (4 pi). */
+ * VS_EA_ANISOTROPIC Henyey-Greenstein's from I and M (phase_moments.h). iso: the isotropic I / (4 pi). */
 vec3 in_scattered(vec3 x, vec3 d, out vec3 iso)
 {
   vec3 I = light_at(x).rgb;
   iso = I * (1.0 / (4.0 * VS_PI));
   if (VS_EA_ANISOTROPIC == 0u)
     return iso;
-  return vs_hg_band1_light(I, moment_at(0), moment_at(1), moment_at(2), d, P.anisotropy) * (1.0 / (4.0 * VS_PI));
+  return vs_hg_lobe_light(I, moment_at(0), moment_at(1), moment_at(2), d, P.anisotropy) * (1.0 / (4.0 * VS_PI));
 }
 
 /* The preview's radiance towards the camera per unit collision at index-space point x (issue 38): the
  * sample's albedo, extinction sigma, the camera ray's world direction d, and I / (4 pi) of the light
- * volume there (light_at just read; phased: with the phase's band 1, in_scattered). Without lights and the lobe:
+ * volume there (light_at just read; phased: with the phase towards the environment, in_scattered). Without lights and the lobe:
  * albedo I / (4 pi), as before. The lobe's surface share reflects the isotropic I / (4 pi), as before. */
 vec3 preview_radiance(vec3 x, vec3 albedo, float sigma, vec3 d, vec3 inScattered, vec3 phased, ivec3 dims)
 {

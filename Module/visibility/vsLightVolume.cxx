@@ -208,7 +208,7 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
   }
   // The band-1 moment depends on whether the phase is anisotropic, not on g's value (vsLightVolume.h).
   s.Moment = scattering.Anisotropy != 0.0f;
-  if (this->Image_ && s == this->Built_)
+  if (this->Image_ && s.ServedBy(this->Built_))
   {
     return false;
   }

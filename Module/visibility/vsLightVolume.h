@@ -39,7 +39,8 @@
 // at z + a cells.z, rgb per channel), from which the preview's single scattering of the environment's light
 // is Henyey-Greenstein's up to band 1 (sampling/phase_moments.h): (I + 3 g M.d) / (4 pi), d the camera ray.
 // M does not depend on g's value, only on whether it is needed: a change from g = 0 to g != 0 builds again
-// (to make M), from one g != 0 to another does not, and a camera move never does. The orders 2 .. Events
+// (to make M) unless M is there, from one g != 0 to another or back to 0 does not (M is kept, unread at
+// g = 0), and a camera move never does. The orders 2 .. Events
 // stay isotropic (docs/reference.md: their bias).
 #ifndef vsLightVolume_h
 #define vsLightVolume_h
@@ -122,7 +123,7 @@ public:
   /** The transmittance towards each light of the last build (layout above); nullptr when it had none. */
   const Image3D* Transmittance() const { return this->Built_.Lights != 0 ? this->Transmittance_.get() : nullptr; }
   /** The first order's band-1 moment of the last build (layout above); nullptr when it was built with
-   *  Anisotropy 0. */
+   *  Anisotropy 0 (an Update with Anisotropy 0 keeps one that is there). */
   const Image3D* Moment() const { return this->Built_.Moment ? this->Moment_.get() : nullptr; }
   /** The band-1 moment per cell, as Download() (cells.x x cells.y x 3 cells.z); empty without one. */
   std::vector<float> DownloadMoment() const;
@@ -152,10 +153,12 @@ private:
     uint64_t Scattering = 0; // 0: single scattering; else a hash of MultipleScattering's inputs
     uint64_t Lights = 0;     // 0: no lights; else a hash of the lights and what their march reads
     bool Moment = false;     // the band-1 moment (Anisotropy != 0)
-    bool operator==(const Signature& o) const
+    /** Whether a build of signature `built` serves this one: the same inputs, and the moment if this needs it
+     *  (a build with the moment serves g = 0 too: the preview does not read it there). */
+    bool ServedBy(const Signature& built) const
     {
-      return Grid == o.Grid && Environment == o.Environment && Intensity == o.Intensity &&
-        Scattering == o.Scattering && Lights == o.Lights && Moment == o.Moment;
+      return Grid == built.Grid && Environment == built.Environment && Intensity == built.Intensity &&
+        Scattering == built.Scattering && Lights == built.Lights && (!Moment || built.Moment);
     }
   };
   void Scatter(const VisibilityGrid& grid, const MultipleScattering& scattering, bool lit);
