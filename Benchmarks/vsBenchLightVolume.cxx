@@ -43,6 +43,7 @@ struct LightVolumeOptions
   int Repeats = 7;
   double StepDeg = 15.0;
   std::string Json;
+  double Anisotropy = 0.0; // != 0: also the build with the band-1 moment (issue 39), alternated with g = 0
 };
 
 struct Spread
@@ -101,6 +102,17 @@ int Run(const LightVolumeOptions& o)
   auto env = std::make_unique<vs::DeviceEnvironment>(ctx, *reader->GetEnvironmentMap(), side);
   vs::LightVolume light(ctx);
   light.Update(grid, *env, scene.Environment.Intensity);
+  // With --anisotropy: a second light volume built with the band-1 moment (single scattering, as `light`).
+  const bool phased = o.Anisotropy != 0.0;
+  vs::LightVolume moment(ctx);
+  vs::LightVolume::MultipleScattering withMoment;
+  withMoment.Orders = 1;
+  withMoment.Anisotropy = float(o.Anisotropy);
+  if (phased)
+  {
+    moment.Update(grid, *env, scene.Environment.Intensity, withMoment);
+  }
+  std::vector<double> momentWall, momentDevice;
 
   // Each repeat turns the environment by another step: the reader converts the lat-long again, the
   // map goes to the device (a new serial), and the light volume is rebuilt from the same grid.
@@ -117,13 +129,29 @@ int Run(const LightVolumeOptions& o)
     env = std::make_unique<vs::DeviceEnvironment>(ctx, *reader->GetEnvironmentMap(), side);
     upload.push_back(SecondsSince(start));
     const uint64_t builds = light.Builds();
+    // With the moment too: the two builds alternate which goes first.
+    if (phased && r % 2 == 1)
+    {
+      moment.Update(grid, *env, scene.Environment.Intensity, withMoment);
+    }
     light.Update(grid, *env, scene.Environment.Intensity);
+    if (phased && r % 2 == 0)
+    {
+      moment.Update(grid, *env, scene.Environment.Intensity, withMoment);
+    }
     if (light.Builds() != builds + 1)
     {
       throw std::runtime_error("the light volume was not rebuilt after a rotation");
     }
     lightWall.push_back(light.LastWallSeconds());
     lightDevice.push_back(light.LastSeconds());
+    if (phased)
+    {
+      momentWall.push_back(moment.LastWallSeconds());
+      momentDevice.push_back(moment.LastSeconds());
+      std::printf("  with the band-1 moment (g %g): %.1f ms (device %.1f ms)\n", o.Anisotropy, 1e3 * momentWall.back(),
+        1e3 * momentDevice.back());
+    }
     std::printf("  rotation %6.1f deg: environment %.1f ms, upload %.1f ms, light volume %.1f ms (device %.1f ms)\n",
       rotation, 1e3 * convert.back(), 1e3 * upload.back(), 1e3 * lightWall.back(), 1e3 * lightDevice.back());
   }
@@ -140,6 +168,20 @@ int Run(const LightVolumeOptions& o)
   std::printf("\nafter an environment rotation (%d repeats, %.0f degrees apart):\n", o.Repeats, o.StepDeg);
   line("light volume rebuild (wall)", "light_volume_wall_seconds", lightWall);
   line("light volume rebuild (device)", "light_volume_device_seconds", lightDevice);
+  if (phased)
+  {
+    line("with the band-1 moment (wall)", "light_volume_moment_wall_seconds", momentWall);
+    line("with the band-1 moment (device)", "light_volume_moment_device_seconds", momentDevice);
+    std::vector<double> ratio;
+    for (size_t i = 0; i < momentDevice.size(); ++i)
+    {
+      ratio.push_back(lightDevice[i] > 0.0 ? momentDevice[i] / lightDevice[i] : 0.0);
+    }
+    const Spread r = SpreadOf(ratio);
+    std::printf("%-38s median %7.2fx (min %.2f, max %.2f)\n", "moment / isotropic (device)", r.Median, r.Min, r.Max);
+    report["anisotropy"] = o.Anisotropy;
+    report["moment_over_isotropic_device"] = ratio;
+  }
   line("environment map conversion (reader)", "environment_seconds", convert);
   line("environment upload", "upload_seconds", upload);
   if (!o.Json.empty())
@@ -160,6 +202,9 @@ void AddBenchLightVolume(CLI::App& bench)
   cmd->add_option("--repeats", o->Repeats, "rotations timed (default 7)")->check(CLI::Range(1, 1000));
   cmd->add_option("--step-deg", o->StepDeg, "degrees between rotations (default 15)")->check(FiniteNumber());
   cmd->add_option("--json", o->Json, "write the times as JSON");
+  cmd->add_option("--anisotropy", o->Anisotropy,
+       "also time the build with the band-1 moment the preview's phase g != 0 needs (issue 39), alternated with g = 0")
+    ->check(CLI::Range(-0.999, 0.999));
   SetCommandRun(cmd, [o]() { return Run(*o); });
 }
 }

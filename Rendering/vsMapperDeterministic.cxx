@@ -156,6 +156,9 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(
       uint32_t follows = 0u;
       vs::SceneLights::Set(mc, ren, false, &follows);
       scattering.Lights.assign(mc.lights, mc.lights + mc.lightCount);
+      // Issue 39: the phase's anisotropy towards the environment needs the first order's band-1 moment
+      // (built when g becomes non-zero, not for another g nor a camera move; vsLightVolume.h).
+      scattering.Anisotropy = mc.anisotropy;
       const std::vector<vs::shared::VsSceneLight>& built = I.Light->Lights();
       if (this->IsInteractiveFrame(ren) && follows != 0u && I.Light->Valid() &&
         built.size() == scattering.Lights.size())
@@ -289,7 +292,7 @@ void vtkVisibilitySweepVolumeMapper::RenderLit(
     : I.EA->Render(I.Scene->Volume(), I.Scene->TF(), &I.Scene->Majorants(), p, depth, shade,
         preview ? vs::shared::VS_EA_LIGHTING_PREVIEW : vs::shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION,
         grid ? &I.Light->Image() : nullptr, preview ? &I.Environment.Device().Radiance() : nullptr,
-        grid ? I.Light->Transmittance() : nullptr);
+        grid ? I.Light->Transmittance() : nullptr, grid && preview ? I.Light->Moment() : nullptr);
   if (guide)
   {
     *guide = std::move(rgba);

@@ -208,7 +208,10 @@ public:
    *  volume glows when seen towards the light), g < 0 backward, 0 isotropically (VTK 9.2's
    *  vtkVolumeProperty::ScatteringAnisotropy has the same meaning). Built against VTK >= 9.2 (as in
    *  ParaView), a mapper value of 0 takes the volume property's ScatteringAnisotropy. A value outside
-   *  (-1, 1) or not finite is an error at render time naming the setting. Default 0. */
+   *  (-1, 1) or not finite is an error at render time naming the setting. Default 0. The preview models it
+   *  towards VTK's lights and for the environment's single scattering (from the light volume's band-1
+   *  moment, built when g becomes non-zero; the higher orders stay isotropic: docs/reference.md "The
+   *  phase's anisotropy", with its measured bias). */
   vtkSetMacro(ScatteringAnisotropy, double);
   vtkGetMacro(ScatteringAnisotropy, double);
   ///@}

@@ -31,6 +31,10 @@
  * E_l T_l k(w_l), T_l the light volume's transmittance towards the light (uLightT, trilinear between the
  * cells' centres as uLight), E_l its irradiance at the sample and k the phase function (g = P.anisotropy)
  * times the albedo; the light volume's I carries the lights' multiple scattering (vsLightVolume.h).
+ * The preview's phase towards the environment (issue 39): with VS_EA_ANISOTROPIC (P.anisotropy != 0 and the light
+ * volume's band-1 moment uLightM, vsLightVolume.h) the single scattering of the environment's light is
+ * Henyey-Greenstein's, exact in bands 0 and 1 (I + 3 g M.d) / (4 pi), the light taken as one HG lobe around M
+ * (sampling/phase_moments.h vs_hg_lobe_light; M trilinear as I); the orders 2 .. K in I stay isotropic. Without it, I / (4 pi) as before (the same code).
  * With VS_EA_SHADE in the preview: the surface lobe of the Monte Carlo kernel (surface_scattering.glsl),
  * the same mixture k(w) = (1 - P_s) albedo f_HG + P_s f_r |n.w| towards each light, and towards the
  * environment (1 - P_s) albedo I / (4 pi) + P_s (k_d albedo + k_s) I / (4 pi): the light volume's I / (4 pi)
@@ -50,6 +54,7 @@
 #include "rng.h"
 #include "ea_params.h"
 #include "microfacet.h"
+#include "phase_moments.h"
 #include "scene_lights.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -65,6 +70,7 @@ layout(binding = VS_EA_BRICKS, rgba32f) uniform readonly image3D uBricks; /* the
 layout(binding = VS_EA_ENVIRONMENT) uniform samplerBuffer uEnvironment; /* read with VS_EA_DISPLAY_ENVIRONMENT */
 layout(std430, binding = VS_EA_DISPLAY) writeonly buffer Display { vec4 uDisplay[]; }; /* VS_EA_DISPLAY_IMAGE */
 layout(binding = VS_EA_LIGHT_TRANSMITTANCE, rgba32f) uniform readonly image3D uLightT; /* the preview with lights */
+layout(binding = VS_EA_LIGHT_MOMENT, rgba32f) uniform readonly image3D uLightM; /* the preview with VS_EA_ANISOTROPIC */
 layout(constant_id = 0) const uint VS_EA_FACTOR = 0u;
 layout(constant_id = 1) const uint VS_EA_SHADE = 0u;
 layout(constant_id = 2) const uint VS_EA_LIGHTING = 0u; /* VS_EA_LIGHTING_* */
@@ -79,6 +85,10 @@ layout(constant_id = 4) const uint VS_EA_WINDOW_IMAGE = 0u;
  * only in the pipelines that run it. A loop over no lights in every pipeline made the preview's drag frame
  * 1.3-1.9x slower on lavapipe (measured on ch2 at 512^2, loaded machine). */
 layout(constant_id = 5) const uint VS_EA_LIGHTS = 0u;
+/* Whether the preview's phase is anisotropic towards the environment (issue 39: P.anisotropy != 0, the light
+ * volume's band-1 moment bound): its three extra trilinear reads only in the pipelines that use them, and the
+ * isotropic preview's code unchanged. */
+layout(constant_id = 6) const uint VS_EA_ANISOTROPIC = 0u;
 #define VS_FACTOR_IMAGE
 #define VS_TF_ENTRY_TEXELS
 
@@ -181,9 +191,9 @@ vec4 light_at(vec3 x)
   ivec3 i0 = min(ivec3(floor(g)), cells - 1);
   ivec3 i1 = min(i0 + 1, cells - 1);
   vec3 f = g - vec3(i0);
-  if (VS_EA_LIGHTS == 1u)
+  if (VS_EA_LIGHTS == 1u || VS_EA_ANISOTROPIC == 1u)
   {
-    gLerpI0 = i0; /* for transmittance_at, at the same point */
+    gLerpI0 = i0; /* for transmittance_at and moment_at, at the same point */
     gLerpI1 = i1;
     gLerpF = f;
   }
@@ -210,10 +220,38 @@ vec4 transmittance_at(uint k)
   return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
 }
 
+/* Component a of the band-1 moment at the point of the last light_at (the same weights), from layer a of
+ * uLightM (vsLightVolume.h). */
+vec3 moment_at(int a)
+{
+  ivec3 i0 = gLerpI0, i1 = gLerpI1;
+  vec3 f = gLerpF;
+  int z = a * int(P.grid.cells.z);
+  i0.z += z;
+  i1.z += z;
+  vec3 c00 = mix(imageLoad(uLightM, ivec3(i0.x, i0.y, i0.z)).rgb, imageLoad(uLightM, ivec3(i1.x, i0.y, i0.z)).rgb, f.x);
+  vec3 c10 = mix(imageLoad(uLightM, ivec3(i0.x, i1.y, i0.z)).rgb, imageLoad(uLightM, ivec3(i1.x, i1.y, i0.z)).rgb, f.x);
+  vec3 c01 = mix(imageLoad(uLightM, ivec3(i0.x, i0.y, i1.z)).rgb, imageLoad(uLightM, ivec3(i1.x, i0.y, i1.z)).rgb, f.x);
+  vec3 c11 = mix(imageLoad(uLightM, ivec3(i0.x, i1.y, i1.z)).rgb, imageLoad(uLightM, ivec3(i1.x, i1.y, i1.z)).rgb, f.x);
+  return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
+}
+
+/* The light volume's I at index-space point x for a camera ray along d, over 4 pi: isotropic (I / 4 pi), or with
+ * VS_EA_ANISOTROPIC Henyey-Greenstein's from I and M (phase_moments.h). iso: the isotropic I / (4 pi). */
+vec3 in_scattered(vec3 x, vec3 d, out vec3 iso)
+{
+  vec3 I = light_at(x).rgb;
+  iso = I * (1.0 / (4.0 * VS_PI));
+  if (VS_EA_ANISOTROPIC == 0u)
+    return iso;
+  return vs_hg_lobe_light(I, moment_at(0), moment_at(1), moment_at(2), d, P.anisotropy) * (1.0 / (4.0 * VS_PI));
+}
+
 /* The preview's radiance towards the camera per unit collision at index-space point x (issue 38): the
  * sample's albedo, extinction sigma, the camera ray's world direction d, and I / (4 pi) of the light
- * volume there (light_at just read). Without lights and the lobe: albedo I / (4 pi), as before. */
-vec3 preview_radiance(vec3 x, vec3 albedo, float sigma, vec3 d, vec3 inScattered, ivec3 dims)
+ * volume there (light_at just read; phased: with the phase towards the environment, in_scattered). Without lights and the lobe:
+ * albedo I / (4 pi), as before. The lobe's surface share reflects the isotropic I / (4 pi), as before. */
+vec3 preview_radiance(vec3 x, vec3 albedo, float sigma, vec3 d, vec3 inScattered, vec3 phased, ivec3 dims)
 {
   float ps = 0.0;
   vec3 n = vec3(0.0, 0.0, 1.0);
@@ -231,10 +269,13 @@ vec3 preview_radiance(vec3 x, vec3 albedo, float sigma, vec3 d, vec3 inScattered
       ps = vs_surface_probability(P.surfaceBlending, g, isnan(alpha) ? 0.0 : alpha);
       n = gw / len;
     }
-    L = ((1.0 - ps) * albedo + ps * (kd + vec3(P.surfaceSpecular))) * inScattered;
+    if (VS_EA_ANISOTROPIC == 0u)
+      L = ((1.0 - ps) * albedo + ps * (kd + vec3(P.surfaceSpecular))) * inScattered;
+    else
+      L = (1.0 - ps) * albedo * phased + ps * (kd + vec3(P.surfaceSpecular)) * inScattered;
   }
   else
-    L = albedo * inScattered;
+    L = albedo * phased;
   vec4 T4 = vec4(0.0);
   for (uint l = 0u; VS_EA_LIGHTS == 1u && l < P.lightCount; ++l)
   {
@@ -380,7 +421,11 @@ void main()
       if (c.w > 0.0)
       {
         if (VS_EA_LIGHTING == VS_EA_LIGHTING_PREVIEW)
-          c.rgb = preview_radiance(x, c.rgb, c.w, d, light_at(x).rgb * (1.0 / (4.0 * VS_PI)), dims);
+        {
+          vec3 iso;
+          vec3 phased = in_scattered(x, d, iso);
+          c.rgb = preview_radiance(x, c.rgb, c.w, d, iso, phased, dims);
+        }
         else if (VS_EA_LIGHTING == VS_EA_LIGHTING_AMBIENT_OCCLUSION)
           c.rgb *= P.lightIntensity * light_at(x).a;
         else if (VS_EA_SHADE == 1u)

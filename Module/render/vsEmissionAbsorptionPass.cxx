@@ -1,5 +1,6 @@
 #include "vsEmissionAbsorptionPass.h"
 #include "sampling/bindings.h"
+#include "sampling/sphere.h"
 #include "vsRenderTargetLimits.h"
 #include "vsBatch.h"
 #include "vsBuffer.h"
@@ -12,6 +13,8 @@
 #include "vsTransferFunctionTable.h"
 
 #include "vs_spirv_ea_render.h"
+
+#include <cmath>
 
 namespace vs
 {
@@ -34,12 +37,12 @@ EmissionAbsorptionPass::EmissionAbsorptionPass(std::shared_ptr<Context> context)
 }
 
 const ComputePipeline& EmissionAbsorptionPass::PipelineFor(
-  bool factor, bool shade, uint32_t lighting, bool projection, bool display, bool lights)
+  bool factor, bool shade, uint32_t lighting, bool projection, bool display, bool lights, bool anisotropic)
 {
   // The preview's shading is the surface lobe (issue 38); ambient occlusion is not shaded.
   shade = shade && lighting != shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION;
-  const std::array<uint32_t, 6> constants = { factor ? 1u : 0u, shade ? 1u : 0u, lighting, projection ? 1u : 0u,
-    display ? 1u : 0u, lights ? 1u : 0u };
+  const std::array<uint32_t, 7> constants = { factor ? 1u : 0u, shade ? 1u : 0u, lighting, projection ? 1u : 0u,
+    display ? 1u : 0u, lights ? 1u : 0u, anisotropic ? 1u : 0u };
   auto& pipeline = this->Pipelines_[constants];
   if (!pipeline)
   {
@@ -53,6 +56,7 @@ const ComputePipeline& EmissionAbsorptionPass::PipelineFor(
     name += projection ? ", projections" : "";
     name += display ? ", with its window image" : "";
     name += lights ? ", VTK's lights" : "";
+    name += anisotropic ? ", anisotropic towards the environment" : "";
     pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_ea_render),
       BindingTypes(shared::VS_EA_BINDING_COUNT,
         { { shared::VS_EA_VOLUME, BindingType::StorageImage }, { shared::VS_EA_TF, BindingType::UniformTexelBuffer },
@@ -62,7 +66,8 @@ const ComputePipeline& EmissionAbsorptionPass::PipelineFor(
           { shared::VS_EA_LIGHT, BindingType::StorageImage }, { shared::VS_EA_BRICKS, BindingType::StorageImage },
           { shared::VS_EA_ENVIRONMENT, BindingType::UniformTexelBuffer },
           { shared::VS_EA_DISPLAY, BindingType::StorageBuffer },
-          { shared::VS_EA_LIGHT_TRANSMITTANCE, BindingType::StorageImage } }),
+          { shared::VS_EA_LIGHT_TRANSMITTANCE, BindingType::StorageImage },
+          { shared::VS_EA_LIGHT_MOMENT, BindingType::StorageImage } }),
       0, name, std::vector<uint32_t>(constants.begin(), constants.end()));
   }
   return *pipeline;
@@ -78,7 +83,8 @@ static_assert(sizeof(shared::VsEmissionAbsorptionParams) ==
 
 std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
   const TransferFunctionTable& tf, const MajorantGrid* majorants, const shared::VsEmissionAbsorptionParams& inParams, const std::vector<float>& depth,
-  bool shade, uint32_t lighting, const Image3D* light, const Buffer* environment, const Image3D* lightTransmittance)
+  bool shade, uint32_t lighting, const Image3D* light, const Buffer* environment, const Image3D* lightTransmittance,
+  const Image3D* lightMoment)
 {
   this->LastDisplay_.clear();
   if (lighting > shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION)
@@ -134,6 +140,15 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
         " lights need the light volume's transmittance towards them, of the light volume's cells with 2 layers");
     }
   }
+  // The phase's band 1 towards the environment (issue 39): the preview with g != 0 and the moment.
+  const bool anisotropic = lighting == shared::VS_EA_LIGHTING_PREVIEW && light && lightMoment &&
+    std::abs(params.anisotropy) >= shared::VS_HG_ISOTROPIC_G;
+  if (anisotropic &&
+    (lightMoment->Width() != light->Width() || lightMoment->Height() != light->Height() ||
+      lightMoment->Depth() != 3 * light->Depth()))
+  {
+    throw InputError("the preview's band-1 moment must have the light volume's cells with 3 layers");
+  }
   if ((params.display & shared::VS_EA_DISPLAY_ENVIRONMENT) != 0u)
   {
     const uint64_t n = params.environmentSize;
@@ -180,7 +195,7 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
     this->NoLight_->Upload(zero, sizeof(zero));
   }
   const ComputePipeline& pipeline = this->PipelineFor(volume.Factor() != nullptr, shade, lighting,
-    params.blend != shared::VS_BLEND_COMPOSITE, display, params.lightCount > 0u);
+    params.blend != shared::VS_BLEND_COMPOSITE, display, params.lightCount > 0u, anisotropic);
   DescriptorSet set(pipeline);
   set.Bind(shared::VS_EA_VOLUME, volume.Image())
     .BindTexels(shared::VS_EA_TF, tf.Lut(), vk::Format::eR32G32B32A32Sfloat)
@@ -202,6 +217,7 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
   set.Bind(shared::VS_EA_DISPLAY, display ? *this->Display_ : *this->Out_);
   set.Bind(shared::VS_EA_LIGHT_TRANSMITTANCE,
     lighting == shared::VS_EA_LIGHTING_PREVIEW && params.lightCount > 0u ? *lightTransmittance : *this->NoLight_);
+  set.Bind(shared::VS_EA_LIGHT_MOMENT, anisotropic ? *lightMoment : *this->NoLight_);
   Batch batch(this->Context_);
   batch.BeginTimer("render");
   batch.Dispatch(pipeline, set, nullptr, 0, (w + 7) / 8, (h + 7) / 8, 1);

@@ -49,11 +49,15 @@ public:
    *  params.lightCount > 0 (issue 38): with `shade` and no lighting, the Phong lights; in the preview, its
    *  lights, lit through `lightTransmittance` (LightVolume::Transmittance of the same build as `light`), and
    *  `shade` is the surface lobe there (params.surface*). Throws InputError for more than VS_MAX_SCENE_LIGHTS
-   *  or a preview with lights without their transmittance. */
+   *  or a preview with lights without their transmittance.
+   *  `lightMoment` (issue 39; LightVolume::Moment of the same build as `light`): with params.anisotropy != 0 the
+   *  preview's single scattering of the environment is Henyey-Greenstein's up to band 1 (ea_render.comp); without
+   *  it, or with g = 0, isotropic (the same pipeline as before). Throws InputError for a moment whose size is not
+   *  the light volume's with 3 layers. */
   std::vector<float> Render(const DeviceVolume& volume, const TransferFunctionTable& tf,
     const MajorantGrid* majorants, const shared::VsEmissionAbsorptionParams& params, const std::vector<float>& depth, bool shade = false,
     uint32_t lighting = shared::VS_EA_LIGHTING_NONE, const Image3D* light = nullptr, const Buffer* environment = nullptr,
-    const Image3D* lightTransmittance = nullptr);
+    const Image3D* lightTransmittance = nullptr, const Image3D* lightMoment = nullptr);
 
   /** The premultiplied window image (RGBA, rows bottom-up) of the last Render with
    *  VS_EA_DISPLAY_IMAGE; empty after one without. */
@@ -67,10 +71,10 @@ private:
    *  other than the composite), the window image and VTK's lights (made on first use; ea_render.comp's
    *  specialization constants). */
   const ComputePipeline& PipelineFor(bool factor, bool shade, uint32_t lighting, bool projection, bool display,
-    bool lights);
+    bool lights, bool anisotropic);
 
   std::shared_ptr<Context> Context_;
-  std::map<std::array<uint32_t, 6>, std::shared_ptr<ComputePipeline>> Pipelines_;
+  std::map<std::array<uint32_t, 7>, std::shared_ptr<ComputePipeline>> Pipelines_;
   std::unique_ptr<Buffer> Params_, Depth_, Out_, Display_;
   std::unique_ptr<Image3D> NoLight_; // the 1-texel placeholder of VS_EA_LIGHT and VS_EA_BRICKS (zero)
   double LastSeconds_ = 0.0;

@@ -40,15 +40,17 @@ namespace vs
 {
 namespace
 {
-std::shared_ptr<ComputePipeline> Pipeline(const std::shared_ptr<Context>& context, vk::Format format, uint32_t D)
+std::shared_ptr<ComputePipeline> Pipeline(
+  const std::shared_ptr<Context>& context, vk::Format format, uint32_t D, bool moment)
 {
   using B = BindingType;
   const std::vector<B> bindings = BindingTypes(shared::VS_LIGHT_BINDING_COUNT,
     { { shared::VS_LIGHT_VISIBILITY, B::StorageImage }, { shared::VS_LIGHT_SOURCES, B::StorageBuffer },
-      { shared::VS_LIGHT_RADIANCE, B::StorageBuffer }, { shared::VS_LIGHT_OUTPUT, B::StorageImage } });
+      { shared::VS_LIGHT_RADIANCE, B::StorageBuffer }, { shared::VS_LIGHT_OUTPUT, B::StorageImage },
+      { shared::VS_LIGHT_MOMENT, B::StorageImage } });
   const uint32_t push = sizeof(shared::VsLightVolumeParams);
-  const std::vector<uint32_t> specialization{ D };
-  const std::string name = "light volume (D " + std::to_string(D);
+  const std::vector<uint32_t> specialization{ D, moment ? 1u : 0u };
+  const std::string name = std::string(moment ? "light volume with its moment (D " : "light volume (D ") + std::to_string(D);
   if (format == vk::Format::eR8Unorm)
     return SharedPipeline(context, VS_SPIRV(vs_spirv_light_volume_r8), bindings, push, name + ", r8)", specialization);
   if (format == vk::Format::eR16Unorm)
@@ -95,6 +97,18 @@ uint64_t Hash(uint64_t h, const void* data, size_t bytes)
     h = (h ^ p[i]) * 1099511628211ull;
   }
   return h;
+}
+
+// What a pass that marches the medium reads of it: the volume, its transfer function and its parameters.
+uint64_t HashMedium(uint64_t h, const LightVolume::MultipleScattering& m)
+{
+  const uintptr_t volume = reinterpret_cast<uintptr_t>(m.Volume);
+  h = Hash(h, &volume, sizeof(volume));
+  const TransferFunctionSamples& tf = m.TF->Samples();
+  h = Hash(h, &tf.ScalarMin, sizeof(float));
+  h = Hash(h, &tf.ScalarMax, sizeof(float));
+  h = Hash(h, tf.Entries.data(), tf.Entries.size() * sizeof(float));
+  return Hash(h, &m.Params, sizeof(m.Params));
 }
 }
 
@@ -172,14 +186,7 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
   if (multiple)
   {
     const MultipleScattering& m = scattering;
-    uint64_t h = 14695981039346656037ull;
-    const uintptr_t volume = reinterpret_cast<uintptr_t>(m.Volume);
-    h = Hash(h, &volume, sizeof(volume));
-    const TransferFunctionSamples& tf = m.TF->Samples();
-    h = Hash(h, &tf.ScalarMin, sizeof(float));
-    h = Hash(h, &tf.ScalarMax, sizeof(float));
-    h = Hash(h, tf.Entries.data(), tf.Entries.size() * sizeof(float));
-    h = Hash(h, &m.Params, sizeof(m.Params));
+    uint64_t h = HashMedium(14695981039346656037ull, m);
     const uint32_t counts[4] = { std::min(m.Orders, m.Events), m.Events, m.AlbedoSamples, m.DirectionStride };
     h = Hash(h, counts, sizeof(counts));
     h = Hash(h, &m.MaxRatio, sizeof(m.MaxRatio));
@@ -189,29 +196,31 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
   {
     // What the lights' march reads: the lights, the volume, its transfer function and parameters, the step.
     const MultipleScattering& m = scattering;
-    uint64_t h = 1099511628211ull;
-    const uintptr_t volume = reinterpret_cast<uintptr_t>(m.Volume);
-    h = Hash(h, &volume, sizeof(volume));
-    const TransferFunctionSamples& tf = m.TF->Samples();
-    h = Hash(h, &tf.ScalarMin, sizeof(float));
-    h = Hash(h, &tf.ScalarMax, sizeof(float));
-    h = Hash(h, tf.Entries.data(), tf.Entries.size() * sizeof(float));
-    h = Hash(h, &m.Params, sizeof(m.Params));
+    uint64_t h = HashMedium(1099511628211ull, m);
     h = Hash(h, m.Lights.data(), m.Lights.size() * sizeof(shared::VsSceneLight));
     h = Hash(h, &m.LightStep, sizeof(m.LightStep));
     s.Lights = h | 1u;
   }
-  if (this->Image_ && s == this->Built_)
+  if (!std::isfinite(scattering.Anisotropy) || std::abs(scattering.Anisotropy) >= 1.0f)
+  {
+    throw InputError("the light volume's phase anisotropy must lie in (-1, 1), got " +
+      std::to_string(scattering.Anisotropy));
+  }
+  // The band-1 moment depends on whether the phase is anisotropic, not on g's value (vsLightVolume.h).
+  s.Moment = scattering.Anisotropy != 0.0f;
+  if (this->Image_ && s.ServedBy(this->Built_))
   {
     return false;
   }
   const auto start = std::chrono::steady_clock::now();
   const uint32_t side = grid.Side();
   const std::vector<glm::vec3> radiance = DirectionRadiance(environment, side, intensity);
-  std::vector<glm::vec4> packed(radiance.size());
+  // E_n, then each direction w_n (read by the moment's build).
+  std::vector<glm::vec4> packed(2 * radiance.size());
   for (size_t n = 0; n < radiance.size(); ++n)
   {
     packed[n] = glm::vec4(radiance[n], 0.0f);
+    packed[radiance.size() + n] = glm::vec4(SweepPlan::Direction(uint32_t(n), grid.Parameters()), 0.0f);
   }
   const uint64_t bytes = packed.size() * sizeof(glm::vec4);
   if (!this->Radiance_ || this->Radiance_->Size() != bytes)
@@ -230,12 +239,20 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
       this->Context_, cells[0], cells[1], cells[2], vk::Format::eR32G32B32A32Sfloat, "light volume");
     this->Cells_ = cells;
   }
-  std::shared_ptr<ComputePipeline> pipeline = Pipeline(this->Context_, grid.Image().Format(), side);
+  if (s.Moment && (!this->Moment_ || this->Moment_->Width() != cells[0] || this->Moment_->Height() != cells[1] ||
+                    this->Moment_->Depth() != 3 * cells[2]))
+  {
+    this->Moment_.reset();
+    this->Moment_ = std::make_unique<Image3D>(
+      this->Context_, cells[0], cells[1], 3 * cells[2], vk::Format::eR32G32B32A32Sfloat, "light volume band-1 moment");
+  }
+  std::shared_ptr<ComputePipeline> pipeline = Pipeline(this->Context_, grid.Image().Format(), side, s.Moment);
   DescriptorSet set(*pipeline);
   set.Bind(shared::VS_LIGHT_VISIBILITY, grid.Image())
     .Bind(shared::VS_LIGHT_SOURCES, grid.DirectionSourceBuffer())
     .Bind(shared::VS_LIGHT_RADIANCE, *this->Radiance_)
-    .Bind(shared::VS_LIGHT_OUTPUT, *this->Image_);
+    .Bind(shared::VS_LIGHT_OUTPUT, *this->Image_)
+    .Bind(shared::VS_LIGHT_MOMENT, s.Moment ? *this->Moment_ : *this->Image_); // unwritten without
   shared::VsLightVolumeParams params;
   params.cellsX = cells[0];
   params.cellsY = cells[1];
@@ -496,6 +513,18 @@ void LightVolume::AddTail(const Image3D& last, const Image3D& before, uint32_t e
     }
   }
   this->Image_->Upload(total.data(), total.size() * sizeof(float));
+}
+
+std::vector<float> LightVolume::DownloadMoment() const
+{
+  std::vector<float> out;
+  if (!this->Moment())
+  {
+    return out;
+  }
+  out.resize(size_t(4) * this->Cells_[0] * this->Cells_[1] * 3 * this->Cells_[2]);
+  this->Moment_->Download(out.data(), out.size() * sizeof(float));
+  return out;
 }
 
 std::vector<float> LightVolume::Download() const

@@ -32,6 +32,16 @@
 // itself), so the orders 2 .. Events carry the lights' scattered light too. Built again when a light
 // changes (Lights are part of the signature), never for a camera move as such (lights that follow the
 // camera change with it: the mapper decides when to pass them; docs/reference.md).
+//
+// The phase's anisotropy towards the environment (issue 39). With MultipleScattering::Anisotropy != 0 the
+// build also keeps the first order's band-1 moment M(cell) = sum_n V(cell, n) E_n w_n (w_n the world
+// direction towards texel n's light; Moment(): rgba32f of cells.x x cells.y x 3 cells.z, component a of M
+// at z + a cells.z, rgb per channel), from which the preview's single scattering of the environment's light
+// is Henyey-Greenstein's up to band 1 (sampling/phase_moments.h): (I + 3 g M.d) / (4 pi), d the camera ray.
+// M does not depend on g's value, only on whether it is needed: a change from g = 0 to g != 0 builds again
+// (to make M) unless M is there, from one g != 0 to another or back to 0 does not (M is kept, unread at
+// g = 0), and a camera move never does. The orders 2 .. Events
+// stay isotropic (docs/reference.md: their bias).
 #ifndef vsLightVolume_h
 #define vsLightVolume_h
 
@@ -92,6 +102,9 @@ public:
     std::vector<shared::VsSceneLight> Lights;
     /** The lights' march step in world units (<= 0: the smallest voxel spacing of Params). */
     float LightStep = 0.0f;
+    /** The phase's Henyey-Greenstein g (the preview's): != 0 builds the first order's band-1 moment too
+     *  (Moment()), whatever the orders; its value is not read. */
+    float Anisotropy = 0.0f;
   };
   /** Update with multiple scattering (Orders >= 2 and Events >= 2; else as Update above) and the lights.
    *  Throws InputError as Update, for a missing volume or transfer function, and for more than
@@ -109,6 +122,11 @@ public:
   const Image3D& Image() const { return *this->Image_; }
   /** The transmittance towards each light of the last build (layout above); nullptr when it had none. */
   const Image3D* Transmittance() const { return this->Built_.Lights != 0 ? this->Transmittance_.get() : nullptr; }
+  /** The first order's band-1 moment of the last build (layout above); nullptr when it was built with
+   *  Anisotropy 0 (an Update with Anisotropy 0 keeps one that is there). */
+  const Image3D* Moment() const { return this->Built_.Moment ? this->Moment_.get() : nullptr; }
+  /** The band-1 moment per cell, as Download() (cells.x x cells.y x 3 cells.z); empty without one. */
+  std::vector<float> DownloadMoment() const;
   /** The lights of the last build. */
   const std::vector<shared::VsSceneLight>& Lights() const { return this->BuiltLights_; }
   /** The transmittance towards each light per cell, as Download() (cells.x x cells.y x 2 cells.z); empty
@@ -134,10 +152,13 @@ private:
     double Intensity = -1.0;
     uint64_t Scattering = 0; // 0: single scattering; else a hash of MultipleScattering's inputs
     uint64_t Lights = 0;     // 0: no lights; else a hash of the lights and what their march reads
-    bool operator==(const Signature& o) const
+    bool Moment = false;     // the band-1 moment (Anisotropy != 0)
+    /** Whether a build of signature `built` serves this one: the same inputs, and the moment if this needs it
+     *  (a build with the moment serves g = 0 too: the preview does not read it there). */
+    bool ServedBy(const Signature& built) const
     {
-      return Grid == o.Grid && Environment == o.Environment && Intensity == o.Intensity &&
-        Scattering == o.Scattering && Lights == o.Lights;
+      return Grid == built.Grid && Environment == built.Environment && Intensity == built.Intensity &&
+        Scattering == built.Scattering && Lights == built.Lights && (!Moment || built.Moment);
     }
   };
   void Scatter(const VisibilityGrid& grid, const MultipleScattering& scattering, bool lit);
@@ -146,6 +167,7 @@ private:
 
   std::shared_ptr<Context> Context_;
   std::unique_ptr<Image3D> Image_;
+  std::unique_ptr<Image3D> Moment_; // the first order's band-1 moment (Anisotropy != 0)
   std::unique_ptr<Buffer> Radiance_; // E_n, one vec4 per direction
   // Multiple scattering: per cell the albedo, two orders' emission and light (ping-pong); the steps per
   // direction, the albedo pass's parameters.
