@@ -9,21 +9,10 @@
 //  - The light volume is built again when g becomes non-zero (to make the moment), not for another non-zero g,
 //    not for g back to 0 (the moment is kept, unread), and never for a camera move.
 //  - g = 0 is the isotropic preview, bit for bit, before and after a round trip through g != 0.
-#include "vsRenderTestUtilities.h"
+#include "vsLitBallScene.h"
 #include "vtkEnvironmentMapSource.h"
-#include "vtkVisibilitySweepVolumeMapper.h"
 
 #include "vtkCamera.h"
-#include "vtkColorTransferFunction.h"
-#include "vtkDataArray.h"
-#include "vtkImageData.h"
-#include "vtkNew.h"
-#include "vtkPiecewiseFunction.h"
-#include "vtkPointData.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkVolume.h"
-#include "vtkVolumeProperty.h"
 
 #include <cmath>
 #include <cstdio>
@@ -31,92 +20,31 @@
 #include <vector>
 
 using vstest::Check;
+using vstest::Mean;
 
 namespace
 {
-constexpr int kSize = 32;
-
-struct Scene
+// The lights tests' ball (vsLitBallScene.h), thinner (peak opacity 0.4), in the preview at one event, under a
+// wide sun behind it (the camera looks along -z) and to its side, over a dim sky.
+struct Scene : vstest::LitBallScene
 {
-  vtkNew<vtkVisibilitySweepVolumeMapper> Mapper;
   vtkNew<vtkEnvironmentMapSource> Environment;
-  vtkNew<vtkVolume> Volume;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkPiecewiseFunction> Opacity;
-  vtkNew<vtkColorTransferFunction> Color;
-  vtkNew<vtkVolumeProperty> Property;
 
   Scene()
+    : LitBallScene(0.4)
   {
-    // A wide sun behind the ball (the camera looks along -z) and to its side, over a dim sky.
     this->Environment->SetTypeToSunDisk();
     this->Environment->SetOctahedralSize(64);
     this->Environment->SetSunDirection(0.6, 0.2, -1.0);
     this->Environment->SetSunAngularRadius(30.0);
     this->Environment->SetSunRadiance(4.0, 4.0, 4.0);
     this->Environment->SetSkyColor(0.2, 0.2, 0.2);
-    this->Mapper->SetInputData(vstest::Ball(24));
     this->Mapper->SetEnvironmentConnection(this->Environment->GetOutputPort());
     this->Mapper->SetRenderModeToPreview();
     this->Mapper->SetMaximumScatteringEvents(1);
     this->Mapper->SetVoxelsPerCell(2.0); // cells of 2 voxels: less of the light volume's interpolation bias
-    this->Mapper->EnvironmentVisibleOff();
-    this->Opacity->AddPoint(0.0, 0.0);
-    this->Opacity->AddPoint(1.0, 0.4);
-    this->Color->AddRGBPoint(0.0, 0.8, 0.8, 0.8);
-    this->Color->AddRGBPoint(1.0, 0.8, 0.8, 0.8);
-    this->Property->SetScalarOpacity(this->Opacity);
-    this->Property->SetColor(this->Color);
-    this->Property->SetInterpolationTypeToLinear();
-    this->Volume->SetMapper(this->Mapper);
-    this->Volume->SetProperty(this->Property);
-    this->Renderer->AddVolume(this->Volume);
-    this->Window->SetMultiSamples(0);
-    this->Window->SetSize(kSize, kSize);
-    this->Window->AddRenderer(this->Renderer);
-    this->Renderer->ResetCamera();
-  }
-
-  std::vector<float> Radiance()
-  {
-    std::vector<float> out;
-    vtkImageData* r = this->Mapper->GetRadiance();
-    vtkDataArray* a = r ? r->GetPointData()->GetArray("Radiance") : nullptr;
-    for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
-      for (int c = 0; c < 3; ++c)
-        out.push_back(float(a->GetComponent(i, c)));
-    return out;
-  }
-
-  std::vector<float> Preview()
-  {
-    this->Window->Render();
-    return this->Radiance();
-  }
-
-  // Monte Carlo until converged (samples samples per pixel).
-  std::vector<float> Estimate(int samples)
-  {
-    this->Mapper->SetRenderModeToMonteCarlo();
-    this->Mapper->SetMaximumSamples(samples);
-    this->Mapper->SetSamplesPerFrame(samples);
-    for (int i = 0; i < 4 && !this->Mapper->IsConverged(); ++i)
-      this->Window->Render();
-    this->Window->Render();
-    std::vector<float> out = this->Radiance();
-    this->Mapper->SetRenderModeToPreview();
-    return out;
   }
 };
-
-double Mean(const std::vector<float>& v)
-{
-  double s = 0.0;
-  for (float x : v)
-    s += x;
-  return v.empty() ? 0.0 : s / double(v.size());
-}
 }
 
 int TestMapperPreviewAnisotropy(int, char*[])

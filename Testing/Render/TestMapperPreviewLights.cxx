@@ -46,26 +46,6 @@ struct Scene : vstest::LitBallScene
 {
   Scene() { this->Mapper->SetRenderModeToPreview(); }
 
-  std::vector<float> Preview()
-  {
-    this->Window->Render();
-    return this->LastRadiance();
-  }
-
-  // Monte Carlo until converged (samples samples per pixel).
-  std::vector<float> Estimate(int samples)
-  {
-    this->Mapper->SetRenderModeToMonteCarlo();
-    this->Mapper->SetMaximumSamples(samples);
-    this->Mapper->SetSamplesPerFrame(samples);
-    for (int i = 0; i < 4 && !this->Mapper->IsConverged(); ++i)
-      this->Window->Render();
-    this->Window->Render();
-    std::vector<float> out = this->LastRadiance();
-    this->Mapper->SetRenderModeToPreview();
-    return out;
-  }
-
   // The window's mean pixel value (emission-absorption has no radiance image).
   double WindowMean()
   {

@@ -1,6 +1,7 @@
 // The scene of the lights tests (TestMapperLights, TestMapperPreviewLights): the tests' ball (24^3) of grey
 // albedo under the default sky, the environment not visible (the images' means are the volume's), at
-// 32 x 32; and the key light they add. Each test sets its mode and sampling on top.
+// 32 x 32; and the key light they add. Each test sets its mode and sampling on top (TestMapperPreviewAnisotropy
+// its own environment and a thinner ball).
 #ifndef vsLitBallScene_h
 #define vsLitBallScene_h
 
@@ -36,13 +37,13 @@ struct LitBallScene
   vtkNew<vtkColorTransferFunction> Color;
   vtkNew<vtkVolumeProperty> Property;
 
-  LitBallScene()
+  explicit LitBallScene(double peakOpacity = 0.6)
   {
     this->Mapper->SetInputData(Ball(24));
     this->Mapper->SetMaximumScatteringEvents(4);
     this->Mapper->EnvironmentVisibleOff(); // the images' means are the volume's (lit by the sky still)
     this->Opacity->AddPoint(0.0, 0.0);
-    this->Opacity->AddPoint(1.0, 0.6);
+    this->Opacity->AddPoint(1.0, peakOpacity);
     this->Color->AddRGBPoint(0.0, 0.8, 0.8, 0.8);
     this->Color->AddRGBPoint(1.0, 0.8, 0.8, 0.8);
     this->Property->SetScalarOpacity(this->Opacity);
@@ -66,6 +67,27 @@ struct LitBallScene
     for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
       for (int c = 0; c < 3; ++c)
         out.push_back(float(a->GetComponent(i, c)));
+    return out;
+  }
+
+  /** A render in the preview mode (the mode the preview tests set), its radiance. */
+  std::vector<float> Preview()
+  {
+    this->Window->Render();
+    return this->LastRadiance();
+  }
+
+  /** The Monte Carlo estimate until converged at `samples` spp, its radiance; back to the preview mode. */
+  std::vector<float> Estimate(int samples)
+  {
+    this->Mapper->SetRenderModeToMonteCarlo();
+    this->Mapper->SetMaximumSamples(samples);
+    this->Mapper->SetSamplesPerFrame(samples);
+    for (int i = 0; i < 4 && !this->Mapper->IsConverged(); ++i)
+      this->Window->Render();
+    this->Window->Render();
+    std::vector<float> out = this->LastRadiance();
+    this->Mapper->SetRenderModeToPreview();
     return out;
   }
 };
