@@ -8,7 +8,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libvtk9-dev python3-vtk9 python3-numpy python3-matplotlib
   libvulkan-dev mesa-vulkan-drivers vulkan-tools vulkan-validationlayers
-  glslang-tools libglm-dev
+  glslang-tools spirv-tools libglm-dev
   libopenexr-dev libopenvdb-dev libtbb-dev libblosc-dev libboost-iostreams-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev
   xvfb xauth

@@ -128,19 +128,7 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
   auto& pipeline = slot[format];
   if (!pipeline)
   {
-    using B = BindingType;
-    const std::vector<B> bindings = BindingTypes(shared::VS_MC_BINDING_COUNT,
-      { { shared::VS_MC_VOLUME, B::StorageImage }, { shared::VS_MC_TF, B::UniformTexelBuffer },
-        { shared::VS_MC_BRICKS, B::StorageImage }, { shared::VS_MC_VISIBILITY, B::StorageImage },
-        { shared::VS_MC_PARAMS, B::StorageBuffer }, { shared::VS_MC_ENV, B::UniformTexelBuffer },
-        { shared::VS_MC_MIPS, B::UniformTexelBuffer }, { shared::VS_MC_DEPTH, B::StorageBuffer },
-        { shared::VS_MC_SUM, B::StorageBuffer }, { shared::VS_MC_COMPENSATION, B::StorageBuffer },
-        { shared::VS_MC_SQUARES, B::StorageBuffer }, { shared::VS_MC_PROGRESS, B::StorageBuffer },
-        { shared::VS_MC_TABLE, B::UniformTexelBuffer }, { shared::VS_MC_RETIRED, B::StorageImage },
-        { shared::VS_MC_LOOKUPS, B::StorageBuffer }, { shared::VS_MC_QUADS, B::StorageImage },
-        { shared::VS_MC_FACTOR_IMAGE, B::StorageImage }, { shared::VS_MC_PATH_POSITION, B::StorageBuffer },
-        { shared::VS_MC_PATH_DIRECTION, B::StorageBuffer }, { shared::VS_MC_PATH_THROUGHPUT, B::StorageBuffer },
-        { shared::VS_MC_PATH_RADIANCE, B::StorageBuffer } });
+    const std::vector<BindingType> bindings = KernelBindings();
     static const char* formats[] = { "r8 visibility", "r16 visibility", "r32f visibility",
       "r8 visibility, counting reads", "no grid" };
     const std::string name = std::string("monte carlo (") + formats[format] + ", " +
@@ -189,6 +177,23 @@ const ComputePipeline& MonteCarloPass::PipelineFor(
         this->Context_, VS_SPIRV(vs_spirv_mc_render_r32f), bindings, sizeof(uint32_t), name, specialization);
   }
   return *pipeline;
+}
+
+std::vector<BindingType> MonteCarloPass::KernelBindings()
+{
+  using B = BindingType;
+  return BindingTypes(shared::VS_MC_BINDING_COUNT,
+    { { shared::VS_MC_VOLUME, B::StorageImage }, { shared::VS_MC_TF, B::UniformTexelBuffer },
+      { shared::VS_MC_BRICKS, B::StorageImage }, { shared::VS_MC_VISIBILITY, B::StorageImage },
+      { shared::VS_MC_PARAMS, B::StorageBuffer }, { shared::VS_MC_ENV, B::UniformTexelBuffer },
+      { shared::VS_MC_MIPS, B::UniformTexelBuffer }, { shared::VS_MC_DEPTH, B::StorageBuffer },
+      { shared::VS_MC_SUM, B::StorageBuffer }, { shared::VS_MC_COMPENSATION, B::StorageBuffer },
+      { shared::VS_MC_SQUARES, B::StorageBuffer }, { shared::VS_MC_PROGRESS, B::StorageBuffer },
+      { shared::VS_MC_TABLE, B::UniformTexelBuffer }, { shared::VS_MC_RETIRED, B::StorageImage },
+      { shared::VS_MC_LOOKUPS, B::StorageBuffer }, { shared::VS_MC_QUADS, B::StorageImage },
+      { shared::VS_MC_FACTOR_IMAGE, B::StorageImage }, { shared::VS_MC_PATH_POSITION, B::StorageBuffer },
+      { shared::VS_MC_PATH_DIRECTION, B::StorageBuffer }, { shared::VS_MC_PATH_THROUGHPUT, B::StorageBuffer },
+      { shared::VS_MC_PATH_RADIANCE, B::StorageBuffer } });
 }
 
 void MonteCarloPass::Prewarm(const shared::VsMonteCarloParams& params, bool table, bool quads, bool cellWalk)

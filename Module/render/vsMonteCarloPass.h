@@ -27,6 +27,7 @@ class Image3D;
 class MajorantGrid;
 class TransferFunctionTable;
 class VisibilityGrid;
+enum class BindingType; // vsPipeline.h
 
 class VISSWEEPCORE_EXPORT MonteCarloPass
 {
@@ -56,6 +57,8 @@ public:
   /** The same from a bound of the largest brick majorant and the brick size, e.g. before the
    *  volume's majorants exist (the prewarm of the first frame's kernel). */
   static bool NeedsCellWalk(double maxMajorant, uint32_t brickSize, const shared::VsMonteCarloParams& params);
+  /** The render kernel's descriptor set layout (sampling/bindings.h VS_MC_*), the same for every variant. */
+  static std::vector<BindingType> KernelBindings();
 
   /** Per pixel (rgb, alpha) means, rows bottom-up. */
   std::vector<float> Mean() const;

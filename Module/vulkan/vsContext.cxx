@@ -359,6 +359,14 @@ void Context::Initialize(const ContextOptions& options)
   {
     wantValidation = options.Validation == 1;
   }
+  if (const char* v = std::getenv("VISSWEEP_SPECIALIZE"))
+  {
+    this->SpecializesModules_ = std::string(v) != "0";
+  }
+  if (options.SpecializeModules >= 0)
+  {
+    this->SpecializesModules_ = options.SpecializeModules == 1;
+  }
   this->Instance_ = MakeInstance(wantValidation, this->ValidationEnabled_, {});
   VULKAN_HPP_DEFAULT_DISPATCHER.init(this->Instance_);
 

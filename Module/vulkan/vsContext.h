@@ -73,6 +73,9 @@ struct VISSWEEPCORE_EXPORT ContextOptions
   std::string DeviceSelector;
   /** -1 = default (on in Debug builds or with VISSWEEP_VALIDATION=1), 0 off, 1 on. */
   int Validation = -1;
+  /** Whether pipelines get their modules with the specialization constants folded in ahead of the
+   *  driver (vsSpirvSpecialization.h): -1 = default (on, unless VISSWEEP_SPECIALIZE=0), 0 off, 1 on. */
+  int SpecializeModules = -1;
 };
 
 class VISSWEEPCORE_EXPORT Context
@@ -98,6 +101,9 @@ public:
   uint32_t QueueFamily() const { return this->QueueFamily_; }
   vk::CommandPool CommandPool() const { return this->CommandPool_; }
   bool ValidationEnabled() const { return this->ValidationEnabled_; }
+  /** Whether its pipelines fold their specialization constants into the module before the driver
+   *  compiles it (ContextOptions::SpecializeModules). */
+  bool SpecializesModules() const { return this->SpecializesModules_; }
 
   /** Validation errors and warnings reported since the context was made. */
   uint64_t ValidationMessageCount() const;
@@ -153,6 +159,7 @@ private:
   vk::CommandPool CommandPool_;
   DeviceInfo Info_;
   bool ValidationEnabled_ = false;
+  bool SpecializesModules_ = true;
   uint64_t ValidationMessages_ = 0;
   mutable std::mutex Mutex_;
   std::mutex QueueMutex_;

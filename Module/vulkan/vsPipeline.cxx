@@ -3,6 +3,7 @@
 #include "vsContext.h"
 #include "vsError.h"
 #include "vsImage.h"
+#include "vsSpirvSpecialization.h"
 
 #include <stdexcept>
 #include <string>
@@ -67,6 +68,18 @@ ComputePipeline::ComputePipeline(std::shared_ptr<Context> context, const uint32_
   vk::ShaderModuleCreateInfo smci;
   smci.codeSize = spirvBytes;
   smci.pCode = spirv;
+  std::vector<uint32_t> specialized;
+  if (!specialization.empty() && context->SpecializesModules())
+  {
+    // On failure the driver specializes the module as it is: slower to compile, the same kernel.
+    specialized = SpecializeSpirv(spirv, spirvBytes, specialization, this->SpecializationProblem_);
+    if (!specialized.empty())
+    {
+      smci.codeSize = specialized.size() * sizeof(uint32_t);
+      smci.pCode = specialized.data();
+      this->SpecializedAhead_ = true;
+    }
+  }
   this->Module_ = device.createShaderModule(smci);
 
   std::vector<vk::DescriptorSetLayoutBinding> layoutBindings;

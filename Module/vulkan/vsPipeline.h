@@ -38,7 +38,9 @@ class VISSWEEPCORE_EXPORT ComputePipeline
 {
 public:
   /** `specialization`: the values of the shader's specialization constants 0, 1, ... (uint32
-   *  each), which the driver folds into the code before compiling it. */
+   *  each). They are folded into the module before the driver compiles it, and the code they make
+   *  unreachable removed (vsSpirvSpecialization.h), where the context does so; else, or if that
+   *  fails, the driver gets the module whole with the values as specialization info. */
   ComputePipeline(std::shared_ptr<Context> context, const uint32_t* spirv, size_t spirvBytes,
     std::vector<BindingType> bindings, uint32_t pushConstantBytes, const std::string& name,
     const std::vector<uint32_t>& specialization = {});
@@ -52,6 +54,10 @@ public:
   const std::vector<BindingType>& Bindings() const { return this->Bindings_; }
   uint32_t PushConstantBytes() const { return this->PushBytes_; }
   const std::string& Name() const { return this->Name_; }
+  /** Whether the driver got the module with its specialization constants folded in (see above). */
+  bool SpecializedAhead() const { return this->SpecializedAhead_; }
+  /** Why it did not where the context does so (the optimizer's message); empty otherwise. */
+  const std::string& SpecializationProblem() const { return this->SpecializationProblem_; }
   std::shared_ptr<Context> GetContext() const { return this->Context_.lock(); }
 
 private:
@@ -60,6 +66,8 @@ private:
   std::string Name_;
   std::vector<BindingType> Bindings_;
   uint32_t PushBytes_ = 0;
+  bool SpecializedAhead_ = false;
+  std::string SpecializationProblem_;
   vk::ShaderModule Module_;
   vk::DescriptorSetLayout SetLayout_;
   vk::PipelineLayout Layout_;

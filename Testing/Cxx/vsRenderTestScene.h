@@ -22,6 +22,20 @@
 
 namespace vstest
 {
+/** A heterogeneous phantom for a 24^3 box: a ball of density falling off from its centre, with a
+ *  denser off-centre lobe and a thin shell: optical depths from ~0 to ~12 across it, and gradients of
+ *  every strength (and their direction) across the image. */
+inline float Phantom(int x, int y, int z)
+{
+  const glm::vec3 p(x, y, z);
+  const float r = glm::length(p - glm::vec3(11.5f));
+  const float lobe = glm::length(p - glm::vec3(15.0f, 9.0f, 12.0f));
+  float s = std::max(0.0f, 1.0f - r / 10.0f) * 0.6f + (lobe < 4.0f ? 0.4f : 0.0f);
+  if (std::abs(r - 9.0f) < 0.8f)
+    s += 0.3f;
+  return std::min(s, 1.0f);
+}
+
 struct RenderScene : VisibilityScene
 {
   std::unique_ptr<vs::DeviceEnvironment> Environment;
@@ -29,8 +43,8 @@ struct RenderScene : VisibilityScene
   glm::vec3 Albedo;
 
   RenderScene(std::array<uint32_t, 3> dims, const std::function<float(int, int, int)>& scalar, double sigmaAtOne,
-    glm::vec3 albedo, const vs::EnvironmentMap& env)
-    : VisibilityScene(dims, scalar, sigmaAtOne)
+    glm::vec3 albedo, const vs::EnvironmentMap& env, std::shared_ptr<vs::Context> context = {})
+    : VisibilityScene(dims, scalar, sigmaAtOne, vs::VolumeGeometry(), std::move(context))
     , Albedo(albedo)
   {
     auto samples = vs::TransferFunctionSamples::FromFunctions(0.0f, 1.0f, 1025,

@@ -35,14 +35,16 @@ inline double ExitDistance(glm::dvec3 p, glm::dvec3 w, glm::dvec3 lo, glm::dvec3
 /** A volume, a linear transfer function (sigma_t = scalar * sigmaPerUnit, white albedo) and its majorants. */
 struct VisibilityScene
 {
-  std::shared_ptr<vs::Context> Context = vs::Context::Default();
+  std::shared_ptr<vs::Context> Context;
   vs::VolumeGeometry Geometry;
   std::unique_ptr<vs::DeviceVolume> Volume;
   std::unique_ptr<vs::TransferFunctionTable> TF;
   std::unique_ptr<vs::MajorantGrid> Majorants;
 
+  /** On `context`, or the process's default context when none is given. */
   VisibilityScene(std::array<uint32_t, 3> dims, const std::function<float(int, int, int)>& scalar,
-    double sigmaAtOne, vs::VolumeGeometry geometry = vs::VolumeGeometry())
+    double sigmaAtOne, vs::VolumeGeometry geometry = vs::VolumeGeometry(), std::shared_ptr<vs::Context> context = {})
+    : Context(context ? std::move(context) : vs::Context::Default())
   {
     this->Geometry = geometry.Dims[0] ? geometry : vs::VolumeGeometry::Axis(dims);
     std::vector<float> v(size_t(dims[0]) * dims[1] * dims[2]);

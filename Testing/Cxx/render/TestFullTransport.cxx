@@ -19,24 +19,12 @@
 using namespace vs::shared;
 using vstest::Against;
 using vstest::AgainstConstant;
+using vstest::Phantom;
 using vstest::RenderScene;
 
 namespace
 {
 const char* kNames[] = { "Uniform", "Environment", "Visibility", "Combined", "TwoStep" };
-
-// A heterogeneous phantom in a 24^3 box: a ball of density falling off from its centre, with a
-// denser off-centre lobe and a thin shell: optical depths from ~0 to ~12 across it.
-float Phantom(int x, int y, int z)
-{
-  const glm::vec3 p(x, y, z);
-  const float r = glm::length(p - glm::vec3(11.5f));
-  const float lobe = glm::length(p - glm::vec3(15.0f, 9.0f, 12.0f));
-  float s = std::max(0.0f, 1.0f - r / 10.0f) * 0.6f + (lobe < 4.0f ? 0.4f : 0.0f);
-  if (std::abs(r - 9.0f) < 0.8f)
-    s += 0.3f;
-  return std::min(s, 1.0f);
-}
 
 // An orthographic camera whose rays travel along (0, sin t, cos t), centred on `centre`, covering
 // `half` world units either side: a view of the z = min face at cos(angle) = cos t to its normal.

@@ -19,23 +19,11 @@
 using namespace vs::shared;
 using vstest::Against;
 using vstest::AgainstConstant;
+using vstest::Phantom;
 using vstest::RenderScene;
 
 namespace
 {
-// TestFullTransport's phantom: a ball falling off from its centre, a denser lobe and a thin shell, so
-// that gradients of every strength (and their direction) vary across the image.
-float Phantom(int x, int y, int z)
-{
-  const glm::vec3 p(x, y, z);
-  const float r = glm::length(p - glm::vec3(11.5f));
-  const float lobe = glm::length(p - glm::vec3(15.0f, 9.0f, 12.0f));
-  float s = std::max(0.0f, 1.0f - r / 10.0f) * 0.6f + (lobe < 4.0f ? 0.4f : 0.0f);
-  if (std::abs(r - 9.0f) < 0.8f)
-    s += 0.3f;
-  return std::min(s, 1.0f);
-}
-
 // The surface fields as the mapper sets them for the phantom (scalars in [0, 1], spacing 1, unit distance 1).
 void SetSurface(VsMonteCarloParams& p, double blending, double diffuse, double specular, double power)
 {
