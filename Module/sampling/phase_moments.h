@@ -83,10 +83,11 @@ VS_FUNC vec3 vs_similar_albedo(vec3 albedo, float g)
 }
 
 /* The transmittance of a segment in the similar medium from its real one T (in [0, 1]): its optical depth
- * times `ratio`, the segment's sigma_t* / sigma_t per channel (> 0), T^ratio. */
+ * times `ratio`, the segment's sigma_t* / sigma_t per channel (> 0), T^ratio (1 at T = 1, 0 at T = 0). */
 VS_FUNC vec3 vs_similar_transmittance(float T, vec3 ratio)
 {
-  return pow(vec3(clamp(T, 0.0f, 1.0f)), ratio);
+  /* one logarithm for the three channels (T = 0: log2 -inf, exp2 0) */
+  return exp2(ratio * log2(clamp(T, 0.0f, 1.0f)));
 }
 
 VS_NAMESPACE_END

@@ -76,8 +76,8 @@ shared vec3 sDirection[256]; /* VS_SPEC_SIMILAR: w_n */
  * order's light Henyey-Greenstein's of I_1 and M_1 (the header above). */
 vec3 similar_source(ivec3 q, vec4 e, vec3 w, float g)
 {
-  if (P.firstOrder == 0u)
-    return (1.0 - g) * e.rgb;
+  if (P.firstOrder == 0u || !(e.a > 0.0))
+    return (1.0 - g) * e.rgb; /* without extinction: 0 */
   vec3 I = imageLoad(uOrderIn, q).rgb;
   int layer = int(P.cellsZ);
   vec3 phased = vs_hg_lobe_light(I, imageLoad(uMoment, q).rgb, imageLoad(uMoment, q + ivec3(0, 0, layer)).rgb,
@@ -137,11 +137,13 @@ void main()
         float v = visibility_texel(uvec3(q), n, D);
         float next = min(t, v0 / max(v, 1e-6));
         vec4 e = imageLoad(uEmitIn, q);
-        vec3 St = vs_similar_extinction(e.a, imageLoad(uAlbedo, q).rgb, g);
+        /* a cell without extinction (air) reads nothing more, and a segment between two such keeps the real
+           transmittance (ratio 1) */
+        vec3 St = e.a > 0.0 ? vs_similar_extinction(e.a, imageLoad(uAlbedo, q).rgb, g) : vec3(0.0);
         vec3 S = similar_source(q, e, w, g);
         float sigma = prevSigma + e.a;
-        vec3 ratio = sigma > 0.0 ? (prevSt + St) / sigma : vec3(1.0);
-        vec3 tsNext = ts * vs_similar_transmittance(t > 0.0 ? next / t : 0.0, ratio);
+        float T = t > 0.0 ? next / t : 0.0;
+        vec3 tsNext = sigma > 0.0 ? ts * vs_similar_transmittance(T, (prevSt + St) / sigma) : ts * T;
         if (sigma > 0.0)
         {
           acc += (ts - tsNext + pending) * (prevS + S) / (prevSt + St);
