@@ -34,7 +34,8 @@
  * The preview's phase towards the environment (issue 39): with VS_EA_ANISOTROPIC (P.anisotropy != 0 and the light
  * volume's band-1 moment uLightM, vsLightVolume.h) the single scattering of the environment's light is
  * Henyey-Greenstein's, exact in bands 0 and 1 (I + 3 g M.d) / (4 pi), the light taken as one HG lobe around M
- * (sampling/phase_moments.h vs_hg_lobe_light; M trilinear as I); the orders 2 .. K in I stay isotropic. Without it, I / (4 pi) as before (the same code).
+ * (sampling/phase_moments.h vs_hg_lobe_light; M trilinear as I; with multiple scattering I and M are all the
+ * orders', vsLightVolume.h). Without it, I / (4 pi) as before (the same code).
  * With VS_EA_SHADE in the preview: the surface lobe of the Monte Carlo kernel (surface_scattering.glsl),
  * the same mixture k(w) = (1 - P_s) albedo f_HG + P_s f_r |n.w| towards each light, and towards the
  * environment (1 - P_s) albedo I / (4 pi) + P_s (k_d albedo + k_s) I / (4 pi): the light volume's I / (4 pi)

@@ -145,7 +145,12 @@ VS_CONST uint VS_LIGHTMS_DIRECT = 12u;    /* rgba32f image per cell: rgb the sce
 VS_CONST uint VS_LIGHTMS_TRANSMITTANCE = 13u; /* rgba32f image of cells.x x cells.y x 2 cells.z: per cell the
                                              transmittance towards light l at z + (l / 4) cells.z, component l % 4 */
 VS_CONST uint VS_LIGHTMS_SCENE = 14u;     /* storage buffer: VsLightSceneParams (light_volume_lights.comp) */
-VS_CONST uint VS_LIGHTMS_BINDING_COUNT = 15u;
+VS_CONST uint VS_LIGHTMS_MOMENT = 15u;    /* rgba32f image of 3 layers of cells: the first order's band-1 moment M_1
+                                             (vsLightVolume.h Moment()'s layout; read by the scatter pass with the
+                                             phase's anisotropy) */
+VS_CONST uint VS_LIGHTMS_MOMENT_SUM = 16u; /* the same layout: the band-1 moment of the orders 2 .. k + 1 (their sum) */
+VS_CONST uint VS_LIGHTMS_ORDER_MOMENT = 17u; /* the same layout: the band-1 moment of order k + 1 (the tail's) */
+VS_CONST uint VS_LIGHTMS_BINDING_COUNT = 18u;
 
 /* The majorant bricks' scalar ranges (volume/majorant_minmax.comp, volume/vsMajorantGrid.cxx). */
 VS_CONST uint VS_RANGES_VOLUME = 0u;

@@ -59,8 +59,11 @@ struct VsLightScatterParams
                    D x D grid, each standing for stride^2 texels (1: all) */
   uint offsetX;
   uint offsetY;
-  uint unused0;
-  uint unused1;
+  float anisotropy;  /* with the shader's specialization constant 1 (issue 39): the phase's g, the orders
+                       carried on in the similar medium (phase_moments.h vs_similar_*) */
+  uint firstOrder;   /* with it: 1 when the order reads the first order's light (k = 2: its source is the real
+                       phase's, the lobe of I_1 and the first order's moment M_1 towards c); else the similar
+                       medium's source sigma* a* I_k = (1 - g) sigma a I_k */
 };
 
 VS_NAMESPACE_END
@@ -71,7 +74,7 @@ static_assert(sizeof(vs::shared::VsLightVolumeParams) == 12, "VsLightVolumeParam
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsX) == 0, "VsLightVolumeParams layout");
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsY) == 4, "VsLightVolumeParams layout");
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsZ) == 8, "VsLightVolumeParams layout");
-static_assert(sizeof(vs::shared::VsLightScatterParams) == 32, "VsLightScatterParams: 8 uints");
+static_assert(sizeof(vs::shared::VsLightScatterParams) == 32, "VsLightScatterParams: 7 uints and a float");
 static_assert(offsetof(vs::shared::VsLightAlbedoParams, cellSize) == sizeof(vs::shared::VsVolumeParams),
   "VsLightAlbedoParams layout");
 static_assert(sizeof(vs::shared::VsLightAlbedoParams) == sizeof(vs::shared::VsVolumeParams) + 32,

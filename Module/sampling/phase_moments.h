@@ -65,6 +65,31 @@ VS_FUNC vec3 vs_hg_lobe_light(vec3 I, vec3 mx, vec3 my, vec3 mz, vec3 d, float g
     vs_hg_lobe_channel(I.y, vec3(mx.y, my.y, mz.y), d, g), vs_hg_lobe_channel(I.z, vec3(mx.z, my.z, mz.z), d, g));
 }
 
+/* Similarity (issue 39: the light volume's orders >= 2 under an anisotropic phase; Wyman, Patterson and
+ * Zhao's similarity relations, the delta-isotropic phase g delta(forward) + (1 - g) / (4 pi)). Light that has
+ * scattered once is carried on in the similar medium: an isotropic phase, the extinction and albedo
+ *     sigma_t* = sigma_t (1 - a g),   a* = a (1 - g) / (1 - a g),
+ * which keep the absorption sigma_t (1 - a) and the reduced scattering sigma_s (1 - g) (the transport mean
+ * free path: the diffusion equation of both media is the same, so their fluence and flux are). Per channel
+ * (the albedo is rgb). For g = 0 both are the medium itself. */
+VS_FUNC vec3 vs_similar_extinction(float sigma, vec3 albedo, float g)
+{
+  return sigma * (vec3(1.0f) - g * albedo);
+}
+
+VS_FUNC vec3 vs_similar_albedo(vec3 albedo, float g)
+{
+  return albedo * (1.0f - g) / (vec3(1.0f) - g * albedo);
+}
+
+/* The transmittance of a segment in the similar medium from its real one T (in [0, 1]): its optical depth
+ * times `ratio`, the segment's sigma_t* / sigma_t per channel (> 0), T^ratio (1 at T = 1, 0 at T = 0). */
+VS_FUNC vec3 vs_similar_transmittance(float T, vec3 ratio)
+{
+  /* one logarithm for the three channels (T = 0: log2 -inf, exp2 0) */
+  return exp2(ratio * log2(clamp(T, 0.0f, 1.0f)));
+}
+
 VS_NAMESPACE_END
 
 #endif

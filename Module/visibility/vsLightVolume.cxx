@@ -2,6 +2,7 @@
 #include "sampling/bindings.h"
 #include "sampling/light_volume_params.h"
 #include "sampling/octahedral.h"
+#include "sampling/phase_moments.h"
 #include "sampling/update_order.h"
 #include "vsBatch.h"
 #include "vsBuffer.h"
@@ -70,14 +71,17 @@ std::vector<BindingType> ScatterBindings()
       { shared::VS_LIGHTMS_SOURCES, B::StorageBuffer }, { shared::VS_LIGHTMS_STEPS, B::StorageBuffer },
       { shared::VS_LIGHTMS_ORDER_IN, B::StorageImage }, { shared::VS_LIGHTMS_ORDER_OUT, B::StorageImage },
       { shared::VS_LIGHTMS_DIRECT, B::StorageImage }, { shared::VS_LIGHTMS_TRANSMITTANCE, B::StorageImage },
-      { shared::VS_LIGHTMS_SCENE, B::StorageBuffer } });
+      { shared::VS_LIGHTMS_SCENE, B::StorageBuffer }, { shared::VS_LIGHTMS_MOMENT, B::StorageImage },
+      { shared::VS_LIGHTMS_MOMENT_SUM, B::StorageImage }, { shared::VS_LIGHTMS_ORDER_MOMENT, B::StorageImage } });
 }
 
-std::shared_ptr<ComputePipeline> ScatterPipeline(const std::shared_ptr<Context>& context, vk::Format format, uint32_t D)
+std::shared_ptr<ComputePipeline> ScatterPipeline(
+  const std::shared_ptr<Context>& context, vk::Format format, uint32_t D, bool similar)
 {
   const uint32_t push = sizeof(shared::VsLightScatterParams);
-  const std::vector<uint32_t> specialization{ D };
-  const std::string name = "light volume scatter (D " + std::to_string(D);
+  const std::vector<uint32_t> specialization{ D, similar ? 1u : 0u };
+  const std::string name =
+    std::string(similar ? "light volume scatter, similar medium (D " : "light volume scatter (D ") + std::to_string(D);
   if (format == vk::Format::eR8Unorm)
     return SharedPipeline(
       context, VS_SPIRV(vs_spirv_light_volume_scatter_r8), ScatterBindings(), push, name + ", r8)", specialization);
@@ -183,6 +187,13 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
   s.Grid = grid.ContentSerial();
   s.Environment = environment.Serial();
   s.Intensity = intensity;
+  if (!std::isfinite(scattering.Anisotropy) || std::abs(scattering.Anisotropy) >= 1.0f)
+  {
+    throw InputError("the light volume's phase anisotropy must lie in (-1, 1), got " +
+      std::to_string(scattering.Anisotropy));
+  }
+  // The orders 2 .. Events in the similar medium of g (vsLightVolume.h): where the phase is not isotropic.
+  const bool similar = multiple && std::abs(scattering.Anisotropy) >= shared::VS_HG_ISOTROPIC_G;
   if (multiple)
   {
     const MultipleScattering& m = scattering;
@@ -190,6 +201,10 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
     const uint32_t counts[4] = { std::min(m.Orders, m.Events), m.Events, m.AlbedoSamples, m.DirectionStride };
     h = Hash(h, counts, sizeof(counts));
     h = Hash(h, &m.MaxRatio, sizeof(m.MaxRatio));
+    if (similar)
+    {
+      h = Hash(h, &m.Anisotropy, sizeof(m.Anisotropy)); // the orders >= 2 depend on g's value
+    }
     s.Scattering = h | 1u; // never 0
   }
   if (lit)
@@ -201,12 +216,7 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
     h = Hash(h, &m.LightStep, sizeof(m.LightStep));
     s.Lights = h | 1u;
   }
-  if (!std::isfinite(scattering.Anisotropy) || std::abs(scattering.Anisotropy) >= 1.0f)
-  {
-    throw InputError("the light volume's phase anisotropy must lie in (-1, 1), got " +
-      std::to_string(scattering.Anisotropy));
-  }
-  // The band-1 moment depends on whether the phase is anisotropic, not on g's value (vsLightVolume.h).
+  // The first order's band-1 moment depends on whether the phase is anisotropic, not on g's value (vsLightVolume.h).
   s.Moment = scattering.Anisotropy != 0.0f;
   if (this->Image_ && s.ServedBy(this->Built_))
   {
@@ -272,7 +282,7 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
   this->BuiltLights_ = scattering.Lights;
   if (multiple)
   {
-    this->Scatter(grid, scattering, lit);
+    this->Scatter(grid, scattering, lit, similar);
   }
   this->LastWallSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   this->Built_ = s;
@@ -342,7 +352,10 @@ void LightVolume::LightPass(const VisibilityGrid& grid, const MultipleScattering
     .Bind(shared::VS_LIGHTMS_ORDER_OUT, *this->Direct_)
     .Bind(shared::VS_LIGHTMS_DIRECT, *this->Direct_)
     .Bind(shared::VS_LIGHTMS_TRANSMITTANCE, *this->Transmittance_)
-    .Bind(shared::VS_LIGHTMS_SCENE, *this->SceneParams_);
+    .Bind(shared::VS_LIGHTMS_SCENE, *this->SceneParams_)
+    .Bind(shared::VS_LIGHTMS_MOMENT, *this->Direct_)
+    .Bind(shared::VS_LIGHTMS_MOMENT_SUM, *this->Direct_)
+    .Bind(shared::VS_LIGHTMS_ORDER_MOMENT, *this->Direct_);
   Batch batch(this->Context_);
   batch.BeginTimer("lights");
   batch.Dispatch(*pipeline, set, nullptr, 0, (cells[0] + 3) / 4, (cells[1] + 3) / 4, (cells[2] + 3) / 4);
@@ -363,7 +376,7 @@ std::vector<float> LightVolume::DownloadTransmittance() const
   return out;
 }
 
-void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& m, bool lit)
+void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& m, bool lit, bool similar)
 {
   const std::array<uint32_t, 3> cells = this->Cells_;
   const uint32_t side = grid.Side();
@@ -379,10 +392,23 @@ void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& 
   image(this->EmitB_, "light volume emission B");
   image(this->OrderA_, "light volume order A");
   image(this->OrderB_, "light volume order B");
+  const auto layers = [&](std::unique_ptr<Image3D>& img, const char* name) {
+    if (!img || img->Width() != cells[0] || img->Height() != cells[1] || img->Depth() != 3 * cells[2])
+    {
+      img.reset();
+      img = std::make_unique<Image3D>(
+        this->Context_, cells[0], cells[1], 3 * cells[2], vk::Format::eR32G32B32A32Sfloat, name);
+    }
+  };
+  if (similar)
+  {
+    layers(this->MomentSum_, "light volume band-1 moment of the orders 2 ..");
+    layers(this->OrderMoment_, "light volume band-1 moment of an order");
+  }
 
   // Each direction's step in cells: the world direction in index space, per cell, one cell along its
-  // longest axis.
-  std::vector<glm::vec4> steps(size_t(side) * side);
+  // longest axis; then each direction's world direction w_n (read in the similar medium, for the moment).
+  std::vector<glm::vec4> steps(size_t(2) * side * side);
   const glm::mat3 toIndex(m.Params.worldToIndex);
   const glm::vec3 cellSize = grid.CellSize();
   for (uint32_t n = 0; n < side * side; ++n)
@@ -390,6 +416,7 @@ void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& 
     const glm::vec3 d = toIndex * SweepPlan::Direction(n, grid.Parameters()) / cellSize;
     const float longest = std::max(std::abs(d.x), std::max(std::abs(d.y), std::abs(d.z)));
     steps[n] = glm::vec4(longest > 0.0f ? d / longest : glm::vec3(0.0f), 0.0f);
+    steps[side * side + n] = glm::vec4(SweepPlan::Direction(n, grid.Parameters()), 0.0f);
   }
   const uint64_t stepBytes = steps.size() * sizeof(glm::vec4);
   if (!this->Steps_ || this->Steps_->Size() != stepBytes)
@@ -413,7 +440,8 @@ void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& 
 
   const std::shared_ptr<ComputePipeline> albedoPipeline = SharedPipeline(this->Context_,
     VS_SPIRV(vs_spirv_light_volume_albedo), ScatterBindings(), 0, "light volume albedo");
-  const std::shared_ptr<ComputePipeline> scatter = ScatterPipeline(this->Context_, grid.Image().Format(), side);
+  const std::shared_ptr<ComputePipeline> scatter =
+    ScatterPipeline(this->Context_, grid.Image().Format(), side, similar);
   const auto bindAll = [&](DescriptorSet& set, const Image3D& in, const Image3D& out, const Image3D& orderIn,
                        const Image3D& orderOut) {
     set.Bind(shared::VS_LIGHTMS_VOLUME, m.Volume->Image())
@@ -431,7 +459,11 @@ void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& 
       // The lights' (read by the albedo pass with lit; placeholders otherwise, unread)
       .Bind(shared::VS_LIGHTMS_DIRECT, lit ? *this->Direct_ : *this->Albedo_)
       .Bind(shared::VS_LIGHTMS_TRANSMITTANCE, lit ? *this->Transmittance_ : *this->Albedo_)
-      .Bind(shared::VS_LIGHTMS_SCENE, lit ? *this->SceneParams_ : *this->AlbedoParams_);
+      .Bind(shared::VS_LIGHTMS_SCENE, lit ? *this->SceneParams_ : *this->AlbedoParams_)
+      // The moment's (similar; placeholders otherwise, unread)
+      .Bind(shared::VS_LIGHTMS_MOMENT, similar ? *this->Moment_ : *this->Albedo_)
+      .Bind(shared::VS_LIGHTMS_MOMENT_SUM, similar ? *this->MomentSum_ : *this->Albedo_)
+      .Bind(shared::VS_LIGHTMS_ORDER_MOMENT, similar ? *this->OrderMoment_ : *this->Albedo_);
   };
   const uint32_t gx = (cells[0] + 3) / 4, gy = (cells[1] + 3) / 4, gz = (cells[2] + 3) / 4;
   const uint32_t orders = std::min(m.Orders, m.Events);
@@ -463,6 +495,13 @@ void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& 
     params.stride = stride;
     params.offsetX = stride > 1 ? (k - 2) % stride : 0u;
     params.offsetY = stride > 1 ? ((k - 2) / stride) % stride : 0u;
+    if (similar)
+    {
+      // The order k = 2 scatters the first order's light by the real phase, the others carry on in the
+      // similar medium (light_volume_scatter.glsl).
+      params.anisotropy = m.Anisotropy;
+      params.firstOrder = k == 2 ? 1u : 0u;
+    }
     batch.Dispatch(*scatter, *sets.back(), &params, sizeof(params), gx, gy, gz);
     std::swap(in, out);
     std::swap(orderIn, orderOut);
@@ -471,10 +510,11 @@ void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& 
   batch.Submit();
   this->LastSeconds_ += batch.Seconds("scatter");
   this->LastScatterSeconds_ = batch.Seconds("scatter");
-  if (orders >= 2 && m.Events > orders)
+  if (orders >= 2 && (m.Events > orders || similar))
   {
     // After the last swap orderIn holds I_K, orderOut I_{K-1}.
-    this->AddTail(*orderIn, *orderOut, m.Events - orders, m.MaxRatio);
+    this->AddTail(*orderIn, *orderOut, m.Events - orders, m.MaxRatio, similar ? this->MomentSum_.get() : nullptr,
+      similar ? this->OrderMoment_.get() : nullptr);
   }
 }
 
@@ -484,10 +524,26 @@ void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& 
 // keeps cells deep in a dense medium, whose light still grows from order to order (it diffuses in
 // from the surface), from extrapolating that growth. On the host: a reduction and one pass over the
 // cells (109 k on ch2: milliseconds).
-void LightVolume::AddTail(const Image3D& last, const Image3D& before, uint32_t events, float maxRatio)
+void LightVolume::AddTail(const Image3D& last, const Image3D& before, uint32_t events, float maxRatio,
+  const Image3D* momentSum, const Image3D* lastMoment)
 {
   const size_t n = size_t(this->Cells_[0]) * this->Cells_[1] * this->Cells_[2];
-  std::vector<float> total(4 * n), k(4 * n), k1(4 * n);
+  std::vector<float> total(4 * n), k(4 * n), k1(4 * n), moment, momentK;
+  if (momentSum && lastMoment)
+  {
+    // The light volume's moment: the first order's, the orders 2 .. K's and the tail's, the last order's M_K
+    // times the same series per cell and channel as I_K.
+    moment.resize(12 * n);
+    momentK.resize(12 * n);
+    std::vector<float> sum(12 * n);
+    this->Moment_->Download(moment.data(), moment.size() * sizeof(float));
+    momentSum->Download(sum.data(), sum.size() * sizeof(float));
+    lastMoment->Download(momentK.data(), momentK.size() * sizeof(float));
+    for (size_t i = 0; i < moment.size(); ++i)
+    {
+      moment[i] += sum[i];
+    }
+  }
   this->Image_->Download(total.data(), total.size() * sizeof(float));
   last.Download(k.data(), k.size() * sizeof(float));
   before.Download(k1.data(), k1.size() * sizeof(float));
@@ -509,10 +565,19 @@ void LightVolume::AddTail(const Image3D& last, const Image3D& before, uint32_t e
       const double ik = k[4 * i + c], ik1 = k1[4 * i + c];
       const double r = std::max(0.0, ik1 > 0.0 ? std::min(global, ik / ik1) : global);
       // sum_{m=1..N} r^m = r (1 - r^N) / (1 - r), r < 1
-      total[4 * i + c] += float(ik * r * (1.0 - std::pow(r, N)) / (1.0 - r));
+      const double series = r * (1.0 - std::pow(r, N)) / (1.0 - r);
+      total[4 * i + c] += float(ik * series);
+      for (size_t a = 0; a < moment.size() / (4 * n); ++a)
+      {
+        moment[4 * (a * n + i) + c] += float(momentK[4 * (a * n + i) + c] * series);
+      }
     }
   }
   this->Image_->Upload(total.data(), total.size() * sizeof(float));
+  if (!moment.empty())
+  {
+    this->Moment_->Upload(moment.data(), moment.size() * sizeof(float));
+  }
 }
 
 std::vector<float> LightVolume::DownloadMoment() const

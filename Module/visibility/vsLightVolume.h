@@ -38,10 +38,17 @@
 // direction towards texel n's light; Moment(): rgba32f of cells.x x cells.y x 3 cells.z, component a of M
 // at z + a cells.z, rgb per channel), from which the preview's single scattering of the environment's light
 // is Henyey-Greenstein's up to band 1 (sampling/phase_moments.h): (I + 3 g M.d) / (4 pi), d the camera ray.
-// M does not depend on g's value, only on whether it is needed: a change from g = 0 to g != 0 builds again
-// (to make M) unless M is there, from one g != 0 to another or back to 0 does not (M is kept, unread at
-// g = 0), and a camera move never does. The orders 2 .. Events
-// stay isotropic (docs/reference.md: their bias).
+// With single scattering M does not depend on g's value, only on whether it is needed: a change from g = 0 to
+// g != 0 builds again (to make M) unless M is there, from one g != 0 to another or back to 0 does not (M is kept,
+// unread at g = 0), and a camera move never does.
+// With multiple scattering and |g| >= VS_HG_ISOTROPIC_G the orders 2 .. Events follow g too (issue 39): the
+// first order's light scatters into the second by the real phase (the HG lobe of I_1 and M_1 towards each
+// cell, phase_moments.h), and the orders carry on in the similar medium of g (isotropic, sigma_t (1 - a g),
+// albedo a (1 - g) / (1 - a g): the similarity relations, phase_moments.h vs_similar_*;
+// light_volume_scatter.glsl); each order's band-1 moment is gathered with its light, and Moment() holds the
+// sum over all the orders (the tail's as I's: AddTail), so that the preview's last event towards the camera is
+// HG's of the whole light. Then another g builds again (g is part of the signature), g = 0 builds the isotropic
+// orders of before (bit for bit) and a camera move never builds. docs/reference.md: the bias measured.
 #ifndef vsLightVolume_h
 #define vsLightVolume_h
 
@@ -102,8 +109,8 @@ public:
     std::vector<shared::VsSceneLight> Lights;
     /** The lights' march step in world units (<= 0: the smallest voxel spacing of Params). */
     float LightStep = 0.0f;
-    /** The phase's Henyey-Greenstein g (the preview's): != 0 builds the first order's band-1 moment too
-     *  (Moment()), whatever the orders; its value is not read. */
+    /** The phase's Henyey-Greenstein g (the preview's): != 0 builds the band-1 moment too (Moment()),
+     *  whatever the orders; with multiple scattering the orders 2 .. Events follow g's value (above). */
     float Anisotropy = 0.0f;
   };
   /** Update with multiple scattering (Orders >= 2 and Events >= 2; else as Update above) and the lights.
@@ -122,7 +129,8 @@ public:
   const Image3D& Image() const { return *this->Image_; }
   /** The transmittance towards each light of the last build (layout above); nullptr when it had none. */
   const Image3D* Transmittance() const { return this->Built_.Lights != 0 ? this->Transmittance_.get() : nullptr; }
-  /** The first order's band-1 moment of the last build (layout above); nullptr when it was built with
+  /** The band-1 moment of the last build (layout above; the first order's, with multiple scattering and
+   *  g != 0 all the orders'); nullptr when it was built with
    *  Anisotropy 0 (an Update with Anisotropy 0 keeps one that is there). */
   const Image3D* Moment() const { return this->Built_.Moment ? this->Moment_.get() : nullptr; }
   /** The band-1 moment per cell, as Download() (cells.x x cells.y x 3 cells.z); empty without one. */
@@ -161,13 +169,15 @@ private:
         Scattering == built.Scattering && Lights == built.Lights && (!Moment || built.Moment);
     }
   };
-  void Scatter(const VisibilityGrid& grid, const MultipleScattering& scattering, bool lit);
+  void Scatter(const VisibilityGrid& grid, const MultipleScattering& scattering, bool lit, bool similar);
   void LightPass(const VisibilityGrid& grid, const MultipleScattering& scattering);
-  void AddTail(const Image3D& last, const Image3D& before, uint32_t events, float maxRatio);
+  void AddTail(const Image3D& last, const Image3D& before, uint32_t events, float maxRatio,
+    const Image3D* momentSum = nullptr, const Image3D* lastMoment = nullptr);
 
   std::shared_ptr<Context> Context_;
   std::unique_ptr<Image3D> Image_;
-  std::unique_ptr<Image3D> Moment_; // the first order's band-1 moment (Anisotropy != 0)
+  std::unique_ptr<Image3D> Moment_; // the band-1 moment (Anisotropy != 0): the first order's, with the others'
+  std::unique_ptr<Image3D> MomentSum_, OrderMoment_; // the orders 2 .. K's band-1 moment, the last order's
   std::unique_ptr<Buffer> Radiance_; // E_n, one vec4 per direction
   // Multiple scattering: per cell the albedo, two orders' emission and light (ping-pong); the steps per
   // direction, the albedo pass's parameters.

@@ -9,6 +9,10 @@
 //  - The light volume is built again when g becomes non-zero (to make the moment), not for another non-zero g,
 //    not for g back to 0 (the moment is kept, unread), and never for a camera move.
 //  - g = 0 is the isotropic preview, bit for bit, before and after a round trip through g != 0.
+//  - Under full transport (1024 events: the light volume's orders >= 2 carried in the similar medium of g, their
+//    band-1 moment read at the preview's last event) the preview's mean lies within 10% of the estimate's at
+//    g = 0.6 (the build before: -20%, it fails) and 25% at g = -0.6 (the first order's lobe, as above); another
+//    g builds the light volume again, a camera move does not, and g = 0 is the preview of before bit for bit.
 #include "vsLitBallScene.h"
 #include "vtkEnvironmentMapSource.h"
 
@@ -98,5 +102,40 @@ int TestMapperPreviewAnisotropy(int, char*[])
   Check(std::abs(iso / mb - 1.0) > 2.0 * std::abs(bb) && std::abs(iso / mb - 1.0) > 0.25,
     "g -0.6: the isotropic preview is far off (the test can tell)");
   Check(std::string(s.Mapper->GetLastError()).empty(), std::string("no error: ") + s.Mapper->GetLastError());
+
+  // Full transport (MaximumScatteringEvents 1024, the orders >= 2 in the similar medium of g and their band-1
+  // moment at the preview's last event; vsLightVolume.h): the same ball and sun.
+  Scene f;
+  f.Mapper->SetMaximumScatteringEvents(1024);
+  const std::vector<float> full0 = f.Preview();
+  const int fullBuilds = f.Mapper->GetLightVolumeBuildCount();
+  const double gs[3] = { 0.0, 0.6, -0.6 };
+  double pm[3], em[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    f.Mapper->SetScatteringAnisotropy(gs[i]);
+    pm[i] = Mean(f.Preview());
+    if (i == 1)
+    {
+      f.Renderer->GetActiveCamera()->Azimuth(30.0);
+      f.Preview();
+      f.Renderer->GetActiveCamera()->Azimuth(-30.0);
+      Check(f.Mapper->GetLightVolumeBuildCount() == fullBuilds + 1,
+        "full transport: g from 0 to 0.6 builds the light volume once, a camera move not again");
+    }
+    em[i] = Mean(f.Estimate(1024));
+    std::printf("full transport, g %.1f: estimate %.5f, preview %.5f (%+.1f%%)\n", gs[i], em[i], pm[i],
+      100.0 * (pm[i] / em[i] - 1.0));
+  }
+  Check(f.Mapper->GetLightVolumeBuildCount() == fullBuilds + 2,
+    "full transport: another g builds again (the orders >= 2 depend on g's value)");
+  f.Mapper->SetScatteringAnisotropy(0.0);
+  Check(f.Preview() == full0, "full transport: g = 0 is the preview of before, bit for bit, after g != 0");
+  // The bounds: the build before (isotropic orders >= 2) measured -20.0% at g 0.6 (it fails here) and -12.5%
+  // at g -0.6, where its isotropic orders' excess cancelled part of the first order's deficit (the lobe's, -16.6%
+  // above); now +-0.6 give -1.5% and -19.9% (loaded machine, docs/reference.md).
+  Check(std::abs(pm[1] / em[1] - 1.0) < 0.10, "full transport, g 0.6: the preview's mean within 10% of the estimate's");
+  Check(std::abs(pm[2] / em[2] - 1.0) < 0.25, "full transport, g -0.6: the preview's mean within 25% of the estimate's");
+  Check(std::string(f.Mapper->GetLastError()).empty(), std::string("no error: ") + f.Mapper->GetLastError());
   return vstest::ExitCode();
 }
