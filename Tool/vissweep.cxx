@@ -7,6 +7,7 @@
 #include "vsBenchLightVolume.h"
 #include "vsBenchPreview.h"
 #include "vsBenchDenoise.h"
+#include "vsBenchKernels.h"
 #include "vsBenchSweeps.h"
 #include "vsRenderCommand.h"
 #include "vsContext.h"
@@ -36,6 +37,7 @@ int main(int argc, char** argv)
   vstool::AddBenchLightVolume(*bench);
   vstool::AddBenchPreview(*bench);
   vstool::AddBenchDenoise(*bench);
+  vstool::AddBenchKernels(*bench);
   vstool::AddRender(app);
   try
   {

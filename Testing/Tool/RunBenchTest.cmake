@@ -1,6 +1,6 @@
 # Drives the benchmarks in their quick forms for the tool's ctests (cmake -P) and checks
 # that what they report is consistent, not how fast it is (speed lives in the benchmarks).
-#   -DVISSWEEP=<exe> -DOUT_DIR=<dir> -DBENCH=overhead|frames|animation|stress|lightvolume|preview|denoise -DSCENE=<json>
+#   -DVISSWEEP=<exe> -DOUT_DIR=<dir> -DBENCH=overhead|frames|animation|stress|lightvolume|preview|denoise|kernels -DSCENE=<json>
 cmake_minimum_required(VERSION 3.19)
 file(REMOVE_RECURSE "${OUT_DIR}")
 file(MAKE_DIRECTORY "${OUT_DIR}")
@@ -17,6 +17,8 @@ elseif (BENCH STREQUAL "denoise")
   set(args bench denoise "${SCENE}" --size 24 --reference-spp 32 --times 0.2,0.5 --radius 2 --json "${json}")
 elseif (BENCH STREQUAL "lightvolume")
   set(args bench lightvolume "${SCENE}" --repeats 2 --json "${json}")
+elseif (BENCH STREQUAL "kernels")
+  set(args bench kernels --repeats 1 --json "${json}")
 elseif (BENCH STREQUAL "animation")
   set(args bench animation "${SCENE}" --frames 0:2 --width 16 --height 16 --reference-spp 16 --budget-per-frame 0.2
     --repeats 2 --json "${json}" --plot "${OUT_DIR}/plot.png")
@@ -78,6 +80,19 @@ elseif (BENCH STREQUAL "lightvolume")
     endif ()
     string(JSON t GET "${j}" ${key} 1)
     require_positive(${t} "${key}")
+  endforeach ()
+elseif (BENCH STREQUAL "kernels")
+  # Four kernels, each made once folded and once whole, each time positive.
+  string(JSON n LENGTH "${j}" kernels)
+  if (NOT n EQUAL 4)
+    message(FATAL_ERROR "${n} kernels, expected 4")
+  endif ()
+  math(EXPR last "${n} - 1")
+  foreach (i RANGE ${last})
+    foreach (key folded_seconds whole_seconds)
+      string(JSON t GET "${j}" kernels ${i} ${key} 0)
+      require_positive(${t} "kernel ${i} ${key}")
+    endforeach ()
   endforeach ()
 elseif (BENCH STREQUAL "denoise")
   # Four variants (the estimate, the hand-over, denoised, both), each with a point per time; the filtered
