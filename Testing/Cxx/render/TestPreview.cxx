@@ -426,6 +426,18 @@ vs::LightVolume::MultipleScattering Scattering(const VisibilityScene& scene, con
 
 }
 
+namespace
+{
+// The white furnaces' density (LitBox's box): a ball falling off from its centre and a dense lobe.
+float FurnaceDensity(int x, int y, int z)
+{
+  const glm::vec3 p(x, y, z);
+  const float r = glm::length(p - glm::vec3(16.0f));
+  const float lobe = glm::length(p - glm::vec3(21.0f, 12.0f, 16.0f));
+  return std::min(1.0f, std::max(0.0f, 1.0f - r / 15.0f) * 2.0f + (lobe < 6.0f ? 6.0f : 0.0f));
+}
+}
+
 // The white furnace: a medium of albedo 1 under a constant sky L has radiance L everywhere (full
 // transport, isotropic phase): the in-scattered light is 4 pi L at every point, and a pixel shows
 // L (1 - T) from the volume plus T L from the sky behind. The light volume's scattering conserves
@@ -443,12 +455,7 @@ vs::LightVolume::MultipleScattering Scattering(const VisibilityScene& scene, con
 TEST(PreviewFullTransport, WhiteFurnaceIsInvisible)
 {
   const glm::dvec3 L(0.5, 1.0, 2.0);
-  LitBox box{ glm::vec3(L), [](int x, int y, int z) {
-               const glm::vec3 p(x, y, z);
-               const float r = glm::length(p - glm::vec3(16.0f));
-               const float lobe = glm::length(p - glm::vec3(21.0f, 12.0f, 16.0f));
-               return std::min(1.0f, std::max(0.0f, 1.0f - r / 15.0f) * 2.0f + (lobe < 6.0f ? 6.0f : 0.0f));
-             } };
+  LitBox box{ glm::vec3(L), FurnaceDensity };
   const auto cellsOff = [&](const std::vector<float>& light) {
     double worst = 0.0;
     for (size_t i = 0; i < light.size(); i += 4)
@@ -501,12 +508,7 @@ TEST(PreviewFullTransport, WhiteFurnaceIsInvisible)
 TEST(PreviewFullTransport, WhiteFurnaceUnderAnisotropy)
 {
   const glm::dvec3 L(0.5, 1.0, 2.0);
-  LitBox box{ glm::vec3(L), [](int x, int y, int z) {
-               const glm::vec3 p(x, y, z);
-               const float r = glm::length(p - glm::vec3(16.0f));
-               const float lobe = glm::length(p - glm::vec3(21.0f, 12.0f, 16.0f));
-               return std::min(1.0f, std::max(0.0f, 1.0f - r / 15.0f) * 2.0f + (lobe < 6.0f ? 6.0f : 0.0f));
-             } };
+  LitBox box{ glm::vec3(L), FurnaceDensity };
   for (float g : { 0.6f, -0.6f })
     for (uint32_t orders : { 64u, 4u })
     {
