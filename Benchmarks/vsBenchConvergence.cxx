@@ -377,6 +377,9 @@ int Run(const Options& given)
       const auto t0 = Clock::now();
       auto elapsed = [&]() { return std::chrono::duration<double>(Clock::now() - t0).count(); };
       int frames = 0;
+      double deadline = 0.0; // the run's last budget
+      for (const Point& p : points)
+        deadline = std::max(deadline, p.Budget);
       auto frame = [&]() {
         ++frames;
         run.Render();
@@ -400,6 +403,9 @@ int Run(const Options& given)
           // left Auto a handful of frames to sweep and choose in over 16 s).
           while (elapsed() < p.Budget)
           {
+            // The run's deadline is its last budget (the earlier ones are read on the way), as
+            // `vissweep render --time-budget` tells Auto its own.
+            m->SetRemainingTimeBudget(std::max(1e-3, deadline - elapsed()));
             // The run's first frame is one sample: its time is the first estimate of a sample's
             // cost (before it, the sample count is still the warm-up's).
             const int acc = frames == 0 ? 0 : m->GetAccumulatedSamples();

@@ -28,10 +28,18 @@ public:
   /** The directions (side x side) this render needs swept: 1 to sweep, 0 to leave out. */
   static std::vector<uint8_t> RequiredDirections(vtkVisibilitySweepVolumeMapper* mapper, MapperEnvironment& environment,
     int side);
-  /** Fills `r` with what the frame needs of the grid of `geometry`. */
+  /** Fills `r` with what the frame needs of the grid of `geometry`. pendingSweepSeconds: the
+   *  estimated device seconds of the sweeps the grid still needs (VisibilityGridUpdater::
+   *  PendingSweepSeconds; 0 without a grid yet). */
   static void FillRequest(vtkVisibilitySweepVolumeMapper* mapper, GridUpdateRequest& r, const VolumeGeometry& geometry,
     MapperEnvironment& environment, VolumeScene& scene, bool fullUpdate, StrategySelector& selector,
-    double lastRenderSeconds, bool autoStrategy);
+    double lastRenderSeconds, bool autoStrategy, double pendingSweepSeconds);
+  /** Whether Auto fills its grid in this frame: not while TwoStep, judged on its grid, loses
+   *  (StrategySelector::GridWorthSweeping), nor while the sweeps still pending cost more than they
+   *  can pay back before the mapper's RemainingTimeBudget (StrategySelector::AffordableSweepSeconds
+   *  at the frame's sweep fraction). */
+  static bool AutoFillsIn(const StrategySelector& selector, double sweepFraction, double remainingSeconds,
+    double pendingSweepSeconds);
 };
 }
 

@@ -102,7 +102,7 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
   }
   vs::GridUpdateRequest& r = I.LastGridRequest;
   vs::GridSchedule::FillRequest(this, r, I.GridGeometry, I.Environment, *I.Scene, I.GridNeedsFull, I.Selector,
-    I.LastRenderSeconds, autoStrategy);
+    I.LastRenderSeconds, autoStrategy, I.Grid ? I.Grid->PendingSweepSeconds() : 0.0);
   this->UnlitDirections = int(std::count(r.Required.begin(), r.Required.end(), uint8_t(0)));
   if (!I.Grid)
   {

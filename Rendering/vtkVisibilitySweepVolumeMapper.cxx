@@ -466,11 +466,18 @@ int vtkVisibilitySweepVolumeMapper::RenderUntilConverged(vtkRenderWindow* window
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   const bool timed = timeBudgetSeconds > 0.0 && std::isfinite(timeBudgetSeconds);
+  // The deadline, for Auto's sweeps (SetRemainingTimeBudget); the caller's value back afterwards.
+  const double callerRemaining = this->RemainingTimeBudget;
   int stalled = 0;
   while (true)
   {
     const int before = this->AccumulatedSamples;
     const auto frameStart = Clock::now();
+    if (timed)
+    {
+      this->RemainingTimeBudget =
+        std::max(1e-3, timeBudgetSeconds - std::chrono::duration<double>(frameStart - start).count());
+    }
     window->Render();
     const auto now = Clock::now();
     if (!this->Impl->LastError.empty() || this->IsConverged())
@@ -490,6 +497,7 @@ int vtkVisibilitySweepVolumeMapper::RenderUntilConverged(vtkRenderWindow* window
       break;
     }
   }
+  this->RemainingTimeBudget = callerRemaining;
   return this->AccumulatedSamples;
 }
 
@@ -620,6 +628,16 @@ void vtkVisibilitySweepVolumeMapper::SetAutoProbeFraction(double value)
   this->SetClampedSetting("AutoProbeFraction", value, 0.0, 1000.0, this->AutoProbeFraction);
 }
 
+void vtkVisibilitySweepVolumeMapper::SetRemainingTimeBudget(double seconds)
+{
+  if (std::isnan(seconds))
+  {
+    vtkErrorMacro(<< "RemainingTimeBudget: NaN is not a number of seconds; kept " << this->RemainingTimeBudget);
+    return;
+  }
+  this->RemainingTimeBudget = seconds; // the render loop's state: no Modified(), no restart
+}
+
 void vtkVisibilitySweepVolumeMapper::SetEnvironmentIntensity(double intensity)
 {
   this->SetFloatSetting("EnvironmentIntensity", intensity, this->EnvironmentIntensity);
@@ -686,6 +704,7 @@ void vtkVisibilitySweepVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ReleaseKeepsVisibilityGrid: " << (this->ReleaseKeepsVisibilityGrid ? "On" : "Off") << "\n";
   os << indent << "SweepFrameFraction: " << this->SweepFrameFraction << "\n";
   os << indent << "AutoProbeFraction: " << this->AutoProbeFraction << "\n";
+  os << indent << "RemainingTimeBudget: " << this->RemainingTimeBudget << " s (<= 0: no deadline)\n";
   os << indent << "LightWeightedDirections: " << (this->LightWeightedDirections ? "On" : "Off") << "\n";
   os << indent << "FillUnsweptDirections: " << (this->FillUnsweptDirections ? "On" : "Off") << "\n";
   os << indent << "PendingDirections: " << this->GetPendingDirections() << "\n";

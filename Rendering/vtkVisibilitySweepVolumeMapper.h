@@ -634,6 +634,16 @@ public:
    *  SweepFrameFraction. Default 0.05. */
   virtual void SetAutoProbeFraction(double value); // clamped to [0.0, 1000.0]; NaN is refused (an error, the setting kept)
   vtkGetMacro(AutoProbeFraction, double);
+  /** The seconds left before the loop that renders this view stops (a time budget's remainder), set
+   *  before each frame by RenderUntilConverged, `vissweep render --time-budget` and ParaView's
+   *  TimeBudget; 0 or less (the default): no deadline, an interactive view. Auto then fills its grid
+   *  in only while the sweeps still pending can pay for themselves before the deadline
+   *  (StrategySelector::AffordableSweepSeconds, docs/reference.md): at 2 s the 0.5 mm MRI's grid
+   *  cannot, and Auto renders Environment sampling without sweeping. A loop's own state: setting
+   *  it does not modify the mapper (no restart); +Inf is no deadline, NaN is refused (an error,
+   *  the setting kept). */
+  void SetRemainingTimeBudget(double seconds);
+  double GetRemainingTimeBudget() const { return this->RemainingTimeBudget; }
   /** Sweep each direction texel towards where its light comes from (the environment's
    *  luminance-weighted mean direction inside the texel) instead of its centre: the visibility
    *  of a sun's texel is then the sun's own. Default on. The grid then depends on the
@@ -850,6 +860,7 @@ protected:
   bool LightWeightedDirections = true;
   bool FillUnsweptDirections = true;
   double AutoProbeFraction = 0.05;
+  double RemainingTimeBudget = 0.0; // seconds; <= 0: no deadline
   int CellMode = StochasticCell;
   int ShadowRays = 1;
   bool DirectionTable = true;

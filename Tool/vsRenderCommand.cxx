@@ -377,6 +377,11 @@ ProgressiveResult RenderProgressively(
   while (true)
   {
     const auto f0 = Clock::now();
+    if (timed)
+    {
+      // The deadline, for Auto's sweeps (vtkVisibilitySweepVolumeMapper::SetRemainingTimeBudget).
+      mapper->SetRemainingTimeBudget(std::max(1e-3, timeBudget - Seconds(loopStart, f0)));
+    }
     objects.Window->Render();
     const double frameSeconds = Seconds(f0, Clock::now());
     ++r.Frames;
@@ -439,6 +444,7 @@ ProgressiveResult RenderProgressively(
     }
   }
   r.Seconds = Seconds(loopStart, Clock::now());
+  mapper->SetRemainingTimeBudget(0.0);
   return r;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace vs
 {
@@ -55,6 +56,29 @@ double StrategySelector::SweepFraction(double probe, double full) const
   probe = std::min(probe, full);
   const double ratio = this->GridEfficiencyRatio();
   return ratio > 1.0 ? std::clamp(0.5 * (ratio - 1.0), probe, full) : probe;
+}
+
+double StrategySelector::AffordableSweepSeconds(double remaining, double fraction, double efficiency)
+{
+  if (!(remaining > 0.0) || !std::isfinite(remaining))
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  if (!(efficiency > 1.0) || !(fraction > 0.0))
+  {
+    return 0.0;
+  }
+  if (!std::isfinite(efficiency))
+  {
+    return fraction * remaining / (1.0 + fraction); // the limit E -> infinity
+  }
+  return fraction * remaining * (efficiency - 1.0) / (efficiency - 1.0 + efficiency * fraction);
+}
+
+double StrategySelector::ExpectedGridEfficiency() const
+{
+  const double measured = this->GridEfficiencyRatio();
+  return this->GridComplete_ && measured > 0.0 ? measured : std::max(measured, PriorGridEfficiency);
 }
 
 StrategySelector::Estimator StrategySelector::Choose(bool gridReady)

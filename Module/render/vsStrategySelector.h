@@ -71,6 +71,26 @@ public:
    *  stratification mostly takes back), and sweeping it at the full 25% of the time made Auto hold
    *  10-14% fewer samples than Environment sampling over 32 s. */
   double SweepFraction(double probe, double full) const;
+  /** The most device seconds of sweeps still pending that can pay for themselves before a deadline
+   *  `remaining` seconds away (infinite when remaining <= 0 or not finite: no deadline), swept at
+   *  `fraction` of the render time (SweepFraction) and then sampled by TwoStep `efficiency` times as
+   *  efficiently as Environment sampling. A linear model of the frames to the deadline: finishing C
+   *  seconds of sweeps at fraction f takes C (1 + f) / f seconds of frames, whose render time C / f is
+   *  worth no more than Environment sampling's (a partial grid measures at best about as good); the
+   *  time left after it renders E times as efficiently. That beats rendering Environment sampling
+   *  throughout (R seconds) iff
+   *      C < f R (E - 1) / (E - 1 + E f).
+   *  0 when E <= 1 or f <= 0: nothing pending pays. */
+  static double AffordableSweepSeconds(double remaining, double fraction, double efficiency);
+  /** TwoStep's efficiency over Environment sampling assumed for AffordableSweepSeconds before a
+   *  complete grid has measured it: optimistic, the largest per-sample gain measured (2.05x on
+   *  phantom_forest, docs/benchmarks.md), which the Sobol sampler's stratification mostly takes back. */
+  static constexpr double PriorGridEfficiency = 2.0;
+  /** The efficiency AffordableSweepSeconds is given: the measured GridEfficiencyRatio() on a complete
+   *  grid, else the larger of it and PriorGridEfficiency (a partial grid's TwoStep reads swept
+   *  directions for the unswept ones and cannot show the complete grid's gain). */
+  double ExpectedGridEfficiency() const;
+
   /** Whether the grid TwoStep is measured with is complete (the default: assumed complete). */
   void SetGridComplete(bool complete) { this->GridComplete_ = complete; }
   /** Whether the grid TwoStep is measured with holds enough of the light to judge it by (the

@@ -178,6 +178,16 @@ double PooledExtinction::Ensure(const DeviceVolume& volume, const TransferFuncti
   return this->Advance(volume, tf, majorants, settings, std::numeric_limits<double>::infinity());
 }
 
+double PooledExtinction::RemainingSeconds() const
+{
+  if (!this->Started_ || this->Complete_)
+  {
+    return 0.0;
+  }
+  const uint32_t slices = uint32_t(this->PooledDims_.z);
+  return slices > this->NextSlice_ ? double(slices - this->NextSlice_) * this->SecondsPerSlice_ : 0.0;
+}
+
 double PooledExtinction::Advance(const DeviceVolume& volume, const TransferFunctionTable& tf,
   const MajorantGrid& majorants, const Settings& settings, double budgetSeconds)
 {

@@ -61,6 +61,9 @@ public:
   const Image3D& Occupancy() const { return *this->Occupancy_; }
   /** Completed builds since this object was made. */
   uint64_t Builds() const { return this->Builds_; }
+  /** Estimated device seconds to finish the build in progress: its slices left at the measured
+   *  seconds per slice; 0 when complete, and while unknown (no build started, or no slab built yet). */
+  double RemainingSeconds() const;
   /** Pooled texels per occupancy brick side: 8 voxels, as the majorant grid's bricks (at least 1). */
   static uint32_t BrickTexels(uint32_t factor);
   /** Pooled slices per slab (the pool dispatch's workgroup depth). */

@@ -100,6 +100,9 @@ public:
   double LastWallSeconds() const { return this->LastWallSeconds_; }
   /** Times the pooled extinction volume was built (it is cached across Compute calls). */
   uint64_t PoolBuilds() const;
+  /** Estimated device seconds AdvancePool still needs (PooledExtinction::RemainingSeconds: 0 when
+   *  the pool is built, not used, or its cost is not measured yet). */
+  double PoolRemainingSeconds() const;
   /** Progressive grids: builds the pooled extinction volume this grid's sweeps will march (when its
    *  parameters pool and it is not current) for about budgetSeconds of device time, so that no
    *  frame waits for the whole build; returns the device seconds spent. True in `ready` once it

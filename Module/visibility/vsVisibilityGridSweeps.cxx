@@ -327,6 +327,11 @@ uint64_t VisibilityGrid::PoolBuilds() const
   return this->Pool_ ? this->Pool_->Builds() : 0;
 }
 
+double VisibilityGrid::PoolRemainingSeconds() const
+{
+  return this->Pool_ ? this->Pool_->RemainingSeconds() : 0.0;
+}
+
 double VisibilityGrid::AdvancePool(const DeviceVolume& volume, const TransferFunctionTable& tf,
   const MajorantGrid& majorants, double budgetSeconds, bool& ready)
 {

@@ -35,6 +35,12 @@ uint32_t VisibilityGridUpdater::PendingDirections() const
   return pending;
 }
 
+double VisibilityGridUpdater::PendingSweepSeconds() const
+{
+  const double pool = this->Grid_ ? this->Grid_->PoolRemainingSeconds() : 0.0;
+  return pool + double(this->PendingDirections()) * this->SecondsPerDirection_;
+}
+
 uint32_t VisibilityGridUpdater::SweptDirections() const
 {
   return uint32_t(std::count(this->Swept_.begin(), this->Swept_.end(), uint8_t(1)));

@@ -101,6 +101,10 @@ public:
   uint64_t Generation() const { return this->Generation_; }
   /** Estimated device seconds of one direction's sweep (0 before the first sweep). */
   double SecondsPerDirection() const { return this->SecondsPerDirection_; }
+  /** Estimated device seconds of the sweeps still needed to complete the grid: the pooled
+   *  extinction's slabs left plus the pending directions at SecondsPerDirection(). A part not
+   *  measured yet counts 0 (the first slab and the first direction show what they cost). */
+  double PendingSweepSeconds() const;
   const VisibilityUpdateScheduler& Scheduler() const { return this->Scheduler_; }
 
   /** Fill-in order: the directions of `candidates` by decreasing importance, ties in the

@@ -4,7 +4,8 @@
 //  - the image accumulated across the whole fill-in has the mean of a render whose grid was swept
 //    before the first sample (per-pixel z-scores), and so has Auto against Environment sampling
 //    (its frame-by-frame choice depends only on earlier samples);
-//  - Auto reports its choice, sweeps nothing for a volume too thin to shadow;
+//  - Auto reports its choice, sweeps nothing for a volume too thin to shadow, and under a deadline
+//    (RemainingTimeBudget) sweeps only what can pay for itself before it;
 //  - the mapper refuses direction resolutions its direction map cannot hold, and a resolution
 //    raised after a first render refines the environment's importance levels.
 #include "vtkVisibilitySweepVolumeMapper.h"
@@ -23,6 +24,7 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -236,6 +238,44 @@ void TestAutoReportsAndSkips()
     "a thin volume: Environment sampling");
 }
 
+// Issue 39: under a deadline Auto sweeps only what can pay for itself before it. A deadline 1 ms
+// away repays nothing but the first slab and direction (swept to learn their cost); without one,
+// or with a far one, the same frames fill the grid in.
+void TestAutoSweepsOnlyWhatTheDeadlineRepays()
+{
+  int swept[3] = { 0, 0, 0 };
+  const double deadlines[3] = { 1e-3, 0.0, 1e6 };
+  for (int k = 0; k < 3; ++k)
+  {
+    Scene s;
+    s.Mapper->SetAutoProbeFraction(4.0); // tiny frames: let the grid fill in within the test
+    s.Mapper->SetSweepFrameFraction(4.0);
+    const vtkMTimeType mtime = s.Mapper->GetMTime();
+    s.Mapper->SetRemainingTimeBudget(deadlines[k]);
+    Check(s.Mapper->GetMTime() == mtime, "the remaining time budget is the loop's state: it modifies nothing");
+    for (int i = 0; i < 40; ++i)
+    {
+      s.Frame();
+    }
+    swept[k] = s.Mapper->GetDirectionsUpdatedTotal();
+    Check(s.Mapper->GetAccumulationResetCount() == 1, "a deadline restarts nothing");
+  }
+  std::printf("directions swept in 40 frames: deadline 1 ms %d, none %d, 1e6 s %d\n", swept[0], swept[1], swept[2]);
+  Check(swept[0] <= 1, "a deadline 1 ms away repays no sweep beyond the first direction, swept " + std::to_string(swept[0]));
+  Check(swept[1] > 1 && swept[2] > 1, "without a deadline, or a far one, the same frames fill the grid in");
+
+  // RenderUntilConverged sets it per frame and gives the caller's value back; NaN is refused.
+  Scene s;
+  s.Mapper->SetMaximumSamples(4);
+  s.Mapper->SetRemainingTimeBudget(7.0);
+  s.Mapper->RenderUntilConverged(s.Window, 30.0);
+  Check(s.Mapper->GetRemainingTimeBudget() == 7.0, "RenderUntilConverged gives the caller's deadline back");
+  vtkObject::GlobalWarningDisplayOff();
+  s.Mapper->SetRemainingTimeBudget(std::nan(""));
+  vtkObject::GlobalWarningDisplayOn();
+  Check(s.Mapper->GetRemainingTimeBudget() == 7.0, "NaN is refused, the setting kept");
+}
+
 void TestDirectionResolutionLimits()
 {
   Scene s;
@@ -265,6 +305,7 @@ int TestMapperProgressive(int, char*[])
   TestFirstFrameDoesNotWait();
   TestFillInAndAutoAreUnbiased();
   TestAutoReportsAndSkips();
+  TestAutoSweepsOnlyWhatTheDeadlineRepays();
   TestDirectionResolutionLimits();
   return vstest::ExitCode();
 }

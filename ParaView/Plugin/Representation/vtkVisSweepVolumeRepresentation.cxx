@@ -161,6 +161,10 @@ void vtkVisSweepVolumeRepresentation::UpdateTimeBudget()
     mapper->GetRenderMode() == vtkVisibilitySweepVolumeMapper::MonteCarlo &&
     this->AccumulationSeconds + this->NextFrameSeconds > this->TimeBudget;
   this->BudgetSpent = spent;
+  // The deadline, for Auto's sweeps (the mapper's RemainingTimeBudget): what is left of the budget,
+  // all of it before a still accumulation starts.
+  mapper->SetRemainingTimeBudget(
+    this->TimeBudget > 0.0 ? std::max(1e-3, this->TimeBudget - this->AccumulationSeconds) : 0.0);
   // The mapper's own progressive stop: MaximumSamples held at the samples reached.
   mapper->SetMaximumSamples(spent ? std::min(this->SampleShare, samples) : this->SampleShare);
   this->FrameStart = Now();

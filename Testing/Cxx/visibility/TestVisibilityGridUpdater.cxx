@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 using vs::GridUpdateRequest;
 using vs::StrategySelector;
@@ -424,10 +425,13 @@ TEST(VisibilityGridUpdater, ProgressiveGridsPoolTheVolumeInSlabsFirst)
   VisibilityGridUpdater updater(s.Context);
   r.BudgetSeconds = 1e-12; // no direction while the pool is incomplete
   EXPECT_TRUE(updater.Update(*s.Volume, *s.TF, *s.Majorants, r).NewGrid);
+  EXPECT_EQ(updater.PendingSweepSeconds(), 0.0) << "nothing measured yet: the pending sweeps' cost is unknown (0)";
   const auto first = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
   EXPECT_EQ(first.DirectionsSwept, 0u);
   EXPECT_GT(first.Seconds, 0.0) << "the first slab, whatever the budget: its time counts as the sweeps'";
   EXPECT_EQ(updater.Grid()->PoolBuilds(), 0u);
+  EXPECT_DOUBLE_EQ(updater.PendingSweepSeconds(), first.Seconds)
+    << "the second slab at the first's cost (directions not measured yet count 0)";
   const auto stalled = updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
   EXPECT_EQ(stalled.Seconds, 0.0) << "a budget below a slab's cost builds nothing: the sweeps keep to their share";
   EXPECT_EQ(updater.Grid()->PoolBuilds(), 0u);
@@ -436,6 +440,8 @@ TEST(VisibilityGridUpdater, ProgressiveGridsPoolTheVolumeInSlabsFirst)
   EXPECT_EQ(updater.Grid()->PoolBuilds(), 1u);
   EXPECT_EQ(second.DirectionsSwept, 1u) << "the first direction once the pool is built: it measures a direction's cost";
   EXPECT_GT(updater.SecondsPerDirection(), 0.0);
+  EXPECT_DOUBLE_EQ(updater.PendingSweepSeconds(), updater.PendingDirections() * updater.SecondsPerDirection())
+    << "the pool built: the pending directions at the measured cost";
   // What is left of the grant after the pool and the first direction depends on their timings
   // (a first slab that paid for a compile leaves more): it runs out, and then tiny grants sweep
   // nothing.
@@ -453,6 +459,7 @@ TEST(VisibilityGridUpdater, ProgressiveGridsPoolTheVolumeInSlabsFirst)
   r.BudgetSeconds = 1e6;
   updater.Update(*s.Volume, *s.TF, *s.Majorants, r);
   ASSERT_TRUE(updater.IsComplete());
+  EXPECT_EQ(updater.PendingSweepSeconds(), 0.0);
   EXPECT_EQ(updater.Grid()->PoolBuilds(), 1u);
   vs::VisibilityGrid full(s.Context);
   EXPECT_EQ(updater.Grid()->Download(), s.Grid(full, r.Parameters));
@@ -475,4 +482,80 @@ TEST(StrategySelector, SweepsGetAShareOfTheTimeInProportionToTheGridsGain)
   GridFramesOfLast64(v, 1.0, 2.0, 1.0, 1.0);
   EXPECT_EQ(v.SweepFraction(0.05, 0.25), 0.05) << "a grid that loses gets the probe's share";
   EXPECT_EQ(v.SweepFraction(0.4, 0.25), 0.25) << "never more than the full share";
+}
+
+namespace
+{
+// The linear model AffordableSweepSeconds solves, stepped frame by frame instead: frames of dt render
+// seconds, each with f dt of sweeps until C are paid (its render time worth Environment sampling's),
+// then E dt worth per frame until the deadline R. Returns the Environment-equivalent render
+// seconds gained over rendering Environment sampling for all R seconds.
+double SteppedGain(double C, double f, double E, double R)
+{
+  const double dt = R * 1e-5;
+  double t = 0.0, worth = 0.0, paid = 0.0;
+  while (t < R)
+  {
+    if (paid < C)
+    {
+      const double sweep = std::min(f * dt, C - paid); // the last frame's sweep ends when paid
+      paid += sweep;
+      worth += dt;
+      t += dt + sweep;
+    }
+    else
+    {
+      worth += E * dt;
+      t += dt;
+    }
+  }
+  return worth - t; // t overshoots R by less than a frame: both sides over the same time
+}
+}
+
+TEST(StrategySelector, SweepsPendingBeforeADeadlinePayOnlyBelowTheBreakEven)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(StrategySelector::AffordableSweepSeconds(0.0, 0.05, 2.0), inf) << "0: no deadline";
+  EXPECT_EQ(StrategySelector::AffordableSweepSeconds(-1.0, 0.05, 2.0), inf);
+  EXPECT_EQ(StrategySelector::AffordableSweepSeconds(inf, 0.05, 2.0), inf);
+  EXPECT_EQ(StrategySelector::AffordableSweepSeconds(10.0, 0.05, 1.0), 0.0) << "a grid that gains nothing pays nothing";
+  EXPECT_EQ(StrategySelector::AffordableSweepSeconds(10.0, 0.0, 2.0), 0.0) << "no share: nothing pending is ever done";
+  EXPECT_NEAR(StrategySelector::AffordableSweepSeconds(10.0, 0.05, inf), 0.5 / 1.05, 1e-12);
+  // The closed form against the model stepped frame by frame: just below it the sweeps gain, just
+  // above they lose (at 2%, the gain is ~0.2 s of ~10; the stepping's error is ~1e-4 s).
+  const struct
+  {
+    double F, E, R;
+  } cases[] = { { 0.05, 2.0, 10.0 }, { 0.25, 1.3, 3.0 }, { 0.05, 1.1, 30.0 }, { 0.15, 4.0, 2.0 } };
+  for (const auto& c : cases)
+  {
+    const double breakEven = StrategySelector::AffordableSweepSeconds(c.R, c.F, c.E);
+    ASSERT_GT(breakEven, 0.0);
+    EXPECT_LT(breakEven, c.F * c.R / (1.0 + c.F)) << "less than the sweeps' share of the time left";
+    EXPECT_GT(SteppedGain(0.98 * breakEven, c.F, c.E, c.R), 0.0) << "f " << c.F << ", E " << c.E << ", R " << c.R;
+    EXPECT_LT(SteppedGain(1.02 * breakEven, c.F, c.E, c.R), 0.0) << "f " << c.F << ", E " << c.E << ", R " << c.R;
+    EXPECT_NEAR(SteppedGain(breakEven, c.F, c.E, c.R), 0.0, 2e-3 * c.R);
+  }
+  // The ch2better case of issue 39: ~0.5 s of pooled extinction and 64 directions at ~0.01 s
+  // pending, 5% of the time, TwoStep at most twice as efficient: not at 2 or 6 s, at 32 s.
+  EXPECT_LT(StrategySelector::AffordableSweepSeconds(2.0, 0.05, 2.0), 1.1);
+  EXPECT_LT(StrategySelector::AffordableSweepSeconds(6.0, 0.05, 2.0), 1.1);
+  EXPECT_GT(StrategySelector::AffordableSweepSeconds(32.0, 0.05, 2.0), 1.1);
+}
+
+TEST(StrategySelector, TheGridsExpectedGainIsOptimisticUntilACompleteGridMeasuresIt)
+{
+  StrategySelector s;
+  EXPECT_EQ(s.ExpectedGridEfficiency(), StrategySelector::PriorGridEfficiency) << "nothing measured: the prior";
+  GridFramesOfLast64(s, 1.0, 1.0 / 1.1, 1.0, 1.0); // TwoStep 1.1x as efficient
+  ASSERT_NEAR(s.GridEfficiencyRatio(), 1.1, 1e-6);
+  EXPECT_NEAR(s.ExpectedGridEfficiency(), 1.1, 1e-6) << "measured on a complete grid";
+  s.SetGridComplete(false);
+  EXPECT_EQ(s.ExpectedGridEfficiency(), StrategySelector::PriorGridEfficiency)
+    << "a partial grid measures at best about Environment sampling: its gain is not the complete grid's";
+  StrategySelector t;
+  GridFramesOfLast64(t, 1.0, 0.25, 1.0, 1.0); // 4x
+  t.SetGridComplete(false);
+  EXPECT_NEAR(t.ExpectedGridEfficiency(), 4.0, 1e-6) << "a partial grid that already gains more than the prior";
 }
