@@ -132,6 +132,9 @@ def main():
     frame_seconds = 0.0
     while True:
         frame_start = time.perf_counter()
+        if args.seconds > 0:
+            # The deadline, so that Auto sweeps only what can pay for itself before it.
+            mapper.SetRemainingTimeBudget(max(1e-3, args.seconds - (frame_start - t)))
         win.Render()
         frame_seconds = time.perf_counter() - frame_start
         if mapper.GetLastError():
