@@ -101,8 +101,8 @@ bool GridSchedule::AutoFillsIn(const StrategySelector& selector, double sweepFra
   {
     return false;
   }
-  // Issue 39: at 2 s on the 0.5 mm MRI Auto swept 3-4% of the time (the pooled extinction of 35 M
-  // voxels, 0.5 s in all, and 64 directions) towards a grid that the budget ended before. A part
+  // Issue 39: at 2-6 s on the 0.5 mm MRI Auto swept 3-8% of the time (the pooled extinction of 35 M
+  // voxels, 0.3-0.5 s in all, then 64 directions) towards a grid that the budget ended before. A part
   // not measured yet counts 0, so the first slab and the first direction are swept to learn their
   // cost.
   return pendingSweepSeconds <=

@@ -638,7 +638,7 @@ public:
    *  before each frame by RenderUntilConverged, `vissweep render --time-budget` and ParaView's
    *  TimeBudget; 0 or less (the default): no deadline, an interactive view. Auto then fills its grid
    *  in only while the sweeps still pending can pay for themselves before the deadline
-   *  (StrategySelector::AffordableSweepSeconds, docs/reference.md): at 2 s the 0.5 mm MRI's grid
+   *  (StrategySelector::AffordableSweepSeconds; README, "Auto"): at 2 s the 0.5 mm MRI's grid
    *  cannot, and Auto renders Environment sampling without sweeping. A loop's own state: setting
    *  it does not modify the mapper (no restart); +Inf is no deadline, NaN is refused (an error,
    *  the setting kept). */
