@@ -2,7 +2,7 @@
  * kernel_volume.glsl — what the render kernel reads of the volume: the scalar at a point (from the
  * 8-bit quads, the float image or the nearest voxel, with the cropping test only where there are
  * cropping regions), the extinction factor, and a ray's interval inside the box and the clip planes.
- * Included once, by mc_render.glsl.
+ * Included once, by mc_render.glsl, before majorant_walk.glsl (its cell walk reads the corners here).
  */
 
 float gQuadOffset; /* P.volume.quadZero: the scalar of code 0 in the quads */
@@ -28,6 +28,23 @@ float quad_trilinear(vec3 p)
   float c01 = mix(b.x, b.y, f.x);
   float c11 = mix(b.z, b.w, f.x);
   return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
+}
+
+/* The scalars at the corners of the voxel cell from lo to hi = min(lo + 1, dims - 1), lo <= dims - 2
+ * where the volume has 2 voxels along an axis: c0 = (000, 100, 010, 110), c1 = (001, 101, 011, 111).
+ * From the quads, 2 reads (a quad's neighbours clamp as hi does), or 8 of the float image. */
+void kernel_cell_corners(ivec3 lo, ivec3 hi, out vec4 c0, out vec4 c1)
+{
+  if (VS_SPEC_QUADS != 0u)
+  {
+    c0 = quad_scalars(imageLoad(uQuads, lo).r);
+    c1 = quad_scalars(imageLoad(uQuads, ivec3(lo.xy, hi.z)).r);
+    return;
+  }
+  c0 = vec4(imageLoad(uVolume, ivec3(lo.x, lo.y, lo.z)).r, imageLoad(uVolume, ivec3(hi.x, lo.y, lo.z)).r,
+    imageLoad(uVolume, ivec3(lo.x, hi.y, lo.z)).r, imageLoad(uVolume, ivec3(hi.x, hi.y, lo.z)).r);
+  c1 = vec4(imageLoad(uVolume, ivec3(lo.x, lo.y, hi.z)).r, imageLoad(uVolume, ivec3(hi.x, lo.y, hi.z)).r,
+    imageLoad(uVolume, ivec3(lo.x, hi.y, hi.z)).r, imageLoad(uVolume, ivec3(hi.x, hi.y, hi.z)).r);
 }
 
 /* The scalar at index-space point p (vs_sample), with the cropping test only in the pipelines that

@@ -127,10 +127,8 @@ float refine_majorant(vec3 o, vec3 d, float t, inout float tNext, float mu)
   if (gInterpolation == VS_INTERPOLATION_NEAREST)
     e = min(e, vs_nearest_midplane_exit(p, d, lo)); /* segments end where the nearest voxel changes */
   float hMax = min(tNext - t, max(e, hMin));
-  vec4 c0 = vec4(imageLoad(uVolume, ivec3(lo.x, lo.y, lo.z)).r, imageLoad(uVolume, ivec3(hi.x, lo.y, lo.z)).r,
-    imageLoad(uVolume, ivec3(lo.x, hi.y, lo.z)).r, imageLoad(uVolume, ivec3(hi.x, hi.y, lo.z)).r);
-  vec4 c1 = vec4(imageLoad(uVolume, ivec3(lo.x, lo.y, hi.z)).r, imageLoad(uVolume, ivec3(hi.x, lo.y, hi.z)).r,
-    imageLoad(uVolume, ivec3(lo.x, hi.y, hi.z)).r, imageLoad(uVolume, ivec3(hi.x, hi.y, hi.z)).r);
+  vec4 c0, c1;
+  kernel_cell_corners(lo, hi, c0, c1);
   VS_COUNT(0);
   if (gInterpolation != VS_INTERPOLATION_NEAREST && (any(isnan(c0)) || any(isnan(c1))))
   {

@@ -28,8 +28,8 @@
  * whatever the split, so its sums are the same bits for any split into dispatches and frames.
  *
  * The kernel's parts, in the order this file includes them: mc_resources.glsl (bindings,
- * specialization constants, registers), majorant_walk.glsl (the majorant segments),
- * kernel_volume.glsl (the volume's scalar and the ray's interval), light_directions.glsl (the
+ * specialization constants, registers), kernel_volume.glsl (the volume's scalar and the ray's
+ * interval), majorant_walk.glsl (the majorant segments), light_directions.glsl (the
  * strategy's direction and pdf), tracking.glsl (delta and ratio tracking),
  * shadow_transmittance.glsl (ratio tracking or ray marching), camera_reservoir.glsl (the reservoir
  * camera estimator); then here the loop budget, one sample and main().
@@ -53,9 +53,9 @@
 
 #include "mc_resources.glsl"
 
-#include "majorant_walk.glsl"
-
 #include "kernel_volume.glsl"
+
+#include "majorant_walk.glsl"
 
 #include "light_directions.glsl"
 

@@ -92,6 +92,10 @@ float vs_env_mip(uint index)
   return texelFetch(uMips, int(index)).r;
 }
 
+/* The surface lobe's gradient reads the scalar as the trackers do (from the quads when the pipeline
+ * has them: the float image is then not bound, vsMonteCarloPass.cxx); kernel_volume.glsl defines it. */
+float kernel_sample(vec3 p);
+#define VS_GRADIENT_SAMPLE(p) kernel_sample(p)
 #include "volume_access.glsl"
 #ifndef VS_NO_GRID
 #include "direction_map.glsl"

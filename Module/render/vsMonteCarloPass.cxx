@@ -422,8 +422,15 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
   const ComputePipeline& pipeline =
     this->PipelineFor(useGrid ? grid : nullptr, params, NeedsCellWalk(majorants, params), table, quads);
   this->LastPipelineName_ = pipeline.Name();
+  // The kernel reading the quads reads no float (kernel_volume.glsl): the volume's float image is not
+  // asked for, so an integer-coded volume never makes it for a render (DeviceVolume::Image()).
+  if (quads && !this->NoVolume_)
+  {
+    this->NoVolume_ = std::make_unique<Image3D>(this->Context_, 1, 1, 1, vk::Format::eR32Sfloat, "no float volume");
+  }
+  const Image3D& floats = quads ? *this->NoVolume_ : volume.Image();
   DescriptorSet set(pipeline);
-  set.Bind(shared::VS_MC_VOLUME, volume.Image())
+  set.Bind(shared::VS_MC_VOLUME, floats)
     .BindTexels(shared::VS_MC_TF, tf.Lut(), vk::Format::eR32Sfloat)
     .Bind(shared::VS_MC_BRICKS, majorants.TrackingImage())
     .Bind(shared::VS_MC_VISIBILITY, useGrid ? grid->Image() : *this->NoGrid_)
@@ -441,7 +448,7 @@ void MonteCarloPass::Render(const DeviceVolume& volume, const TransferFunctionTa
     this->NoQuads_ = std::make_unique<Image3D>(this->Context_, 1, 1, 1, vk::Format::eR32Uint, "no volume quads");
   }
   set.Bind(shared::VS_MC_QUADS, quads ? *volume.Quads() : *this->NoQuads_);
-  set.Bind(shared::VS_MC_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
+  set.Bind(shared::VS_MC_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : floats); // unread without a factor
   set.Bind(shared::VS_MC_PATH_POSITION, fullTransport ? *this->PathPosition_ : *this->NoPaths_)
     .Bind(shared::VS_MC_PATH_DIRECTION, fullTransport ? *this->PathDirection_ : *this->NoPaths_)
     .Bind(shared::VS_MC_PATH_THROUGHPUT, fullTransport ? *this->PathThroughput_ : *this->NoPaths_)

@@ -180,6 +180,7 @@ private:
   bool VolumeQuads_ = true;
   bool LastUsedQuads_ = false;
   std::unique_ptr<Image3D> NoQuads_;
+  std::unique_ptr<Image3D> NoVolume_; // bound for the float image when the kernel reads the quads
   uint32_t SamplesPerDispatch_ = 16;
   std::array<uint64_t, 3> LastLookups_{};
   double LastLaneOccupancy_ = 1.0;

@@ -92,7 +92,8 @@ VS_CONST uint VS_POOL_VOLUME = 0u;
 VS_CONST uint VS_POOL_TF = 1u;
 VS_CONST uint VS_POOL_POOLED = 2u;
 VS_CONST uint VS_POOL_FACTOR_IMAGE = 3u;
-VS_CONST uint VS_POOL_BINDING_COUNT = 4u;
+VS_CONST uint VS_POOL_QUADS = 4u; /* an integer-coded volume's quads (vsDeviceVolume.h), read instead of the floats */
+VS_CONST uint VS_POOL_BINDING_COUNT = 5u;
 VS_CONST uint VS_OCCUPANCY_POOLED = 0u;
 VS_CONST uint VS_OCCUPANCY_OUTPUT = 1u;
 VS_CONST uint VS_OCCUPANCY_BINDING_COUNT = 2u;
@@ -156,6 +157,12 @@ VS_CONST uint VS_LIGHTMS_BINDING_COUNT = 18u;
 VS_CONST uint VS_RANGES_VOLUME = 0u;
 VS_CONST uint VS_RANGES_OUTPUT = 1u;
 VS_CONST uint VS_RANGES_BINDING_COUNT = 2u;
+
+/* An integer-coded volume's float image, made from its quads on first use (volume/volume_from_quads.comp,
+ * volume/vsDeviceVolume.cxx). Push constants: VsQuadsPush (quads_params.h). */
+VS_CONST uint VS_QUADS_INPUT = 0u;  /* r32ui image: the quads */
+VS_CONST uint VS_QUADS_OUTPUT = 1u; /* r32f image: the scalars */
+VS_CONST uint VS_QUADS_BINDING_COUNT = 2u;
 
 /* The display's guided filter of the estimate (render/denoise.comp, render/vsDenoisePass.cxx). Push
  * constants: VsDenoiseParams (denoise_params.h). */

@@ -18,7 +18,7 @@ struct VsPoolPush
   ivec3 pooled;        /* pooled texels per axis */
   uint cropFlags;      /* the cropping regions (vsVolumeGeometry.h): hidden voxels pool as 0 */
   vec3 cropLo;
-  uint unused0;
+  float quadZero;      /* with the quads (VS_POOL_FROM_QUADS): the scalar of code 0 */
   vec3 cropHi;
   uint unused1;
   VsTransferFunction tf;

@@ -10,8 +10,11 @@
  * With VS_POOL_FACTOR, sigma_t at a voxel is scaled by the voxel's extinction factor (the gradient
  * opacity, uFactor): the texel pools sigma_t(s) x g at the voxels, the same product the renderer
  * interpolates between them (exact at the voxels; the pooling's loss of detail as above).
- * P, max pooling, cropping and the factor are specialization constants: the block loops unroll, and
- * what is not used is compiled out (lavapipe runs both sides of a branch).
+ * With VS_POOL_FROM_QUADS the voxels are read from an integer-coded volume's quads (vsDeviceVolume.h: the
+ * low byte of texel (x, y, z) is voxel (x, y, z)'s code), the same floats as its float image, which
+ * then need not exist.
+ * P, max pooling, cropping, the factor and the quads are specialization constants: the block loops
+ * unroll, and what is not used is compiled out (lavapipe runs both sides of a branch).
  */
 #include "bindings.h"
 #include "pool_params.h"
@@ -20,7 +23,9 @@ layout(constant_id = 0) const int VS_POOL_P = 2;
 layout(constant_id = 1) const uint VS_POOL_MAX = 0u;
 layout(constant_id = 2) const uint VS_POOL_CROP = 0u;
 layout(constant_id = 3) const uint VS_POOL_FACTOR = 0u;
-layout(binding = VS_POOL_VOLUME, r32f) uniform readonly image3D uVolume;
+layout(constant_id = 4) const uint VS_POOL_FROM_QUADS = 0u;
+layout(binding = VS_POOL_VOLUME, r32f) uniform readonly image3D uVolume; /* read without VS_POOL_FROM_QUADS */
+layout(binding = VS_POOL_QUADS, r32ui) uniform readonly uimage3D uQuads; /* read with VS_POOL_FROM_QUADS */
 #define VS_TF_TEXELS
 layout(binding = VS_POOL_TF) uniform samplerBuffer uTF; /* r32f: the table's floats (volume_access.glsl) */
 layout(binding = VS_POOL_POOLED, r32f) uniform writeonly image3D uPooled;
@@ -47,7 +52,8 @@ void main()
         // weight 0 (the block's voxels inside the volume only), the max is unchanged.
         ivec3 v = lo + ivec3(x, y, z);
         ivec3 c = min(v, last);
-        float e = vs_classify_extinction(imageLoad(uVolume, c).r, pc.tf);
+        float s = VS_POOL_FROM_QUADS == 1u ? float(imageLoad(uQuads, c).r & 0xffu) + pc.quadZero : imageLoad(uVolume, c).r;
+        float e = vs_classify_extinction(s, pc.tf);
         if (VS_POOL_FACTOR == 1u)
           e *= imageLoad(uFactor, c).r;
         if (VS_POOL_CROP == 1u)

@@ -93,14 +93,17 @@ void PooledExtinction::Start(const Key& key, const DeviceVolume& volume)
     using B = BindingType;
     const uint32_t cropped = key.Pooling.CropFlags ? 1u : 0u;
     const uint32_t scaled = key.ExtinctionFactor ? 1u : 0u;
+    this->FromQuads_ = this->VolumeQuads_ && volume.Quads();
+    const uint32_t quads = this->FromQuads_ ? 1u : 0u;
     this->Pool_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_pool),
       BindingTypes(shared::VS_POOL_BINDING_COUNT,
         { { shared::VS_POOL_VOLUME, B::StorageImage }, { shared::VS_POOL_TF, B::UniformTexelBuffer },
-          { shared::VS_POOL_POOLED, B::StorageImage }, { shared::VS_POOL_FACTOR_IMAGE, B::StorageImage } }),
+          { shared::VS_POOL_POOLED, B::StorageImage }, { shared::VS_POOL_FACTOR_IMAGE, B::StorageImage },
+          { shared::VS_POOL_QUADS, B::StorageImage } }),
       sizeof(shared::VsPoolPush),
       "sweep pool (P " + std::to_string(factor) + (key.Pooling.Max ? ", max" : ", mean") +
-        (cropped ? ", cropped" : "") + (scaled ? ", gradient opacity)" : ")"),
-      { factor, key.Pooling.Max ? 1u : 0u, cropped, scaled });
+        (cropped ? ", cropped" : "") + (scaled ? ", gradient opacity" : "") + (quads ? ", 8-bit quads)" : ")"),
+      { factor, key.Pooling.Max ? 1u : 0u, cropped, scaled, quads });
     this->OccupancyPipeline_ = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_sweep_pool_occupancy),
       BindingTypes(shared::VS_OCCUPANCY_BINDING_COUNT,
         { { shared::VS_OCCUPANCY_POOLED, B::StorageImage }, { shared::VS_OCCUPANCY_OUTPUT, B::StorageImage } }),
@@ -112,7 +115,6 @@ void PooledExtinction::Start(const Key& key, const DeviceVolume& volume)
     this->PooledDims_[i] = int((key.Dims[i] + factor - 1) / factor);
     this->Bricks_[i] = (this->PooledDims_[i] + int(brick) - 1) / int(brick);
   }
-  (void)volume;
   this->Pooled_.reset();
   this->Occupancy_.reset();
   this->Pooled_ = std::make_unique<Image3D>(this->Context_, uint32_t(this->PooledDims_.x),
@@ -128,11 +130,21 @@ void PooledExtinction::Start(const Key& key, const DeviceVolume& volume)
 double PooledExtinction::PoolSlices(
   const DeviceVolume& volume, const TransferFunctionTable& tf, uint32_t z0, uint32_t z1)
 {
+  // An integer-coded volume is pooled from its quads (its float image is then never asked for); the
+  // binding not read gets a placeholder texel.
+  const Image3D* quads = this->FromQuads_ ? volume.Quads() : nullptr;
+  if (!this->NoImage_)
+  {
+    this->NoImage_ = std::make_unique<Image3D>(this->Context_, 1, 1, 1, vk::Format::eR32Sfloat, "no float volume");
+    this->NoQuads_ = std::make_unique<Image3D>(this->Context_, 1, 1, 1, vk::Format::eR32Uint, "no volume quads");
+  }
+  const Image3D& floats = quads ? *this->NoImage_ : volume.Image();
   DescriptorSet set(*this->Pool_);
-  set.Bind(shared::VS_POOL_VOLUME, volume.Image())
+  set.Bind(shared::VS_POOL_VOLUME, floats)
     .BindTexels(shared::VS_POOL_TF, tf.Lut(), vk::Format::eR32Sfloat)
-    .Bind(shared::VS_POOL_POOLED, *this->Pooled_);
-  set.Bind(shared::VS_POOL_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : volume.Image()); // unread without a factor
+    .Bind(shared::VS_POOL_POOLED, *this->Pooled_)
+    .Bind(shared::VS_POOL_QUADS, quads ? *quads : *this->NoQuads_);
+  set.Bind(shared::VS_POOL_FACTOR_IMAGE, volume.Factor() ? *volume.Factor() : floats); // unread without a factor
   const Key& key = this->Key_;
   shared::VsPoolPush pp{};
   pp.dims = glm::ivec3(int(key.Dims[0]), int(key.Dims[1]), int(key.Dims[2]));
@@ -141,6 +153,7 @@ double PooledExtinction::PoolSlices(
   pp.cropLo = key.Pooling.CropLo;
   pp.cropHi = key.Pooling.CropHi;
   pp.cropFlags = key.Pooling.CropFlags;
+  pp.quadZero = quads ? volume.QuadOffset() : 0.0f;
   pp.tf = tf.Params();
   Batch cmd(this->Context_);
   cmd.BeginTimer("pool");

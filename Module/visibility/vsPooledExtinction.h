@@ -64,6 +64,9 @@ public:
   /** Estimated device seconds to finish the build in progress: its slices left at the measured
    *  seconds per slice; 0 when complete, and while unknown (no build started, or no slab built yet). */
   double RemainingSeconds() const;
+  /** Whether an integer-coded volume is pooled from its quads (the default; the same bits as from its
+   *  float image, which is then never made: vsDeviceVolume.h). Off: from the float image. */
+  void SetVolumeQuads(bool on) { this->VolumeQuads_ = on; }
   /** Pooled texels per occupancy brick side: 8 voxels, as the majorant grid's bricks (at least 1). */
   static uint32_t BrickTexels(uint32_t factor);
   /** Pooled slices per slab (the pool dispatch's workgroup depth). */
@@ -96,6 +99,7 @@ private:
   std::shared_ptr<Context> Context_;
   std::shared_ptr<ComputePipeline> Pool_, OccupancyPipeline_;
   std::unique_ptr<Image3D> Pooled_, Occupancy_;
+  std::unique_ptr<Image3D> NoImage_, NoQuads_; // placeholders for the volume binding not read
   Key Key_;              // of the build in progress or done
   bool Started_ = false; // Key_ describes a build (in progress unless Complete_)
   bool Complete_ = false;
@@ -103,6 +107,8 @@ private:
   double SecondsPerSlice_ = 0.0;  // measured on the slabs so far
   glm::ivec3 PooledDims_{ 0 }, Bricks_{ 0 };
   uint64_t Builds_ = 0;
+  bool VolumeQuads_ = true;
+  bool FromQuads_ = false; // the build in progress reads the quads (chosen at Start)
 };
 }
 

@@ -86,15 +86,17 @@ float vs_sample(vec3 p, ivec3 dims, uint interpolation)
  * differences of vs_sample one voxel either side per axis, d s / d world = transpose(d index / d world)
  * d s / d index. NaN where a difference reads a hidden cropping region or a non-finite voxel. The
  * emission-absorption pass's Phong shading (ea_render.comp) and the path kernel's surface lobe
- * (surface_scattering.glsl) both take their normal from it. */
+ * (surface_scattering.glsl) both take their normal from it. An includer that reads the scalar its own
+ * way (the path kernel: from the quads, kernel_volume.glsl) defines VS_GRADIENT_SAMPLE(p) to a
+ * function giving vs_sample's float, declared before this file. */
+#ifndef VS_GRADIENT_SAMPLE
+#define VS_GRADIENT_SAMPLE(p) vs_sample(p, dims, interpolation)
+#endif
 vec3 vs_world_gradient(vec3 x, ivec3 dims, uint interpolation, mat4 worldToIndex)
 {
-  vec3 g = 0.5 * vec3(vs_sample(x + vec3(1.0, 0.0, 0.0), dims, interpolation) -
-                        vs_sample(x - vec3(1.0, 0.0, 0.0), dims, interpolation),
-                      vs_sample(x + vec3(0.0, 1.0, 0.0), dims, interpolation) -
-                        vs_sample(x - vec3(0.0, 1.0, 0.0), dims, interpolation),
-                      vs_sample(x + vec3(0.0, 0.0, 1.0), dims, interpolation) -
-                        vs_sample(x - vec3(0.0, 0.0, 1.0), dims, interpolation));
+  vec3 g = 0.5 * vec3(VS_GRADIENT_SAMPLE(x + vec3(1.0, 0.0, 0.0)) - VS_GRADIENT_SAMPLE(x - vec3(1.0, 0.0, 0.0)),
+                      VS_GRADIENT_SAMPLE(x + vec3(0.0, 1.0, 0.0)) - VS_GRADIENT_SAMPLE(x - vec3(0.0, 1.0, 0.0)),
+                      VS_GRADIENT_SAMPLE(x + vec3(0.0, 0.0, 1.0)) - VS_GRADIENT_SAMPLE(x - vec3(0.0, 0.0, 1.0)));
   return transpose(mat3(worldToIndex)) * g;
 }
 

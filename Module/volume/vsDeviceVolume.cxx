@@ -1,10 +1,16 @@
 #include "vsDeviceVolume.h"
+#include "sampling/bindings.h"
+#include "sampling/quads_params.h"
+#include "vsBatch.h"
 #include "vsContext.h"
 #include "vsError.h"
 #include "vsImage.h"
 #include "vsParallelSlabs.h"
 #include "vsSerial.h"
+#include "vsPipeline.h"
 #include "vsStagedUpload.h"
+
+#include "vs_spirv_volume_from_quads.h"
 
 #include <algorithm>
 #include <cmath>
@@ -61,7 +67,6 @@ DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const HostScalars& 
   {
     throw InputError("the device volume was given no scalars");
   }
-  this->Image_ = std::make_unique<Image3D>(context, dims[0], dims[1], dims[2], vk::Format::eR32Sfloat, "volume");
   const uint64_t slice = uint64_t(dims[0]) * dims[1];
   // First the range, the integer test and the count (in slabs of slices on the host's threads,
   // vsParallelSlabs.h; combined over the slabs): the quads' offset is the smallest value. On the
@@ -99,13 +104,14 @@ DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const HostScalars& 
       this->Quads_.reset();
     }
   }
-  // Then one pass per slice while it is in the cache: the floats (non-finite as NaN), the quads, the
-  // caller's visit (the brick ranges), each slab staging and submitting its own chunks of slices.
-  std::vector<Image3D*> images{ this->Image_.get() };
-  if (this->Quads_)
+  // Then one pass per slice while it is in the cache: the quads or else the floats (non-finite as
+  // NaN), and the caller's visit (the brick ranges), each slab staging and submitting its own chunks
+  // of slices. With quads the float image waits for a pass that reads it (Image()).
+  if (!this->Quads_)
   {
-    images.push_back(this->Quads_.get());
+    this->Image_ = std::make_unique<Image3D>(context, dims[0], dims[1], dims[2], vk::Format::eR32Sfloat, "volume");
   }
+  std::vector<Image3D*> images{ this->Quads_ ? this->Quads_.get() : this->Image_.get() };
   const uint32_t chunk = StagedUpload::SlicesPerChunk(images, kChunkBytes);
   const float offset = this->QuadOffset_;
   // On a CPU device the images are the host's memory, fresh: the copies would fault it in on the
@@ -128,21 +134,23 @@ DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const HostScalars& 
     }
     StagedUpload upload(context, images, chunk);
     std::vector<float> floats(slice);
-    std::vector<uint8_t> codes(images.size() > 1 ? slice : 0);
+    const bool packed = this->Quads_ != nullptr;
+    std::vector<uint8_t> codes(packed ? slice : 0);
     for (uint64_t z = z0; z < z1; z += chunk)
     {
       const uint32_t n = uint32_t(std::min<uint64_t>(chunk, z1 - z));
       upload.Begin(uint32_t(z), n);
-      float* staged = static_cast<float*>(upload.Texels(0));
-      uint32_t* quads = images.size() > 1 ? static_cast<uint32_t*>(upload.Texels(1)) : nullptr;
       for (uint32_t k = 0; k < n; ++k)
       {
         // Converted into host memory (the staging may be write-combined), read from there.
         scalars.ToFloat((z + k) * slice, (z + k + 1) * slice, floats.data());
-        std::memcpy(staged + k * slice, floats.data(), slice * sizeof(float));
-        if (quads)
+        if (packed)
         {
-          PackQuads(floats.data(), offset, dims, codes.data(), quads + k * slice);
+          PackQuads(floats.data(), offset, dims, codes.data(), static_cast<uint32_t*>(upload.Texels(0)) + k * slice);
+        }
+        else
+        {
+          std::memcpy(static_cast<float*>(upload.Texels(0)) + k * slice, floats.data(), slice * sizeof(float));
         }
         if (eachSlice)
         {
@@ -163,6 +171,31 @@ DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const HostScalars& 
 }
 
 DeviceVolume::~DeviceVolume() = default;
+
+const Image3D& DeviceVolume::Image() const
+{
+  if (!this->Image_)
+  {
+    // Only an integer-coded volume comes without its float image: make it from the quads.
+    const auto& d = this->Dims_;
+    auto image = std::make_unique<Image3D>(this->Context_, d[0], d[1], d[2], vk::Format::eR32Sfloat, "volume");
+    std::shared_ptr<ComputePipeline> pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_volume_from_quads),
+      BindingTypes(shared::VS_QUADS_BINDING_COUNT,
+        { { shared::VS_QUADS_INPUT, BindingType::StorageImage }, { shared::VS_QUADS_OUTPUT, BindingType::StorageImage } }),
+      sizeof(shared::VsQuadsPush), "volume from quads");
+    DescriptorSet set(*pipeline);
+    set.Bind(shared::VS_QUADS_INPUT, *this->Quads_).Bind(shared::VS_QUADS_OUTPUT, *image);
+    shared::VsQuadsPush push{};
+    push.dims = glm::ivec3(int32_t(d[0]), int32_t(d[1]), int32_t(d[2]));
+    push.quadZero = this->QuadOffset_;
+    Batch batch(this->Context_);
+    batch.Dispatch(*pipeline, set, &push, sizeof(push), (d[0] + 7) / 8, (d[1] + 7) / 8, d[2]);
+    batch.Barrier();
+    batch.Submit();
+    this->Image_ = std::move(image);
+  }
+  return *this->Image_;
+}
 
 void DeviceVolume::SetFactor(const float* factor)
 {

@@ -7,7 +7,11 @@
 // packs the 8-bit codes (value - QuadOffset) of voxels (x, y), (x + 1, y), (x, y + 1),
 // (x + 1, y + 1) of slice z (neighbours clamped to the volume), so that the render kernel reads a
 // trilinear footprint in 2 vector gathers instead of 8 (lavapipe gathers 32-bit texels, and loads
-// 8-bit ones lane by lane). The scalars the two give are the same floats.
+// 8-bit ones lane by lane). The scalars the two give are the same floats. Such a volume's R32F image
+// is made from the quads, on the device, only when a pass first asks for it (Image()): the render
+// kernel under linear interpolation and the sweeps' pool read the quads alone, so a render that
+// needs nothing else never holds the floats (issue 39: ch2better's 140 MB, which a CPU device faulted
+// in during the first frame's upload: 0.3 s of it after an idle pause).
 //
 // Optionally a factor per voxel (the gradient opacity, vsGradientOpacity.h): a second R32F image of
 // the same dimensions whose interpolant scales the classified extinction in every pass.
@@ -42,7 +46,11 @@ public:
     const SliceVisitor& eachSlice = SliceVisitor());
   ~DeviceVolume();
 
-  const Image3D& Image() const { return *this->Image_; }
+  /** The R32F image of the scalars. An integer-coded volume's is made from its quads on the first
+   *  call (one dispatch); not thread-safe (device passes run on the render thread). */
+  const Image3D& Image() const;
+  /** Whether the R32F image exists yet (an integer-coded volume's is made on first use). */
+  bool HasImage() const { return this->Image_ != nullptr; }
   /** The quads of an integer-coded volume, or nullptr (float data, quads over kMaxQuadBytes, or
    *  past the device's limits: they only speed the render kernel up, so a volume that fits without
    *  them renders without them). */
@@ -70,7 +78,7 @@ public:
 private:
   std::shared_ptr<Context> Context_;
   std::array<uint32_t, 3> Dims_;
-  std::unique_ptr<Image3D> Image_;
+  mutable std::unique_ptr<Image3D> Image_; // made on first use when there are quads (Image())
   std::unique_ptr<Image3D> Factor_;
   uint64_t FactorSerial_ = 0;
   std::unique_ptr<Image3D> Quads_;

@@ -1,9 +1,13 @@
 // An integer-coded volume's 8-bit quads (vsDeviceVolume.h): which volumes get them, their packing,
 // and that the render kernel's trilinear samples from them are the same floats as from the r32f
-// image: the same image bit for bit, with and without them.
+// image: the same image bit for bit, with and without them. The float image of such a volume is made
+// from its quads only when a pass reads floats: the render kernel and the sweeps' pool never do.
 #include "vsDeviceVolume.h"
 #include "vsImage.h"
+#include "vsMajorantGrid.h"
+#include "vsPooledExtinction.h"
 #include "vsRenderTestScene.h"
+#include "vsTransferFunctionTable.h"
 
 #include "sampling/strategies.h"
 
@@ -56,28 +60,133 @@ TEST(VolumeQuads, OnlyForFiniteIntegersWithin255OfTheSmallest)
   without(w, "an infinite voxel");
 }
 
+TEST(VolumeQuads, TheFloatImageIsMadeFromTheQuadsOnlyWhenAsked)
+{
+  auto ctx = vs::Context::Default();
+  const std::array<uint32_t, 3> dims{ { 13, 9, 5 } };
+  std::vector<float> v(size_t(dims[0]) * dims[1] * dims[2]);
+  for (size_t i = 0; i < v.size(); ++i)
+    v[i] = float(int(i * 37 % 256)) - 100.0f; // integers in [-100, 155]
+  vs::DeviceVolume coded(ctx, v.data(), dims);
+  ASSERT_NE(coded.Quads(), nullptr);
+  EXPECT_FALSE(coded.HasImage()) << "an integer-coded volume holds its quads alone until a pass reads floats";
+  std::vector<float> floats(v.size());
+  coded.Image().Download(floats.data(), floats.size() * sizeof(float));
+  EXPECT_TRUE(coded.HasImage());
+  EXPECT_EQ(floats, v) << "the same floats as uploaded";
+
+  std::vector<float> w = v;
+  w[3] = 0.5f; // not integer-coded: the float image from the start
+  vs::DeviceVolume plain(ctx, w.data(), dims);
+  EXPECT_EQ(plain.Quads(), nullptr);
+  EXPECT_TRUE(plain.HasImage());
+  plain.Image().Download(floats.data(), floats.size() * sizeof(float));
+  EXPECT_EQ(floats, w);
+}
+
+// The sweeps' pool of an integer-coded volume reads the quads: the same pooled extinction bit for bit
+// as from the float image, which the pool never asks for (the majorants from the host's scalars, as
+// the mapper makes them).
+TEST(VolumeQuads, PoolFromTheQuadsIsTheFloatImagesBitForBit)
+{
+  auto ctx = vs::Context::Default();
+  const std::array<uint32_t, 3> dims{ { 19, 14, 11 } }; // odd: blocks past the end clamp
+  std::vector<float> v(size_t(dims[0]) * dims[1] * dims[2]);
+  for (uint32_t z = 0; z < dims[2]; ++z)
+    for (uint32_t y = 0; y < dims[1]; ++y)
+      for (uint32_t x = 0; x < dims[0]; ++x)
+        v[(size_t(z) * dims[1] + y) * dims[0] + x] = (x + y + z) % 5 == 0 ? 3.0f : float(3 + (x * 7 + y * 3 + z) % 200);
+  auto samples = vs::TransferFunctionSamples::FromFunctions(0.0f, 255.0f, 256,
+    [](double s) { return std::min(0.9, s / 255.0); }, [](double, double c[3]) { c[0] = c[1] = c[2] = 1.0; }, 1.0,
+    1.0);
+  vs::TransferFunctionTable tf(ctx, samples);
+  const auto download = [](const vs::Image3D& image) {
+    std::vector<float> out(image.Bytes() / sizeof(float));
+    image.Download(out.data(), image.Bytes());
+    return out;
+  };
+  for (bool max : { false, true })
+  {
+    vs::DeviceVolume volume(ctx, v.data(), dims);
+    ASSERT_NE(volume.Quads(), nullptr);
+    vs::MajorantGrid majorants(ctx);
+    majorants.UpdateRanges(volume, v.data());
+    majorants.UpdateMajorants(samples);
+    vs::PooledExtinction::Settings settings;
+    settings.Factor = 2;
+    settings.Max = max;
+    vs::PooledExtinction fromQuads(ctx);
+    EXPECT_GT(fromQuads.Ensure(volume, tf, majorants, settings), 0.0);
+    EXPECT_FALSE(volume.HasImage()) << "the pool read the quads alone";
+    vs::PooledExtinction fromFloats(ctx);
+    fromFloats.SetVolumeQuads(false);
+    EXPECT_GT(fromFloats.Ensure(volume, tf, majorants, settings), 0.0);
+    EXPECT_TRUE(volume.HasImage());
+    const std::vector<float> a = download(fromQuads.Pooled()), b = download(fromFloats.Pooled());
+    EXPECT_EQ(a, b) << (max ? "max" : "mean") << " pooling";
+    double sum = 0.0;
+    for (float e : a)
+      sum += e;
+    EXPECT_GT(sum, 0.0) << "extinction, not zeros";
+    EXPECT_EQ(download(fromQuads.Occupancy()), download(fromFloats.Occupancy()));
+  }
+}
+
 TEST(VolumeQuads, RenderIsBitIdenticalToTheFloatImage)
 {
   // Integer scalars 10..13 (offset 10), a few empty voxels; linear interpolation.
-  RenderScene scene({ { 21, 18, 15 } },
-    [](int x, int y, int z) { return (x + y + z) % 7 == 0 ? 0.0f : float(10 + (x * 3 + y * 5 + z) % 4); }, 0.05,
-    glm::vec3(0.8f, 0.7f, 0.6f),
+  const auto scalar = [](int x, int y, int z) {
+    return (x + y + z) % 7 == 0 ? 0.0f : float(10 + (x * 3 + y * 5 + z) % 4);
+  };
+  const std::array<uint32_t, 3> dims{ { 21, 18, 15 } };
+  RenderScene scene(dims, scalar, 0.05, glm::vec3(0.8f, 0.7f, 0.6f),
     vs::EnvironmentMap::SunDisk(64, glm::normalize(glm::vec3(1, 2, 3)), 5.0, glm::vec3(40.0f), glm::vec3(0.3f)));
   ASSERT_NE(scene.Volume->Quads(), nullptr) << "the scene's volume is integer-coded";
-  for (uint32_t strategy : { vs::shared::VS_STRATEGY_ENVIRONMENT, vs::shared::VS_STRATEGY_TWO_STEP })
+  // The scene's grid and majorants read the float image; a fresh upload of the same scalars has none.
+  std::vector<float> v(size_t(dims[0]) * dims[1] * dims[2]);
+  for (uint32_t z = 0; z < dims[2]; ++z)
+    for (uint32_t y = 0; y < dims[1]; ++y)
+      for (uint32_t x = 0; x < dims[0]; ++x)
+        v[(size_t(z) * dims[1] + y) * dims[0] + x] = scalar(int(x), int(y), int(z));
+  // Variants: the brick walk; the cell walk (every majorant segment past an optical depth of 0.01,
+  // whose cell corners the kernel reads); the surface lobe at every event (its normal is the
+  // scalar's central differences), under full transport.
+  enum Variant
   {
-    auto p = scene.Params(10, 10, -3.0f, 24.0f, strategy, 64, 23u, true);
-    scene.VolumeQuads = false;
-    auto [a, va] = scene.Render(p, 2);
-    EXPECT_FALSE(scene.LastUsedVolumeQuads);
-    scene.VolumeQuads = true;
-    auto [b, vb] = scene.Render(p, 2);
-    EXPECT_TRUE(scene.LastUsedVolumeQuads);
-    EXPECT_EQ(a, b) << "strategy " << strategy;
-    EXPECT_EQ(va, vb) << "strategy " << strategy;
-    double sum = 0.0;
-    for (float x : a)
-      sum += x;
-    EXPECT_GT(sum, 0.0) << "an image, not zeros";
-  }
+    Bricks,
+    CellWalk,
+    Surface
+  };
+  for (Variant variant : { Bricks, CellWalk, Surface })
+    for (uint32_t strategy : { vs::shared::VS_STRATEGY_ENVIRONMENT, vs::shared::VS_STRATEGY_TWO_STEP })
+    {
+      auto p = scene.Params(10, 10, -3.0f, 24.0f, strategy, 64, 23u, true);
+      if (variant == CellWalk)
+        p.cellWalkDepth = 0.01f;
+      if (variant == Surface)
+      {
+        p.surface = 1u;
+        p.surfaceBlending = 0.0f;
+        p.surfaceDiffuse = 0.6f;
+        p.surfaceSpecular = 0.3f;
+        p.surfaceRoughness = 0.2f;
+        p.gradientScale = 4.0f;
+        p.opacityDistance = 1.0f;
+        p.maxEvents = 4u;
+      }
+      scene.Volume = std::make_unique<vs::DeviceVolume>(scene.Context, v.data(), dims);
+      scene.VolumeQuads = true;
+      auto [b, vb] = scene.Render(p, 2);
+      EXPECT_TRUE(scene.LastUsedVolumeQuads);
+      EXPECT_FALSE(scene.Volume->HasImage()) << "the kernel read the quads alone: variant " << variant;
+      scene.VolumeQuads = false;
+      auto [a, va] = scene.Render(p, 2);
+      EXPECT_FALSE(scene.LastUsedVolumeQuads);
+      EXPECT_EQ(a, b) << "variant " << variant << ", strategy " << strategy;
+      EXPECT_EQ(va, vb) << "variant " << variant << ", strategy " << strategy;
+      double sum = 0.0;
+      for (float x : a)
+        sum += x;
+      EXPECT_GT(sum, 0.0) << "an image, not zeros";
+    }
 }
