@@ -12,6 +12,7 @@
 #include "sampling/update_order.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace vs
 {
@@ -54,7 +55,8 @@ std::vector<uint8_t> GridSchedule::RequiredDirections(vtkVisibilitySweepVolumeMa
 // importance (the fill-in order), the data version (lazy updates) and the sweep budget.
 void GridSchedule::FillRequest(vtkVisibilitySweepVolumeMapper* mapper, GridUpdateRequest& r,
   const VolumeGeometry& geometry, MapperEnvironment& environment, VolumeScene& scene, bool fullUpdate,
-  StrategySelector& selector, double lastRenderSeconds, bool autoStrategy, double pendingSweepSeconds)
+  StrategySelector& selector, double lastRenderSeconds, bool autoStrategy, double remainingSeconds,
+  double pendingSweepSeconds)
 {
   r.Parameters = Parameters(mapper->GetDirectionResolution(),
     mapper->GetVoxelsPerCell() > 0.0 ? std::max(1.0, mapper->GetVoxelsPerCell()) : vs::SweepPlan::AutomaticVoxelsPerCell(geometry),
@@ -88,8 +90,21 @@ void GridSchedule::FillRequest(vtkVisibilitySweepVolumeMapper* mapper, GridUpdat
   r.BudgetSeconds = fraction * lastRenderSeconds;
   // Auto stops filling in when the sweeps cannot pay (AutoFillsIn); lazy updates and invalidations
   // still happen.
-  r.FillIn = !autoStrategy || AutoFillsIn(selector, fraction, mapper->GetRemainingTimeBudget(), pendingSweepSeconds);
+  r.FillIn = !autoStrategy || AutoFillsIn(selector, fraction, remainingSeconds, pendingSweepSeconds);
   r.FillUnswept = mapper->GetFillUnsweptDirections();
+}
+
+double GridSchedule::RemainingSeconds(
+  double deadline, int maximumSamples, int accumulatedSamples, double secondsPerSample)
+{
+  const bool hasDeadline = deadline > 0.0 && std::isfinite(deadline);
+  double remaining = hasDeadline ? deadline : 0.0;
+  if (secondsPerSample > 0.0 && std::isfinite(secondsPerSample))
+  {
+    const double toTarget = std::max(1e-3, double(maximumSamples - accumulatedSamples) * secondsPerSample);
+    remaining = hasDeadline ? std::min(remaining, toTarget) : toTarget;
+  }
+  return remaining;
 }
 
 bool GridSchedule::AutoFillsIn(const StrategySelector& selector, double sweepFraction, double remainingSeconds,

@@ -101,8 +101,11 @@ void vtkVisibilitySweepVolumeMapper::UpdateVisibilityGrid(bool needGrid, bool au
     return;
   }
   vs::GridUpdateRequest& r = I.LastGridRequest;
+  // Auto's horizon: the deadline, and the samples left to MaximumSamples at the last frame's cost.
+  const double remaining = vs::GridSchedule::RemainingSeconds(this->RemainingTimeBudget, this->MaximumSamples,
+    this->AccumulatedSamples, I.LastRenderSamples > 0 ? I.LastRenderSeconds / I.LastRenderSamples : 0.0);
   vs::GridSchedule::FillRequest(this, r, I.GridGeometry, I.Environment, *I.Scene, I.GridNeedsFull, I.Selector,
-    I.LastRenderSeconds, autoStrategy, I.Grid ? I.Grid->PendingSweepSeconds() : 0.0);
+    I.LastRenderSeconds, autoStrategy, remaining, I.Grid ? I.Grid->PendingSweepSeconds() : 0.0);
   this->UnlitDirections = int(std::count(r.Required.begin(), r.Required.end(), uint8_t(0)));
   if (!I.Grid)
   {

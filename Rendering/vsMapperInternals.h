@@ -83,6 +83,7 @@ struct vtkVisibilitySweepVolumeMapper::Internals
   vs::GridUpdateRequest LastGridRequest;
   vs::StrategySelector Selector;      // Auto: Environment or TwoStep, frame by frame
   double LastRenderSeconds = 0.0;     // device seconds of the last Monte Carlo frame (the sweep budget)
+  uint32_t LastRenderSamples = 0;     // its samples per pixel (Auto's time left to a sample target)
   std::vector<double> ImageSignature; // what the accumulated image was rendered for
   vtkSmartPointer<vtkImageData> Radiance;
   // The pixels of Radiance that see the environment under the coverage alpha (VS_BACKGROUND_ENVIRONMENT_COVERAGE):

@@ -482,6 +482,7 @@ void vtkVisibilitySweepVolumeMapper::RenderMonteCarlo(vtkRenderer* ren, vtkVolum
     {
       // A frame's cost (the sweeps' budget), without the direction table's build.
       I.LastRenderSeconds = pass->LastSeconds() - pass->LastDirectionTableSeconds();
+      I.LastRenderSamples = spp;
     }
     if (pass->LastDirectionTableSeconds() > 0.0)
     {

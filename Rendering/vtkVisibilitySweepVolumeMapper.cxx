@@ -170,6 +170,7 @@ void vtkVisibilitySweepVolumeMapper::ReleaseGraphicsResources(vtkWindow* win)
   I.LastGridRequest = vs::GridUpdateRequest();
   I.Selector.ResetGrid();
   I.LastRenderSeconds = 0.0;
+  I.LastRenderSamples = 0;
   I.ImageSignature.clear();
 }
 

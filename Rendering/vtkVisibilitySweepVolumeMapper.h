@@ -639,7 +639,9 @@ public:
    *  TimeBudget; 0 or less (the default): no deadline, an interactive view. Auto then fills its grid
    *  in only while the sweeps still pending can pay for themselves before the deadline
    *  (StrategySelector::AffordableSweepSeconds; README, "Auto"): at 2 s the 0.5 mm MRI's grid
-   *  cannot, and Auto renders Environment sampling without sweeping. A loop's own state: setting
+   *  cannot, and Auto renders Environment sampling without sweeping. The samples left to
+   *  MaximumSamples, at the last frame's cost, are a deadline too (the nearer one counts): a
+   *  converged view sweeps nothing more. A loop's own state: setting
    *  it does not modify the mapper (no restart); +Inf is no deadline, NaN is refused (an error,
    *  the setting kept). */
   void SetRemainingTimeBudget(double seconds);

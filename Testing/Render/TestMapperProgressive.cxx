@@ -240,18 +240,29 @@ void TestAutoReportsAndSkips()
 
 // Issue 39: under a deadline Auto sweeps only what can pay for itself before it. A deadline 1 ms
 // away repays nothing but the first slab and direction (swept to learn their cost); without one,
-// or with a far one, the same frames fill the grid in.
+// or with a far one, the same frames fill the grid in. A sample target is a horizon too: the samples
+// left to MaximumSamples at the last frame's cost (vs::GridSchedule::RemainingSeconds), the nearer of
+// the two when both are set. With 3 samples the view converges in 3 frames, and the 37 frames after
+// it add none: they swept the whole grid before (64 directions), for samples that never came.
 void TestAutoSweepsOnlyWhatTheDeadlineRepays()
 {
-  int swept[3] = { 0, 0, 0 };
-  const double deadlines[3] = { 1e-3, 0.0, 1e6 };
-  for (int k = 0; k < 3; ++k)
+  struct Case
+  {
+    double Deadline;
+    int MaximumSamples;
+    const char* Name;
+  };
+  const Case cases[] = { { 1e-3, 4096, "deadline 1 ms" }, { 0.0, 4096, "no deadline, 4096 spp" },
+    { 1e6, 4096, "deadline 1e6 s" }, { 0.0, 3, "no deadline, 3 spp" }, { 1e6, 3, "deadline 1e6 s, 3 spp" } };
+  int swept[5] = { 0, 0, 0, 0, 0 };
+  for (int k = 0; k < 5; ++k)
   {
     Scene s;
     s.Mapper->SetAutoProbeFraction(4.0); // tiny frames: let the grid fill in within the test
     s.Mapper->SetSweepFrameFraction(4.0);
+    s.Mapper->SetMaximumSamples(cases[k].MaximumSamples);
     const vtkMTimeType mtime = s.Mapper->GetMTime();
-    s.Mapper->SetRemainingTimeBudget(deadlines[k]);
+    s.Mapper->SetRemainingTimeBudget(cases[k].Deadline);
     Check(s.Mapper->GetMTime() == mtime, "the remaining time budget is the loop's state: it modifies nothing");
     for (int i = 0; i < 40; ++i)
     {
@@ -259,10 +270,13 @@ void TestAutoSweepsOnlyWhatTheDeadlineRepays()
     }
     swept[k] = s.Mapper->GetDirectionsUpdatedTotal();
     Check(s.Mapper->GetAccumulationResetCount() == 1, "a deadline restarts nothing");
+    std::printf("directions swept in 40 frames, %s: %d\n", cases[k].Name, swept[k]);
   }
-  std::printf("directions swept in 40 frames: deadline 1 ms %d, none %d, 1e6 s %d\n", swept[0], swept[1], swept[2]);
   Check(swept[0] <= 1, "a deadline 1 ms away repays no sweep beyond the first direction, swept " + std::to_string(swept[0]));
   Check(swept[1] > 1 && swept[2] > 1, "without a deadline, or a far one, the same frames fill the grid in");
+  Check(swept[3] <= 1 && swept[4] <= 1,
+    "the samples left to a near target repay no sweep beyond the first direction, swept " + std::to_string(swept[3]) +
+      " and " + std::to_string(swept[4]));
 
   // RenderUntilConverged sets it per frame and gives the caller's value back; NaN is refused.
   Scene s;
