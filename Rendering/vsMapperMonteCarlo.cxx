@@ -139,8 +139,10 @@ using vs::mapper::SetSurface;
 
 namespace
 {
-// The first frame's kernel settings for StartPrewarm and PrecompileRenderKernel (false: none to guess).
-bool PrewarmParameters(vtkVisibilitySweepVolumeMapper* mapper, vtkVolume* volume, vs::shared::VsMonteCarloParams& p)
+// The first frame's kernel settings for StartPrewarm and PrecompileRenderKernel (false: none to guess);
+// `renderer` (may be null: no lights) for its lights, which the kernel is specialized on.
+bool PrewarmParameters(vtkVisibilitySweepVolumeMapper* mapper, vtkVolume* volume, vtkRenderer* renderer,
+  vs::shared::VsMonteCarloParams& p)
 {
   vtkVolumeProperty* property = volume->GetProperty();
   if (mapper->GetCropping())
@@ -159,6 +161,11 @@ bool PrewarmParameters(vtkVisibilitySweepVolumeMapper* mapper, vtkVolume* volume
   {
     CopyKernelSettings(mapper, property, p);
     p.surface = property->GetShade(0) && mapper->GetVolumetricScatteringBlending() < 2.0 ? 1u : 0u; // issue 38
+    if (renderer)
+    {
+      // The key-lit MRI's first frame waited 0.2 s for a kernel with lights when the guess had none.
+      vs::SceneLights::Set(p, renderer);
+    }
   }
   catch (const vs::InputError&)
   {
@@ -168,12 +175,13 @@ bool PrewarmParameters(vtkVisibilitySweepVolumeMapper* mapper, vtkVolume* volume
 }
 }
 
-void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars)
+void vtkVisibilitySweepVolumeMapper::StartPrewarm(
+  vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars, vtkRenderer* renderer)
 {
   Internals& I = *this->Impl;
   I.Prewarm.MarkStarted();
   vs::shared::VsMonteCarloParams p{};
-  if (!PrewarmParameters(this, volume, p))
+  if (!PrewarmParameters(this, volume, renderer, p))
   {
     return;
   }
@@ -185,7 +193,7 @@ void vtkVisibilitySweepVolumeMapper::StartPrewarm(vtkImageData* input, vtkVolume
 }
 
 void vtkVisibilitySweepVolumeMapper::PrecompileRenderKernel(
-  vtkVolume* volume, vtkImageData* shape, int scalarType, double rangeMin, double rangeMax)
+  vtkVolume* volume, vtkImageData* shape, int scalarType, double rangeMin, double rangeMax, vtkRenderer* renderer)
 {
   Internals& I = *this->Impl;
   if (I.Prewarm.Started() || this->RenderMode != MonteCarlo || !volume || !volume->GetProperty() || !shape ||
@@ -206,7 +214,7 @@ void vtkVisibilitySweepVolumeMapper::PrecompileRenderKernel(
   }
   I.Prewarm.MarkStarted();
   vs::shared::VsMonteCarloParams p{};
-  if (!PrewarmParameters(this, volume, p))
+  if (!PrewarmParameters(this, volume, renderer, p))
   {
     return;
   }

@@ -241,7 +241,7 @@ void vtkVisibilitySweepVolumeMapper::RenderAndCheck(vtkRenderer* ren, vtkVolume*
     }
     if (!I.Prewarm.Started() && this->RenderMode == MonteCarlo && !projection && vol && vol->GetProperty())
     {
-      this->StartPrewarm(input, vol, scalars);
+      this->StartPrewarm(input, vol, scalars, ren);
     }
     this->DirectionsUpdatedLastFrame = 0;
     this->LastFrameSweepSeconds = 0.0;

@@ -552,10 +552,14 @@ public:
    * for other types e.g. the transfer function's), with the volume's property and this mapper's
    * settings as they will be at the first render. The first render uses the kernel when the guess
    * matches what the data turns out to be and makes its own otherwise: a wrong guess costs only the
-   * other thread's work. Does nothing outside the MonteCarlo mode, after the first render, or on a
-   * second call; needs no render window. `vissweep render` calls it from the volume file's header.
+   * other thread's work. `renderer`, if given, is the renderer the volume will be shown in, with its
+   * lights as they will be at the first render (the kernel is made for a scene with VTK's lights or
+   * for one without; null: without). Does nothing outside the MonteCarlo mode, after the first render,
+   * or on a second call; needs no render window. `vissweep render` calls it from the volume file's
+   * header.
    */
-  void PrecompileRenderKernel(vtkVolume* volume, vtkImageData* shape, int scalarType, double rangeMin, double rangeMax);
+  void PrecompileRenderKernel(vtkVolume* volume, vtkImageData* shape, int scalarType, double rangeMin, double rangeMax,
+    vtkRenderer* renderer = nullptr);
 
   /** The linear HDR radiance of the last render (of the view rendered last) as image data (width x height, point array
    *  "Radiance" with 3 floats and "Alpha"), rows bottom-up; nullptr before the first render. It is what
@@ -970,7 +974,7 @@ private:
   void UpdateEnvironmentInput();
   /** Starts making the first frame's render pipeline on another thread (the scene's conversion
    *  and upload keep this one busy meanwhile): the strategy's, or Environment sampling's for Auto. */
-  void StartPrewarm(vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars);
+  void StartPrewarm(vtkImageData* input, vtkVolume* volume, vtkDataArray* scalars, vtkRenderer* renderer);
   void UpdateVisibilityGrid(bool needGrid, bool usesGridOnly);
   void NoteSweeps(unsigned int directions, double deviceSeconds, double wallSeconds);
   void CompleteVisibilityGrid();

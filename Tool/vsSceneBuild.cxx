@@ -313,45 +313,8 @@ SceneObjects BuildScene(const Scene& scene, bool openGLWindow)
   o.Volume = vtkSmartPointer<vtkVolume>::New();
   o.Volume->SetMapper(o.Mapper);
   o.Volume->SetProperty(o.Property);
-  // The render kernel's compile (0.7-0.9 s on lavapipe) on the other core while this one reads the
-  // voxels (issue 39: ch2better's first frame waited for it after the read and the upload).
-  const VolumeHeaderSeen precompile = [&o](const VolumeHeader& h) {
-    vtkNew<vtkImageData> shape;
-    shape->SetExtent(const_cast<int*>(h.Extent));
-    shape->SetSpacing(h.Spacing);
-    shape->SetOrigin(h.Origin);
-    double range[2] = { 0.0, -1.0 };
-    if (h.ScalarType == VTK_UNSIGNED_CHAR || h.ScalarType == VTK_SIGNED_CHAR || h.ScalarType == VTK_CHAR)
-    {
-      range[0] = vtkDataArray::GetDataTypeMin(h.ScalarType);
-      range[1] = vtkDataArray::GetDataTypeMax(h.ScalarType);
-    }
-    else if (o.Property->GetScalarOpacity())
-    {
-      o.Property->GetScalarOpacity()->GetRange(range); // the scalars' range is not known before reading
-    }
-    o.Mapper->PrecompileRenderKernel(o.Volume, shape, h.ScalarType, range[0], range[1]);
-  };
-  try
-  {
-    o.Image = scene.Volume.Files.empty()
-      ? ReadVolume(scene.Volume.File, scene.Volume.Grid, vtkIdType(1) << 31, VolumeFits, precompile)
-      : ReadVolumeSequence(scene.Volume.Files, scene.Volume.Grid, scene.Volume.TimeStep);
-  }
-  catch (const std::exception& e)
-  {
-    throw std::runtime_error(std::string(scene.Volume.Files.empty() ? "volume.file: " : "volume.files: ") + e.what());
-  }
-  vtkDataArray* scalars = o.Image->GetPointData()->GetScalars();
-  if (scalars->GetNumberOfComponents() != 1)
-  {
-    throw std::runtime_error("volume: the scalars have " + std::to_string(scalars->GetNumberOfComponents()) +
-      " components (expected 1)");
-  }
-  o.Environment = MakeEnvironment(scene);
-  o.Mapper->SetInputData(o.Image);
-  o.Mapper->SetEnvironmentConnection(o.Environment->GetOutputPort());
-
+  // The renderer and its lights before the read: the kernel compiled during it depends on whether there are
+  // lights (its specialization constants).
   o.Renderer = vtkSmartPointer<vtkRenderer>::New();
   const auto& bg = scene.Environment.Background;
   o.Renderer->SetBackground(bg[0], bg[1], bg[2]);
@@ -388,6 +351,45 @@ SceneObjects BuildScene(const Scene& scene, bool openGLWindow)
     light->SetAttenuationValues(l.Attenuation.data());
     o.Renderer->AddLight(light);
   }
+  // The render kernel's compile (0.7-0.9 s on lavapipe) on the other core while this one reads the
+  // voxels (issue 39: ch2better's first frame waited for it after the read and the upload).
+  const VolumeHeaderSeen precompile = [&o](const VolumeHeader& h) {
+    vtkNew<vtkImageData> shape;
+    shape->SetExtent(const_cast<int*>(h.Extent));
+    shape->SetSpacing(h.Spacing);
+    shape->SetOrigin(h.Origin);
+    double range[2] = { 0.0, -1.0 };
+    if (h.ScalarType == VTK_UNSIGNED_CHAR || h.ScalarType == VTK_SIGNED_CHAR || h.ScalarType == VTK_CHAR)
+    {
+      range[0] = vtkDataArray::GetDataTypeMin(h.ScalarType);
+      range[1] = vtkDataArray::GetDataTypeMax(h.ScalarType);
+    }
+    else if (o.Property->GetScalarOpacity())
+    {
+      o.Property->GetScalarOpacity()->GetRange(range); // the scalars' range is not known before reading
+    }
+    o.Mapper->PrecompileRenderKernel(o.Volume, shape, h.ScalarType, range[0], range[1], o.Renderer);
+  };
+  try
+  {
+    o.Image = scene.Volume.Files.empty()
+      ? ReadVolume(scene.Volume.File, scene.Volume.Grid, vtkIdType(1) << 31, VolumeFits, precompile)
+      : ReadVolumeSequence(scene.Volume.Files, scene.Volume.Grid, scene.Volume.TimeStep);
+  }
+  catch (const std::exception& e)
+  {
+    throw std::runtime_error(std::string(scene.Volume.Files.empty() ? "volume.file: " : "volume.files: ") + e.what());
+  }
+  vtkDataArray* scalars = o.Image->GetPointData()->GetScalars();
+  if (scalars->GetNumberOfComponents() != 1)
+  {
+    throw std::runtime_error("volume: the scalars have " + std::to_string(scalars->GetNumberOfComponents()) +
+      " components (expected 1)");
+  }
+  o.Environment = MakeEnvironment(scene);
+  o.Mapper->SetInputData(o.Image);
+  o.Mapper->SetEnvironmentConnection(o.Environment->GetOutputPort());
+
   vtkCamera* camera = o.Renderer->GetActiveCamera();
   camera->SetPosition(scene.Camera.Position.data());
   camera->SetFocalPoint(scene.Camera.FocalPoint.data());

@@ -198,7 +198,9 @@ std::vector<BindingType> MonteCarloPass::KernelBindings()
 
 void MonteCarloPass::Prewarm(const shared::VsMonteCarloParams& params, bool table, bool quads, bool cellWalk)
 {
-  this->PipelineFor(nullptr, params, cellWalk, table && params.strategy > shared::VS_STRATEGY_ENVIRONMENT, quads);
+  // As Render decides: nearest interpolation reads the float image even where the volume has quads.
+  const bool readsQuads = quads && this->VolumeQuads_ && params.volume.interpolation == 0u;
+  this->PipelineFor(nullptr, params, cellWalk, table && params.strategy > shared::VS_STRATEGY_ENVIRONMENT, readsQuads);
 }
 
 bool MonteCarloPass::FullTransport(const shared::VsMonteCarloParams& params)

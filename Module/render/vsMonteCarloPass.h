@@ -46,7 +46,8 @@ public:
     const std::vector<float>& depth);
 
   /** Creates the pipeline a Render with these parameters would use (an r8 grid or none; the cell
-   *  walk if `cellWalk`), so that its creation (SPIR-V to the device's code: a large part of the
+   *  walk if `cellWalk`; the 8-bit quads if `quads`, the volume has them, and the interpolation is
+   *  linear, as Render decides), so that its creation (SPIR-V to the device's code: a large part of the
    *  first frame on lavapipe) can run on another thread while the caller prepares the scene. The
    *  caller must not use this pass on another thread meanwhile. Exceptions are the caller's to take
    *  or drop: the Render that needs the pipeline reports the same error. */
