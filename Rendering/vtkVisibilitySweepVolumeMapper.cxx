@@ -3,6 +3,7 @@
 #include "vsMapperInternals.h"
 #include "vsAccumulationSignature.h"
 #include "vsFrameGeometry.h"
+#include "vsFrameTimePredictor.h"
 #include "vsCoverageComposite.h"
 #include "vsPipelinePrewarm.h"
 #include "vsCombinedAccumulators.h"
@@ -470,6 +471,7 @@ int vtkVisibilitySweepVolumeMapper::RenderUntilConverged(vtkRenderWindow* window
   // The deadline, for Auto's sweeps (SetRemainingTimeBudget); the caller's value back afterwards.
   const double callerRemaining = this->RemainingTimeBudget;
   int stalled = 0;
+  vs::FrameTimePredictor predictor;
   while (true)
   {
     const int before = this->AccumulatedSamples;
@@ -491,8 +493,13 @@ int vtkVisibilitySweepVolumeMapper::RenderUntilConverged(vtkRenderWindow* window
     {
       break;
     }
-    // The next frame costs what this one did less its one-off update (new data, sweeps).
-    const double frame = std::max(0.0, std::chrono::duration<double>(now - frameStart).count() - this->LastUpdateSeconds);
+    // The next frame costs what these did less their one-off updates (new data, sweeps): the longest of
+    // the last three per sample (vs::FrameTimePredictor), so that a frame slower than the one before does
+    // not run the budget over.
+    const int added = this->AccumulatedSamples - before;
+    predictor.Add(
+      std::max(0.0, std::chrono::duration<double>(now - frameStart).count() - this->LastUpdateSeconds), added);
+    const double frame = predictor.NextFrameSeconds(std::max(added, 1));
     if (timed && std::chrono::duration<double>(now - start).count() + frame > timeBudgetSeconds)
     {
       break;

@@ -536,8 +536,8 @@ public:
    *  MaximumSamples reached, or the one render of a deterministic mode or projection), in one call:
    *  where vtkGPUVolumeRayCastMapper's one Render() is the whole image, this mapper's adds only
    *  SamplesPerFrame samples per pixel. With `timeBudgetSeconds` > 0 it also stops before a frame that
-   *  would end after that many seconds (predicted from the last frame; at least one frame is
-   *  rendered). It stops, too, after a render that failed (GetLastError()) or three frames that added
+   *  would end after that many seconds (predicted per sample as the longest of the last three frames,
+   *  vs::FrameTimePredictor; at least one frame is rendered). It stops, too, after a render that failed (GetLastError()) or three frames that added
    *  no sample (an interactive frame, a window that does not show the volume). Returns the samples per
    *  pixel accumulated (GetAccumulatedSamples()); a vtkWindowToImageFilter with ShouldRerenderOff()
    *  then grabs the image. */

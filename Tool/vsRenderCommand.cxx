@@ -8,6 +8,7 @@
 #include "vsRenderFrames.h"
 #include "vsToolCommand.h"
 #include "vsContext.h"
+#include "vsFrameTimePredictor.h"
 
 #include "vtkCamera.h"
 #include "vtkImageData.h"
@@ -374,6 +375,7 @@ ProgressiveResult RenderProgressively(
     return r; // no progress to show: one frame, no samples (the summary line says what it took)
   }
   int stalled = 0, previousSpp = 0;
+  vs::FrameTimePredictor predictor;
   while (true)
   {
     const auto f0 = Clock::now();
@@ -418,20 +420,23 @@ ProgressiveResult RenderProgressively(
     }
     // The next frame costs what this one did without the update (new data, sweeps): predicting
     // it with the update included would stop a budget right after the first frame of a new step.
-    double nextFrameSeconds = std::max(0.0, frameSeconds - mapper->GetLastUpdateSeconds());
+    // Per sample, the longest of the last three frames (vs::FrameTimePredictor): a frame slower than the
+    // one before must not run the budget over.
+    predictor.Add(std::max(0.0, frameSeconds - mapper->GetLastUpdateSeconds()), r.Spp - previousSpp);
+    const double perSample = std::max(predictor.SecondsPerSample(), 1e-6);
     const double elapsed = Seconds(loopStart, Clock::now());
+    int nextSamples = std::min(mapper->GetSamplesPerFrame(), std::max(target - r.Spp, 0));
     if (autoFrames && r.Spp > previousSpp && r.Spp < target)
     {
-      const double perSample = std::max(nextFrameSeconds / double(r.Spp - previousSpp), 1e-6);
       double fit = AutoFrameSeconds / perSample;
       if (timed)
       {
         fit = std::min(fit, (timeBudget - elapsed) / perSample); // the last frame ends within the budget
       }
-      const int next = std::min(int(std::clamp(fit, 1.0, double(1 << 16))), target - r.Spp);
-      mapper->SetSamplesPerFrame(next);
-      nextFrameSeconds = perSample * double(next);
+      nextSamples = std::min(int(std::clamp(fit, 1.0, double(1 << 16))), target - r.Spp);
+      mapper->SetSamplesPerFrame(nextSamples);
     }
+    const double nextFrameSeconds = perSample * double(nextSamples);
     previousSpp = r.Spp;
     const bool done = r.Spp >= target || (timed && elapsed + nextFrameSeconds > timeBudget);
     if (bar)
