@@ -7,6 +7,9 @@
 // bit for bit (their headers may differ: the render time is in them).
 // vsCheckExr --brighter A.exr B.exr FACTOR — exits 0 when A's mean radiance (R + G + B) is more than
 // FACTOR times B's (issue 38: a scene's light brightens the image).
+// vsCheckExr --compare A.exr B.exr — prints A against the reference B: the ratio of their mean radiance
+// and the relative MSE, sum (a - b)^2 / sum b^2 over the pixels' R, G, B (as `vissweep bench preview`);
+// exits 0 when both are finite and the sizes match (a measuring aid: it asserts nothing about the values).
 #include <ImfArray.h>
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -66,6 +69,28 @@ int PrintHeader(const char* path)
 }
 
 // The mean of R + G + B over the image.
+// The pixels' R, G, B as doubles, row by row.
+std::vector<double> Rgb(const char* path, int& w, int& h)
+{
+  Imf::RgbaInputFile file(path);
+  const Imath::Box2i dw = file.dataWindow();
+  w = dw.max.x - dw.min.x + 1;
+  h = dw.max.y - dw.min.y + 1;
+  Imf::Array2D<Imf::Rgba> px(h, w);
+  file.setFrameBuffer(&px[0][0] - dw.min.x - dw.min.y * w, 1, size_t(w));
+  file.readPixels(dw.min.y, dw.max.y);
+  std::vector<double> rgb;
+  rgb.reserve(size_t(3) * size_t(w) * size_t(h));
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      rgb.insert(rgb.end(), { double(px[y][x].r), double(px[y][x].g), double(px[y][x].b) });
+    }
+  }
+  return rgb;
+}
+
 double MeanRadiance(const char* path)
 {
   Imf::RgbaInputFile file(path);
@@ -133,6 +158,27 @@ int main(int argc, char** argv)
         b > 0.0 ? a / b : 0.0, factor);
       return std::isfinite(a) && std::isfinite(b) && a > factor * b ? 0 : 1;
     }
+    if (argc == 4 && std::strcmp(argv[1], "--compare") == 0)
+    {
+      int wa = 0, ha = 0, wb = 0, hb = 0;
+      const std::vector<double> a = Rgb(argv[2], wa, ha), b = Rgb(argv[3], wb, hb);
+      if (wa != wb || ha != hb)
+      {
+        std::fprintf(stderr, "%s (%d x %d) and %s (%d x %d) differ in size\n", argv[2], wa, ha, argv[3], wb, hb);
+        return 1;
+      }
+      double sa = 0.0, sb = 0.0, num = 0.0, den = 0.0;
+      for (size_t i = 0; i < a.size(); ++i)
+      {
+        sa += a[i];
+        sb += b[i];
+        num += (a[i] - b[i]) * (a[i] - b[i]);
+        den += b[i] * b[i];
+      }
+      const double ratio = sb > 0.0 ? sa / sb : std::nan(""), mse = den > 0.0 ? num / den : std::nan("");
+      std::printf("%s against %s: mean ratio %.4f, relative MSE %.4e\n", argv[2], argv[3], ratio, mse);
+      return std::isfinite(ratio) && std::isfinite(mse) ? 0 : 1;
+    }
     if (argc == 4 && std::strcmp(argv[1], "--same") == 0)
     {
       int wa = 0, ha = 0, wb = 0, hb = 0;
@@ -156,7 +202,7 @@ int main(int argc, char** argv)
   if (argc != 4 && !(argc == 5 && std::string(argv[4]) == "framed"))
   {
     std::fprintf(stderr, "usage: vsCheckExr FILE.exr WIDTH HEIGHT [framed] | --header FILE.exr | --same A.exr B.exr | "
-                         "--brighter A.exr B.exr FACTOR\n");
+                         "--brighter A.exr B.exr FACTOR | --compare A.exr REFERENCE.exr\n");
     return 2;
   }
   try
