@@ -35,7 +35,8 @@
  * volume's band-1 moment uLightM, vsLightVolume.h) the single scattering of the environment's light is
  * Henyey-Greenstein's, exact in bands 0 and 1 (I + 3 g M.d) / (4 pi), the light taken as one HG lobe around M
  * (sampling/phase_moments.h vs_hg_lobe_light; M trilinear as I; with multiple scattering I and M are all the
- * orders', vsLightVolume.h). Without it, I / (4 pi) as before (the same code).
+ * orders', vsLightVolume.h, and VS_EA_ANISOTROPIC 2 reads two lobes: the first order's, kept apart in layers
+ * 3 .. 5 of uLightM, and the other orders', the rest). Without it, I / (4 pi) as before (the same code).
  * With VS_EA_SHADE in the preview: the surface lobe of the Monte Carlo kernel (surface_scattering.glsl),
  * the same mixture k(w) = (1 - P_s) albedo f_HG + P_s f_r |n.w| towards each light, and towards the
  * environment (1 - P_s) albedo I / (4 pi) + P_s (k_d albedo + k_s) I / (4 pi): the light volume's I / (4 pi)
@@ -87,8 +88,9 @@ layout(constant_id = 4) const uint VS_EA_WINDOW_IMAGE = 0u;
  * 1.3-1.9x slower on lavapipe (measured on ch2 at 512^2, loaded machine). */
 layout(constant_id = 5) const uint VS_EA_LIGHTS = 0u;
 /* Whether the preview's phase is anisotropic towards the environment (issue 39: P.anisotropy != 0, the light
- * volume's band-1 moment bound): its three extra trilinear reads only in the pipelines that use them, and the
- * isotropic preview's code unchanged. */
+ * volume's band-1 moment bound): 1 one lobe (three extra trilinear reads), 2 two lobes, the first order's and the
+ * other orders' (six; the light volume's moment with the first order apart, vsLightVolume.h); only in the
+ * pipelines that use them, and the isotropic preview's code unchanged. */
 layout(constant_id = 6) const uint VS_EA_ANISOTROPIC = 0u;
 #define VS_FACTOR_IMAGE
 #define VS_TF_ENTRY_TEXELS
@@ -192,7 +194,7 @@ vec4 light_at(vec3 x)
   ivec3 i0 = min(ivec3(floor(g)), cells - 1);
   ivec3 i1 = min(i0 + 1, cells - 1);
   vec3 f = g - vec3(i0);
-  if (VS_EA_LIGHTS == 1u || VS_EA_ANISOTROPIC == 1u)
+  if (VS_EA_LIGHTS == 1u || VS_EA_ANISOTROPIC != 0u)
   {
     gLerpI0 = i0; /* for transmittance_at and moment_at, at the same point */
     gLerpI1 = i1;
@@ -221,31 +223,40 @@ vec4 transmittance_at(uint k)
   return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
 }
 
-/* Component a of the band-1 moment at the point of the last light_at (the same weights), from layer a of
- * uLightM (vsLightVolume.h). */
-vec3 moment_at(int a)
+/* Layer a of uLightM at the point of the last light_at (the same weights): a < 3 component a of the band-1 moment
+ * (rgb); with two lobes (VS_EA_ANISOTROPIC 2) layers 3 .. 5 the first order's, M_1's component a - 3 in rgb and
+ * I_1's channel a - 3 in alpha (vsLightVolume.h). */
+vec4 moment_layer(int a)
 {
   ivec3 i0 = gLerpI0, i1 = gLerpI1;
   vec3 f = gLerpF;
   int z = a * int(P.grid.cells.z);
   i0.z += z;
   i1.z += z;
-  vec3 c00 = mix(imageLoad(uLightM, ivec3(i0.x, i0.y, i0.z)).rgb, imageLoad(uLightM, ivec3(i1.x, i0.y, i0.z)).rgb, f.x);
-  vec3 c10 = mix(imageLoad(uLightM, ivec3(i0.x, i1.y, i0.z)).rgb, imageLoad(uLightM, ivec3(i1.x, i1.y, i0.z)).rgb, f.x);
-  vec3 c01 = mix(imageLoad(uLightM, ivec3(i0.x, i0.y, i1.z)).rgb, imageLoad(uLightM, ivec3(i1.x, i0.y, i1.z)).rgb, f.x);
-  vec3 c11 = mix(imageLoad(uLightM, ivec3(i0.x, i1.y, i1.z)).rgb, imageLoad(uLightM, ivec3(i1.x, i1.y, i1.z)).rgb, f.x);
+  vec4 c00 = mix(imageLoad(uLightM, ivec3(i0.x, i0.y, i0.z)), imageLoad(uLightM, ivec3(i1.x, i0.y, i0.z)), f.x);
+  vec4 c10 = mix(imageLoad(uLightM, ivec3(i0.x, i1.y, i0.z)), imageLoad(uLightM, ivec3(i1.x, i1.y, i0.z)), f.x);
+  vec4 c01 = mix(imageLoad(uLightM, ivec3(i0.x, i0.y, i1.z)), imageLoad(uLightM, ivec3(i1.x, i0.y, i1.z)), f.x);
+  vec4 c11 = mix(imageLoad(uLightM, ivec3(i0.x, i1.y, i1.z)), imageLoad(uLightM, ivec3(i1.x, i1.y, i1.z)), f.x);
   return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
 }
 
 /* The light volume's I at index-space point x for a camera ray along d, over 4 pi: isotropic (I / 4 pi), or with
- * VS_EA_ANISOTROPIC Henyey-Greenstein's from I and M (phase_moments.h). iso: the isotropic I / (4 pi). */
+ * VS_EA_ANISOTROPIC Henyey-Greenstein's from I and M (phase_moments.h): one lobe of all the orders (1), or the
+ * first order's lobe and the other orders' (2). iso: the isotropic I / (4 pi). */
 vec3 in_scattered(vec3 x, vec3 d, out vec3 iso)
 {
   vec3 I = light_at(x).rgb;
   iso = I * (1.0 / (4.0 * VS_PI));
   if (VS_EA_ANISOTROPIC == 0u)
     return iso;
-  return vs_hg_lobe_light(I, moment_at(0), moment_at(1), moment_at(2), d, P.anisotropy) * (1.0 / (4.0 * VS_PI));
+  vec3 mx = moment_layer(0).rgb, my = moment_layer(1).rgb, mz = moment_layer(2).rgb;
+  if (VS_EA_ANISOTROPIC == 1u)
+    return vs_hg_lobe_light(I, mx, my, mz, d, P.anisotropy) * (1.0 / (4.0 * VS_PI));
+  vec4 fx = moment_layer(3), fy = moment_layer(4), fz = moment_layer(5);
+  vec3 first = vec3(fx.a, fy.a, fz.a);
+  return (vs_hg_lobe_light(first, fx.rgb, fy.rgb, fz.rgb, d, P.anisotropy) +
+           vs_hg_lobe_light(max(I - first, vec3(0.0)), mx - fx.rgb, my - fy.rgb, mz - fz.rgb, d, P.anisotropy)) *
+    (1.0 / (4.0 * VS_PI));
 }
 
 /* The preview's radiance towards the camera per unit collision at index-space point x (issue 38): the

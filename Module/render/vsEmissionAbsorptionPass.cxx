@@ -37,12 +37,12 @@ EmissionAbsorptionPass::EmissionAbsorptionPass(std::shared_ptr<Context> context)
 }
 
 const ComputePipeline& EmissionAbsorptionPass::PipelineFor(
-  bool factor, bool shade, uint32_t lighting, bool projection, bool display, bool lights, bool anisotropic)
+  bool factor, bool shade, uint32_t lighting, bool projection, bool display, bool lights, uint32_t anisotropic)
 {
   // The preview's shading is the surface lobe (issue 38); ambient occlusion is not shaded.
   shade = shade && lighting != shared::VS_EA_LIGHTING_AMBIENT_OCCLUSION;
   const std::array<uint32_t, 7> constants = { factor ? 1u : 0u, shade ? 1u : 0u, lighting, projection ? 1u : 0u,
-    display ? 1u : 0u, lights ? 1u : 0u, anisotropic ? 1u : 0u };
+    display ? 1u : 0u, lights ? 1u : 0u, anisotropic };
   auto& pipeline = this->Pipelines_[constants];
   if (!pipeline)
   {
@@ -56,7 +56,9 @@ const ComputePipeline& EmissionAbsorptionPass::PipelineFor(
     name += projection ? ", projections" : "";
     name += display ? ", with its window image" : "";
     name += lights ? ", VTK's lights" : "";
-    name += anisotropic ? ", anisotropic towards the environment" : "";
+    name += anisotropic == 2u ? ", anisotropic towards the environment, two lobes"
+      : anisotropic           ? ", anisotropic towards the environment"
+                              : "";
     pipeline = SharedPipeline(this->Context_, VS_SPIRV(vs_spirv_ea_render),
       BindingTypes(shared::VS_EA_BINDING_COUNT,
         { { shared::VS_EA_VOLUME, BindingType::StorageImage }, { shared::VS_EA_TF, BindingType::UniformTexelBuffer },
@@ -145,9 +147,9 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
     std::abs(params.anisotropy) >= shared::VS_HG_ISOTROPIC_G;
   if (anisotropic &&
     (lightMoment->Width() != light->Width() || lightMoment->Height() != light->Height() ||
-      lightMoment->Depth() != 3 * light->Depth()))
+      (lightMoment->Depth() != 3 * light->Depth() && lightMoment->Depth() != 6 * light->Depth())))
   {
-    throw InputError("the preview's band-1 moment must have the light volume's cells with 3 layers");
+    throw InputError("the preview's band-1 moment must have the light volume's cells with 3 or 6 layers");
   }
   if ((params.display & shared::VS_EA_DISPLAY_ENVIRONMENT) != 0u)
   {
@@ -195,7 +197,8 @@ std::vector<float> EmissionAbsorptionPass::Render(const DeviceVolume& volume,
     this->NoLight_->Upload(zero, sizeof(zero));
   }
   const ComputePipeline& pipeline = this->PipelineFor(volume.Factor() != nullptr, shade, lighting,
-    params.blend != shared::VS_BLEND_COMPOSITE, display, params.lightCount > 0u, anisotropic);
+    params.blend != shared::VS_BLEND_COMPOSITE, display, params.lightCount > 0u,
+    anisotropic ? (lightMoment->Depth() == 6 * light->Depth() ? 2u : 1u) : 0u);
   DescriptorSet set(pipeline);
   set.Bind(shared::VS_EA_VOLUME, volume.Image())
     .BindTexels(shared::VS_EA_TF, tf.Lut(), vk::Format::eR32G32B32A32Sfloat)

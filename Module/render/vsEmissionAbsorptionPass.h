@@ -52,8 +52,9 @@ public:
    *  or a preview with lights without their transmittance.
    *  `lightMoment` (issue 39; LightVolume::Moment of the same build as `light`): with params.anisotropy != 0 the
    *  preview's single scattering of the environment is Henyey-Greenstein's up to band 1 (ea_render.comp); without
-   *  it, or with g = 0, isotropic (the same pipeline as before). Throws InputError for a moment whose size is not
-   *  the light volume's with 3 layers. */
+   *  it, or with g = 0, isotropic (the same pipeline as before); a moment of 6 layers (the first order's apart)
+   *  is read as two lobes. Throws InputError for a moment whose size is not the light volume's with 3 or 6
+   *  layers. */
   std::vector<float> Render(const DeviceVolume& volume, const TransferFunctionTable& tf,
     const MajorantGrid* majorants, const shared::VsEmissionAbsorptionParams& params, const std::vector<float>& depth, bool shade = false,
     uint32_t lighting = shared::VS_EA_LIGHTING_NONE, const Image3D* light = nullptr, const Buffer* environment = nullptr,
@@ -71,7 +72,7 @@ private:
    *  other than the composite), the window image and VTK's lights (made on first use; ea_render.comp's
    *  specialization constants). */
   const ComputePipeline& PipelineFor(bool factor, bool shade, uint32_t lighting, bool projection, bool display,
-    bool lights, bool anisotropic);
+    bool lights, uint32_t anisotropic);
 
   std::shared_ptr<Context> Context_;
   std::map<std::array<uint32_t, 7>, std::shared_ptr<ComputePipeline>> Pipelines_;

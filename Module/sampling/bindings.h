@@ -54,7 +54,7 @@ VS_CONST uint VS_EA_DISPLAY = 9u;        /* storage buffer: the window image (VS
 VS_CONST uint VS_EA_LIGHT_TRANSMITTANCE = 10u; /* rgba32f image: the light volume's transmittance towards each
                                             scene light (VS_LIGHTMS_TRANSMITTANCE's layout), read by the preview
                                             with P.lightCount > 0 (a 1-texel placeholder otherwise) */
-VS_CONST uint VS_EA_LIGHT_MOMENT = 11u;  /* rgba32f image: the light volume's band-1 moment (3 layers of its cells,
+VS_CONST uint VS_EA_LIGHT_MOMENT = 11u;  /* rgba32f image: the light volume's band-1 moment (3 or 6 layers of its cells,
                                             LightVolume::Moment), read by the preview with P.anisotropy != 0 (issue 39;
                                             a 1-texel placeholder otherwise) */
 VS_CONST uint VS_EA_BINDING_COUNT = 12u;
@@ -122,8 +122,9 @@ VS_CONST uint VS_LIGHT_SOURCES = 1u;     /* storage buffer: VisibilityGrid::Dire
 VS_CONST uint VS_LIGHT_RADIANCE = 2u;    /* storage buffer: vec4 per direction, rgb = E_n (radiance x sr); then
                                             (the moment's build) vec4 per direction, xyz = w_n, its world direction */
 VS_CONST uint VS_LIGHT_OUTPUT = 3u;      /* rgba32f image, one texel per cell: the light volume */
-VS_CONST uint VS_LIGHT_MOMENT = 4u;      /* rgba32f image of 3 layers of cells: the first order's band-1 moment
-                                            (vsLightVolume.h Moment(); written with specialization constant 1) */
+VS_CONST uint VS_LIGHT_MOMENT = 4u;      /* rgba32f image of 3 (or 6) layers of cells: the first order's band-1
+                                            moment (vsLightVolume.h Moment(); written with specialization constant
+                                            1, and 2: layers 3 .. 5 the first order's M and I apart) */
 VS_CONST uint VS_LIGHT_BINDING_COUNT = 5u;
 
 /* The light volume's multiple scattering (vsLightVolume.h): the per-cell albedo (light_volume_albedo.comp)

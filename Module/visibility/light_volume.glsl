@@ -6,7 +6,9 @@
  * Alpha: the mean visibility over the sphere (the filter's MeanVisibility). One invocation per cell.
  * With VS_SPEC_MOMENT (issue 39: the preview's Henyey-Greenstein phase towards the environment) also the
  * band-1 moment M = sum_n V(cell, n) E_n w_n, w_n the world direction towards texel n's light: layer a
- * (z + a cells.z) of uMoment holds M's component a, rgb per channel (sampling/phase_moments.h).
+ * (z + a cells.z) of uMoment holds M's component a, rgb per channel (sampling/phase_moments.h). With
+ * VS_SPEC_MOMENT 2 (the orders >= 2 follow g < 0, vsLightVolume.h) layers 3 .. 5 keep the first order apart: M's
+ * component a in rgb and I's channel a in alpha (the scatter passes add the other orders to layers 0 .. 2).
  * Included by light_volume_<format>.comp, which defines VS_VIS_FORMAT.
  */
 #include "bindings.h"
@@ -45,7 +47,7 @@ void main()
   {
     sRadiance[n] = uRadiance[n].rgb;
     sSources[n] = uSources[n];
-    if (VS_SPEC_MOMENT == 1u)
+    if (VS_SPEC_MOMENT != 0u)
       sDirection[n] = uRadiance[DD + n].xyz;
   }
   barrier();
@@ -62,7 +64,7 @@ void main()
     vec3 e = v * sRadiance[n];
     light += e;
     visible += v;
-    if (VS_SPEC_MOMENT == 1u)
+    if (VS_SPEC_MOMENT != 0u)
     {
       vec3 w = sDirection[n];
       mx += w.x * e;
@@ -71,11 +73,18 @@ void main()
     }
   }
   imageStore(uLight, ivec3(cell), vec4(light, visible / float(DD)));
-  if (VS_SPEC_MOMENT == 1u)
+  if (VS_SPEC_MOMENT != 0u)
   {
     int layer = int(P.cellsZ);
     imageStore(uMoment, ivec3(cell), vec4(mx, 0.0));
     imageStore(uMoment, ivec3(cell) + ivec3(0, 0, layer), vec4(my, 0.0));
     imageStore(uMoment, ivec3(cell) + ivec3(0, 0, 2 * layer), vec4(mz, 0.0));
+    if (VS_SPEC_MOMENT == 2u)
+    {
+      /* the first order kept apart (the orders >= 2 are added to layers 0 .. 2): M_1 and I_1 per component */
+      imageStore(uMoment, ivec3(cell) + ivec3(0, 0, 3 * layer), vec4(mx, light.x));
+      imageStore(uMoment, ivec3(cell) + ivec3(0, 0, 4 * layer), vec4(my, light.y));
+      imageStore(uMoment, ivec3(cell) + ivec3(0, 0, 5 * layer), vec4(mz, light.z));
+    }
   }
 }

@@ -42,7 +42,7 @@ namespace vs
 namespace
 {
 std::shared_ptr<ComputePipeline> Pipeline(
-  const std::shared_ptr<Context>& context, vk::Format format, uint32_t D, bool moment)
+  const std::shared_ptr<Context>& context, vk::Format format, uint32_t D, uint32_t moment)
 {
   using B = BindingType;
   const std::vector<B> bindings = BindingTypes(shared::VS_LIGHT_BINDING_COUNT,
@@ -50,8 +50,11 @@ std::shared_ptr<ComputePipeline> Pipeline(
       { shared::VS_LIGHT_RADIANCE, B::StorageBuffer }, { shared::VS_LIGHT_OUTPUT, B::StorageImage },
       { shared::VS_LIGHT_MOMENT, B::StorageImage } });
   const uint32_t push = sizeof(shared::VsLightVolumeParams);
-  const std::vector<uint32_t> specialization{ D, moment ? 1u : 0u };
-  const std::string name = std::string(moment ? "light volume with its moment (D " : "light volume (D ") + std::to_string(D);
+  const std::vector<uint32_t> specialization{ D, moment };
+  const std::string name = std::string(moment == 2u ? "light volume with its moment, the first order's apart (D "
+      : moment                                  ? "light volume with its moment (D "
+                                                : "light volume (D ") +
+    std::to_string(D);
   if (format == vk::Format::eR8Unorm)
     return SharedPipeline(context, VS_SPIRV(vs_spirv_light_volume_r8), bindings, push, name + ", r8)", specialization);
   if (format == vk::Format::eR16Unorm)
@@ -249,14 +252,18 @@ bool LightVolume::Update(const VisibilityGrid& grid, const DeviceEnvironment& en
       this->Context_, cells[0], cells[1], cells[2], vk::Format::eR32G32B32A32Sfloat, "light volume");
     this->Cells_ = cells;
   }
+  // With the orders >= 2 under g < 0, the first order's lobe kept apart in layers 3 .. 5 (the preview reads it
+  // and the other orders' as two lobes; vsLightVolume.h).
+  const uint32_t momentLayers = s.Moment ? (similar && scattering.Anisotropy < 0.0f ? 6u : 3u) : 0u;
   if (s.Moment && (!this->Moment_ || this->Moment_->Width() != cells[0] || this->Moment_->Height() != cells[1] ||
-                    this->Moment_->Depth() != 3 * cells[2]))
+                    this->Moment_->Depth() != momentLayers * cells[2]))
   {
     this->Moment_.reset();
-    this->Moment_ = std::make_unique<Image3D>(
-      this->Context_, cells[0], cells[1], 3 * cells[2], vk::Format::eR32G32B32A32Sfloat, "light volume band-1 moment");
+    this->Moment_ = std::make_unique<Image3D>(this->Context_, cells[0], cells[1], momentLayers * cells[2],
+      vk::Format::eR32G32B32A32Sfloat, "light volume band-1 moment");
   }
-  std::shared_ptr<ComputePipeline> pipeline = Pipeline(this->Context_, grid.Image().Format(), side, s.Moment);
+  std::shared_ptr<ComputePipeline> pipeline =
+    Pipeline(this->Context_, grid.Image().Format(), side, momentLayers == 6u ? 2u : s.Moment ? 1u : 0u);
   DescriptorSet set(*pipeline);
   set.Bind(shared::VS_LIGHT_VISIBILITY, grid.Image())
     .Bind(shared::VS_LIGHT_SOURCES, grid.DirectionSourceBuffer())
@@ -533,15 +540,15 @@ void LightVolume::AddTail(const Image3D& last, const Image3D& before, uint32_t e
   {
     // The light volume's moment: the first order's, the orders 2 .. K's and the tail's, the last order's M_K
     // times the same series per cell and channel as I_K.
-    moment.resize(12 * n);
+    moment.resize(size_t(4) * this->Moment_->Width() * this->Moment_->Height() * this->Moment_->Depth());
     momentK.resize(12 * n);
     std::vector<float> sum(12 * n);
     this->Moment_->Download(moment.data(), moment.size() * sizeof(float));
     momentSum->Download(sum.data(), sum.size() * sizeof(float));
     lastMoment->Download(momentK.data(), momentK.size() * sizeof(float));
-    for (size_t i = 0; i < moment.size(); ++i)
+    for (size_t i = 0; i < sum.size(); ++i)
     {
-      moment[i] += sum[i];
+      moment[i] += sum[i]; // layers 0 .. 2 (3 .. 5: the first order's, apart)
     }
   }
   this->Image_->Download(total.data(), total.size() * sizeof(float));
@@ -567,7 +574,7 @@ void LightVolume::AddTail(const Image3D& last, const Image3D& before, uint32_t e
       // sum_{m=1..N} r^m = r (1 - r^N) / (1 - r), r < 1
       const double series = r * (1.0 - std::pow(r, N)) / (1.0 - r);
       total[4 * i + c] += float(ik * series);
-      for (size_t a = 0; a < moment.size() / (4 * n); ++a)
+      for (size_t a = 0; !moment.empty() && a < 3; ++a)
       {
         moment[4 * (a * n + i) + c] += float(momentK[4 * (a * n + i) + c] * series);
       }
@@ -587,7 +594,7 @@ std::vector<float> LightVolume::DownloadMoment() const
   {
     return out;
   }
-  out.resize(size_t(4) * this->Cells_[0] * this->Cells_[1] * 3 * this->Cells_[2]);
+  out.resize(size_t(4) * this->Moment_->Width() * this->Moment_->Height() * this->Moment_->Depth());
   this->Moment_->Download(out.data(), out.size() * sizeof(float));
   return out;
 }

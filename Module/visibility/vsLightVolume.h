@@ -46,8 +46,16 @@
 // cell, phase_moments.h), and the orders carry on in the similar medium of g (isotropic, sigma_t (1 - a g),
 // albedo a (1 - g) / (1 - a g): the similarity relations, phase_moments.h vs_similar_*;
 // light_volume_scatter.glsl); each order's band-1 moment is gathered with its light, and Moment() holds the
-// sum over all the orders (the tail's as I's: AddTail), so that the preview's last event towards the camera is
-// HG's of the whole light. Then another g builds again (g is part of the signature), g = 0 builds the isotropic
+// sum over all the orders (the tail's as I's: AddTail), read at the preview's last event towards the camera as
+// one HG lobe of the whole light. At g < 0 Moment() has 6 layers: 3 .. 5 keep the first order's apart, M_1's
+// component a - 3 in rgb and I_1's channel a - 3 in alpha, and the preview reads two lobes, the first order's
+// (I_1, M_1) and the other orders' (I - I_1, M - M_1). Why by g's sign: the similar medium's orders are carried
+// isotropically, so their own moments M_k hold only where their light comes from, not the direction it keeps;
+// forward scattering keeps the direction of the light that entered (the similarity's forward delta), which one
+// lobe of the whole light gives them, backward scattering does not (its delta has a negative weight), and one
+// lobe then gives the diffuse orders the sun's direction. Measured on ch2 (docs/reference.md): at g = -0.6 the
+// preview 1.23 of the estimate with one lobe, 1.09 with two; at g = 0.6 1.005 with one, 1.08 with two.
+// Then another g builds again (g is part of the signature), g = 0 builds the isotropic
 // orders of before (bit for bit) and a camera move never builds. docs/reference.md: the bias measured.
 #ifndef vsLightVolume_h
 #define vsLightVolume_h
@@ -133,7 +141,8 @@ public:
    *  g != 0 all the orders'); nullptr when it was built with
    *  Anisotropy 0 (an Update with Anisotropy 0 keeps one that is there). */
   const Image3D* Moment() const { return this->Built_.Moment ? this->Moment_.get() : nullptr; }
-  /** The band-1 moment per cell, as Download() (cells.x x cells.y x 3 cells.z); empty without one. */
+  /** The band-1 moment per cell, as Download() (cells.x x cells.y x 3 cells.z, or 6 cells.z with the first
+   *  order's apart: layout above); empty without one. */
   std::vector<float> DownloadMoment() const;
   /** The lights of the last build. */
   const std::vector<shared::VsSceneLight>& Lights() const { return this->BuiltLights_; }

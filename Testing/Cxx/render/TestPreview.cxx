@@ -1007,6 +1007,101 @@ TEST(PreviewAnisotropy, MomentIsAnalyticAndThePreviewIsItsMarch)
   EXPECT_EQ(0, std::memcmp(zero.data(), isotropic.data(), zero.size() * sizeof(float))) << "g = 0: today's preview";
 }
 
+// Two lobes at the preview's last event (the orders >= 2 under g < 0, vsLightVolume.h): the light volume keeps
+// the first order apart in layers 3 .. 5 of its moment, M_1 and I_1 as a single-scattering build makes them (to
+// 1e-6 of 4 pi L), and the preview is the host's march of I_1 f_HG(m_1.d; g rho_1) + (I - I_1) f_HG(m_r.d; g rho_r)
+// with M_r = M - M_1, to 1e-3 relative; one lobe of the whole light differs from it by more than 1e-3 (the test
+// can tell). The box of the test above, 4 orders and the tail, g = -0.6 and -0.3; at g = 0.6 the moment has its 3
+// layers (one lobe of the whole light, as before).
+TEST(PreviewFullTransport, TwoLobesTheFirstOrderApart)
+{
+  const glm::dvec3 L(0.5, 1.0, 2.0);
+  LitBox box{ glm::vec3(L) };
+  const auto c = box.Grid.Cells();
+  const size_t n = size_t(c[0]) * c[1] * c[2];
+  {
+    vs::LightVolume::MultipleScattering m = Scattering(box.Scene, box.Params, 4, 1024);
+    m.Anisotropy = 0.6f;
+    ASSERT_TRUE(box.Light.Update(box.Grid, *box.Env, 1.0, m));
+    EXPECT_EQ(box.Light.DownloadMoment().size(), 12 * n) << "g 0.6: one lobe, 3 layers";
+  }
+  for (float g : { -0.6f, -0.3f })
+  {
+    ASSERT_TRUE(box.Light.Update(box.Grid, *box.Env, 1.0, Anisotropic(g)));
+    const std::vector<float> light1 = box.Light.Download();
+    const std::vector<float> moment1 = box.Light.DownloadMoment();
+    ASSERT_EQ(moment1.size(), 12 * n);
+    vs::LightVolume::MultipleScattering m = Scattering(box.Scene, box.Params, 4, 1024);
+    m.Anisotropy = g;
+    ASSERT_TRUE(box.Light.Update(box.Grid, *box.Env, 1.0, m));
+    const std::vector<float> light = box.Light.Download();
+    const std::vector<float> moment = box.Light.DownloadMoment();
+    ASSERT_EQ(moment.size(), 24 * n) << "6 layers: the first order apart";
+    double worst = 0.0;
+    for (size_t i = 0; i < n; ++i)
+      for (int a = 0; a < 3; ++a)
+        for (int k = 0; k < 3; ++k)
+        {
+          worst = std::max(worst, std::abs(moment[4 * ((3 + a) * n + i) + k] - moment1[4 * (a * n + i) + k]) / (4.0 * Pi * L[k]));
+          worst = std::max(worst, std::abs(moment[4 * ((3 + a) * n + i) + 3] - light1[4 * i + a]) / (4.0 * Pi * L[a]));
+        }
+    std::printf("g %.1f: the first order apart, worst %.1e of 4 pi L\n", g, worst);
+    EXPECT_LT(worst, 1e-6);
+
+    box.Params.anisotropy = g;
+    vs::EmissionAbsorptionPass pass(box.Scene.Context);
+    const std::vector<float> rgba = pass.Render(*box.Scene.Volume, *box.Scene.TF, nullptr, box.Params, {}, false,
+      vs::shared::VS_EA_LIGHTING_PREVIEW, &box.Light.Image(), nullptr, nullptr, box.Light.Moment());
+    double worstA = 0.0, oneLobe = 0.0;
+    for (uint32_t py = 0; py < LitBox::H; ++py)
+      for (uint32_t px = 0; px < LitBox::W; ++px)
+      {
+        const double x = LitBox::PixelCentre(px), y = LitBox::PixelCentre(py);
+        if (x < 0.5 || x > Edge - 0.5 || y < 0.5 || y > Edge - 0.5)
+          continue;
+        const double step = box.Params.step;
+        const double j = vs::shared::vs_interleaved_gradient_noise(glm::uvec2(px, py));
+        glm::dvec3 sum(0.0), sumOne(0.0);
+        double T = 1.0;
+        for (double a = 0.0; a < Edge; a += step)
+        {
+          const double b = std::min(a + step, Edge);
+          const glm::dvec3 p(x, y, a + j * (b - a));
+          const double A = 1.0 - std::exp(-Sigma * (b - a));
+          glm::vec3 I, I1, M[3], M1[3], Mr[3];
+          for (int k = 0; k < 3; ++k)
+          {
+            I[k] = float(InterpolatedLight(light, box.Grid, p, k));
+            I1[k] = float(InterpolatedMoment(moment, box.Grid, p, 3 + k, 3));
+            for (int axis = 0; axis < 3; ++axis)
+            {
+              M[axis][k] = float(InterpolatedMoment(moment, box.Grid, p, axis, k));
+              M1[axis][k] = float(InterpolatedMoment(moment, box.Grid, p, 3 + axis, k));
+              Mr[axis][k] = M[axis][k] - M1[axis][k];
+            }
+          }
+          const glm::vec3 d(0, 0, 1);
+          const glm::vec3 two = vs::shared::vs_hg_lobe_light(I1, M1[0], M1[1], M1[2], d, g) +
+            vs::shared::vs_hg_lobe_light(glm::max(I - I1, glm::vec3(0.0f)), Mr[0], Mr[1], Mr[2], d, g);
+          const glm::vec3 one = vs::shared::vs_hg_lobe_light(I, M[0], M[1], M[2], d, g);
+          sum += T * A * glm::dvec3(two) / (4.0 * Pi);
+          sumOne += T * A * glm::dvec3(one) / (4.0 * Pi);
+          T *= 1.0 - A;
+        }
+        const float* got = &rgba[4 * (size_t(py) * LitBox::W + px)];
+        for (int k = 0; k < 3; ++k)
+        {
+          worstA = std::max(worstA, std::abs(got[k] - sum[k]) / sum[k]);
+          oneLobe = std::max(oneLobe, std::abs(sumOne[k] - sum[k]) / sum[k]);
+          EXPECT_LT(std::abs(got[k] - sum[k]) / sum[k], 1e-3) << "g " << g << " pixel " << px << "," << py;
+        }
+      }
+    std::printf("g %.1f: two lobes, worst relative error against the host's march %.1e; one lobe differs by up to "
+                "%.1e\n", g, worstA, oneLobe);
+    EXPECT_GT(oneLobe, 1e-3);
+  }
+}
+
 // The light volume is built again when g becomes non-zero (the moment), not for another g, not for g back to
 // 0 (the moment is kept) and not for a camera move; a build for another reason at g = 0 drops the moment; a
 // g outside (-1, 1) is an error.
