@@ -28,6 +28,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 
 using vstest::VisibilityScene;
 
@@ -909,6 +910,49 @@ vs::LightVolume::MultipleScattering Anisotropic(float g)
   m.Anisotropy = g;
   return m;
 }
+
+// The light volume's bands 0 and 1 at point p, trilinear as the shader reads them: I from the light (rgb), M from the
+// moment's layers first .. first + 2 (rgb per channel), and with `alphaI` I from the alpha of those layers (the first
+// order kept apart, layers 3 .. 5).
+struct Bands
+{
+  glm::vec3 I, M[3];
+};
+Bands BandsAt(const std::vector<float>& light, const std::vector<float>& moment, const vs::VisibilityGrid& grid,
+  const glm::dvec3& p, int first, bool alphaI = false)
+{
+  Bands b;
+  for (int k = 0; k < 3; ++k)
+  {
+    b.I[k] = float(alphaI ? InterpolatedMoment(moment, grid, p, first + k, 3) : InterpolatedLight(light, grid, p, k));
+    for (int axis = 0; axis < 3; ++axis)
+      b.M[axis][k] = float(InterpolatedMoment(moment, grid, p, first + axis, k));
+  }
+  return b;
+}
+
+// The anisotropic preview's march on the host through pixel (px, py) of the box, as ea_render.comp marches: steps of
+// Params.step, each read at the pixel's fixed offset, adding T (1 - e^{-sigma dt}) phased(p) / (4 pi). False for a
+// pixel whose ray misses the box's inside (half a voxel in from its faces).
+bool HostMarch(const LitBox& box, uint32_t px, uint32_t py, const std::function<glm::vec3(const glm::dvec3&)>& phased,
+  glm::dvec3& sum)
+{
+  const double x = LitBox::PixelCentre(px), y = LitBox::PixelCentre(py);
+  if (x < 0.5 || x > Edge - 0.5 || y < 0.5 || y > Edge - 0.5)
+    return false;
+  const double step = box.Params.step;
+  const double j = vs::shared::vs_interleaved_gradient_noise(glm::uvec2(px, py));
+  sum = glm::dvec3(0.0);
+  double T = 1.0;
+  for (double a = 0.0; a < Edge; a += step)
+  {
+    const double b = std::min(a + step, Edge);
+    const double A = 1.0 - std::exp(-Sigma * (b - a));
+    sum += T * A * glm::dvec3(phased(glm::dvec3(x, y, a + j * (b - a)))) / (4.0 * Pi);
+    T *= 1.0 - A;
+  }
+  return true;
+}
 }
 
 // The homogeneous box under a constant sky (L = 0.5, 1, 2), single scattering, seen along +z:
@@ -960,29 +1004,13 @@ TEST(PreviewAnisotropy, MomentIsAnalyticAndThePreviewIsItsMarch)
     for (uint32_t py = 0; py < LitBox::H; ++py)
       for (uint32_t px = 0; px < LitBox::W; ++px)
       {
-        const double x = LitBox::PixelCentre(px), y = LitBox::PixelCentre(py);
-        if (x < 0.5 || x > Edge - 0.5 || y < 0.5 || y > Edge - 0.5)
+        glm::dvec3 sum;
+        const auto lobe = [&](const glm::dvec3& p) {
+          const Bands b = BandsAt(light, moment, box.Grid, p, 0);
+          return vs::shared::vs_hg_lobe_light(b.I, b.M[0], b.M[1], b.M[2], glm::vec3(0, 0, 1), g);
+        };
+        if (!HostMarch(box, px, py, lobe, sum))
           continue;
-        const double step = box.Params.step;
-        const double j = vs::shared::vs_interleaved_gradient_noise(glm::uvec2(px, py));
-        glm::dvec3 sum(0.0);
-        double T = 1.0;
-        for (double a = 0.0; a < Edge; a += step)
-        {
-          const double b = std::min(a + step, Edge);
-          const glm::dvec3 p(x, y, a + j * (b - a));
-          const double A = 1.0 - std::exp(-Sigma * (b - a));
-          glm::vec3 I, m[3];
-          for (int k = 0; k < 3; ++k)
-          {
-            I[k] = float(InterpolatedLight(light, box.Grid, p, k));
-            for (int axis = 0; axis < 3; ++axis)
-              m[axis][k] = float(InterpolatedMoment(moment, box.Grid, p, axis, k));
-          }
-          const glm::vec3 phased = vs::shared::vs_hg_lobe_light(I, m[0], m[1], m[2], glm::vec3(0, 0, 1), g);
-          sum += T * A * glm::dvec3(phased) / (4.0 * Pi);
-          T *= 1.0 - A;
-        }
         const float* got = &rgba[4 * (size_t(py) * LitBox::W + px)];
         for (int k = 0; k < 3; ++k)
         {
@@ -1053,41 +1081,23 @@ TEST(PreviewFullTransport, TwoLobesTheFirstOrderApart)
     const std::vector<float> rgba = pass.Render(*box.Scene.Volume, *box.Scene.TF, nullptr, box.Params, {}, false,
       vs::shared::VS_EA_LIGHTING_PREVIEW, &box.Light.Image(), nullptr, nullptr, box.Light.Moment());
     double worstA = 0.0, oneLobe = 0.0;
+    const glm::vec3 d(0, 0, 1);
+    const auto two = [&](const glm::dvec3& p) {
+      const Bands all = BandsAt(light, moment, box.Grid, p, 0), first = BandsAt(light, moment, box.Grid, p, 3, true);
+      return vs::shared::vs_hg_lobe_light(first.I, first.M[0], first.M[1], first.M[2], d, g) +
+        vs::shared::vs_hg_lobe_light(glm::max(all.I - first.I, glm::vec3(0.0f)), all.M[0] - first.M[0],
+          all.M[1] - first.M[1], all.M[2] - first.M[2], d, g);
+    };
+    const auto one = [&](const glm::dvec3& p) {
+      const Bands all = BandsAt(light, moment, box.Grid, p, 0);
+      return vs::shared::vs_hg_lobe_light(all.I, all.M[0], all.M[1], all.M[2], d, g);
+    };
     for (uint32_t py = 0; py < LitBox::H; ++py)
       for (uint32_t px = 0; px < LitBox::W; ++px)
       {
-        const double x = LitBox::PixelCentre(px), y = LitBox::PixelCentre(py);
-        if (x < 0.5 || x > Edge - 0.5 || y < 0.5 || y > Edge - 0.5)
+        glm::dvec3 sum, sumOne;
+        if (!HostMarch(box, px, py, two, sum) || !HostMarch(box, px, py, one, sumOne))
           continue;
-        const double step = box.Params.step;
-        const double j = vs::shared::vs_interleaved_gradient_noise(glm::uvec2(px, py));
-        glm::dvec3 sum(0.0), sumOne(0.0);
-        double T = 1.0;
-        for (double a = 0.0; a < Edge; a += step)
-        {
-          const double b = std::min(a + step, Edge);
-          const glm::dvec3 p(x, y, a + j * (b - a));
-          const double A = 1.0 - std::exp(-Sigma * (b - a));
-          glm::vec3 I, I1, M[3], M1[3], Mr[3];
-          for (int k = 0; k < 3; ++k)
-          {
-            I[k] = float(InterpolatedLight(light, box.Grid, p, k));
-            I1[k] = float(InterpolatedMoment(moment, box.Grid, p, 3 + k, 3));
-            for (int axis = 0; axis < 3; ++axis)
-            {
-              M[axis][k] = float(InterpolatedMoment(moment, box.Grid, p, axis, k));
-              M1[axis][k] = float(InterpolatedMoment(moment, box.Grid, p, 3 + axis, k));
-              Mr[axis][k] = M[axis][k] - M1[axis][k];
-            }
-          }
-          const glm::vec3 d(0, 0, 1);
-          const glm::vec3 two = vs::shared::vs_hg_lobe_light(I1, M1[0], M1[1], M1[2], d, g) +
-            vs::shared::vs_hg_lobe_light(glm::max(I - I1, glm::vec3(0.0f)), Mr[0], Mr[1], Mr[2], d, g);
-          const glm::vec3 one = vs::shared::vs_hg_lobe_light(I, M[0], M[1], M[2], d, g);
-          sum += T * A * glm::dvec3(two) / (4.0 * Pi);
-          sumOne += T * A * glm::dvec3(one) / (4.0 * Pi);
-          T *= 1.0 - A;
-        }
         const float* got = &rgba[4 * (size_t(py) * LitBox::W + px)];
         for (int k = 0; k < 3; ++k)
         {
