@@ -115,15 +115,17 @@ DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const HostScalars& 
   const uint32_t chunk = StagedUpload::SlicesPerChunk(images, kChunkBytes);
   const float offset = this->QuadOffset_;
   // On a CPU device the images are the host's memory, fresh: the copies would fault it in on the
-  // driver's one queue thread (ch2better's 282 MB: 0.3-0.7 s on this VM). Each slab faults in its
-  // share first, the slabs in parallel (Image3D::PrefaultPages).
+  // driver's one queue thread (ch2better's 282 MB: 0.3-0.7 s on this VM). The slabs fault it in first,
+  // in parallel (Image3D::PrefaultPages), all of it before any slab uploads: a slab's share of the bytes
+  // is not its slices (the layout is the driver's), and a write that faults a page in over a neighbour's
+  // slices already copied zeroed a voxel per page (VolumeQuads.EveryVoxelArrivesWhateverTheSlabsTiming).
   std::vector<Image3D::HostMemory> memory;
   for (Image3D* image : images)
   {
     memory.push_back(image->MapHostMemory());
   }
   const unsigned slabs = SlabCount(dims[2]);
-  ForSlabs(dims[2], [&](unsigned p, uint64_t z0, uint64_t z1) {
+  ForSlabs(dims[2], [&](unsigned p, uint64_t, uint64_t) {
     for (const Image3D::HostMemory& m : memory)
     {
       const uint64_t b0 = m.Bytes * p / slabs, b1 = m.Bytes * (p + 1) / slabs;
@@ -132,6 +134,8 @@ DeviceVolume::DeviceVolume(std::shared_ptr<Context> context, const HostScalars& 
         Image3D::PrefaultPages(m.Data + b0, b1 - b0);
       }
     }
+  });
+  ForSlabs(dims[2], [&](unsigned, uint64_t z0, uint64_t z1) {
     StagedUpload upload(context, images, chunk);
     std::vector<float> floats(slice);
     const bool packed = this->Quads_ != nullptr;

@@ -62,7 +62,8 @@ public:
   /** Writes a zero into every 4 KB page of [data, data + bytes) on the calling thread, so that the
    *  kernel backs them now (issue 39: on this VM the first touch of fresh memory costs ~2.3 ms per
    *  MB, and an upload's copy touches it on the driver's one queue thread; slabs of host threads
-   *  fault it in parallel). Only for memory whose whole contents are written afterwards. */
+   *  fault it in parallel). It writes: only for memory none of which is written yet (finish every
+   *  range before any copy into the image starts) and all of which is written afterwards. */
   static void PrefaultPages(char* data, uint64_t bytes);
   const std::string& Name() const { return this->Name_; }
 
