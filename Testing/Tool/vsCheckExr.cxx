@@ -27,6 +27,7 @@
 #include <cstdlib>
 #include <exception>
 #include <cstring>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -185,9 +186,42 @@ int main(int argc, char** argv)
       std::string ca, cb;
       const auto a = Pixels(argv[2], wa, ha, ca);
       const auto b = Pixels(argv[3], wb, hb, cb);
-      if (wa != wb || ha != hb || ca != cb || a != b)
+      if (wa != wb || ha != hb || ca != cb)
       {
-        std::fprintf(stderr, "%s (%d x %d) and %s (%d x %d) differ\n", argv[2], wa, ha, argv[3], wb, hb);
+        std::fprintf(stderr, "%s (%d x %d; %s) and %s (%d x %d; %s) differ in size or channels\n", argv[2], wa, ha,
+          ca.c_str(), argv[3], wb, hb, cb.c_str());
+        return 1;
+      }
+      if (a != b)
+      {
+        // Which channels differ, in how many pixels, and by how much at most (what tells a float's last
+        // bit from a pixel that went wrong).
+        std::fprintf(stderr, "%s and %s (%d x %d) differ:", argv[2], argv[3], wa, ha);
+        std::istringstream names(ca);
+        const size_t pixels = size_t(wa) * size_t(ha);
+        for (size_t c = 0; c * pixels < a.size(); ++c)
+        {
+          std::string name;
+          names >> name;
+          size_t count = 0;
+          double largest = 0.0;
+          for (size_t i = c * pixels; i < (c + 1) * pixels; ++i)
+          {
+            if (a[i] != b[i])
+            {
+              float fa = 0.0f, fb = 0.0f;
+              std::memcpy(&fa, &a[i], sizeof(fa));
+              std::memcpy(&fb, &b[i], sizeof(fb));
+              ++count;
+              largest = std::max(largest, std::abs(double(fa) - double(fb)));
+            }
+          }
+          if (count > 0)
+          {
+            std::fprintf(stderr, " %s in %zu pixels (largest difference %.3g);", name.c_str(), count, largest);
+          }
+        }
+        std::fprintf(stderr, "\n");
         return 1;
       }
       std::printf("%s and %s: the same %d x %d pixels\n", argv[2], argv[3], wa, ha);
