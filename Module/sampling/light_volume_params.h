@@ -61,9 +61,8 @@ struct VsLightScatterParams
   uint offsetY;
   float anisotropy;  /* with the shader's specialization constant 1 (issue 39): the phase's g, the orders
                        carried on in the similar medium (phase_moments.h vs_similar_*) */
-  uint firstOrder;   /* with it: 1 when the order reads the first order's light (k = 2: its source is the real
-                       phase's, the lobe of I_1 and the first order's moment M_1 towards c); else the similar
-                       medium's source sigma* a* I_k = (1 - g) sigma a I_k */
+  uint unused;       /* (the order k = 2, whose source is the first order's lobe, is the shader's specialization
+                       constant 1 = 2: light_volume_scatter.glsl) */
 };
 
 VS_NAMESPACE_END

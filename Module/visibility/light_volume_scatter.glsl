@@ -23,13 +23,13 @@
  * light varies slowly with direction, and the march is stride^2 times cheaper.
  * Writes I_{k+1} into the total (rgb += ; alpha, the mean visibility, untouched), and E_{k+1} and
  * I_{k+1} for the next order (the orders not computed are added on the host: vsLightVolume.cxx).
- * The phase's anisotropy (issue 39; specialization constant 1, P.anisotropy = g != 0): the order is carried in
+ * The phase's anisotropy (issue 39; specialization constant 1 >= 1, P.anisotropy = g != 0): the order is carried in
  * the similar medium (sampling/phase_moments.h vs_similar_*): isotropic, sigma_t* = sigma (1 - a g) and
  * a* = a (1 - g) / (1 - a g) per channel, so a segment's transmittance is its real one (from the grid, as
  * above) to the power sigma_t* / sigma of the segment (its ends' extinction-weighted), the weights
  * t*_{j-1} - t*_j, and a segment emits (S(x_{j-1}) + S(x_j)) / (s*(x_{j-1}) + s*(x_j)) towards c. Its source
  * S: for the orders k >= 2 the similar medium's, sigma* a* I_k = (1 - g) sigma a I_k; for the first order's
- * light (P.firstOrder, k = 1) the real phase's, all that the first order scatters, sent towards c as
+ * light (k = 1, the order k = 2: specialization constant 1 = 2) the real phase's, all that the first order scatters, sent towards c as
  * Henyey-Greenstein sends the lobe of I_1 and its moment M_1 (uMoment): sigma a 4 pi I_1 f_HG(m.w_n; g rho)
  * (phase_moments.h vs_hg_lobe_light, w_n the world direction from c towards the segment). The order's band-1
  * moment M_{k+1}(c) = (1 / side^2) sum_n L_n(c) w_n is added to the orders' sum (uMomentSum) and written for
@@ -44,6 +44,10 @@
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 layout(constant_id = 0) const uint VS_SPEC_D = 8u;
+/* 0: isotropic; 1: the similar medium, the source (1 - g) sigma a I_k; 2: the similar medium, the source the
+   first order's lobe (the order k = 2). A constant, not a push constant: lavapipe runs a branch's body under a
+   mask whether or not a lane takes it, so the lobe's four reads and three evaluations per step cost the
+   orders k >= 3 a third of their time when a push constant chose the source (measured on ch2). */
 layout(constant_id = 1) const uint VS_SPEC_SIMILAR = 0u;
 layout(binding = VS_LIGHTMS_VISIBILITY, VS_VIS_FORMAT) uniform readonly image3D uVisibility;
 layout(std430, binding = VS_LIGHTMS_SOURCES) readonly buffer Sources { uint uSources[]; };
@@ -76,7 +80,7 @@ shared vec3 sDirection[256]; /* VS_SPEC_SIMILAR: w_n */
  * order's light Henyey-Greenstein's of I_1 and M_1 (the header above). */
 vec3 similar_source(ivec3 q, vec4 e, vec3 w, float g)
 {
-  if (P.firstOrder == 0u || !(e.a > 0.0))
+  if (VS_SPEC_SIMILAR != 2u || !(e.a > 0.0))
     return (1.0 - g) * e.rgb; /* without extinction: 0 */
   vec3 I = imageLoad(uOrderIn, q).rgb;
   int layer = int(P.cellsZ);
@@ -94,7 +98,7 @@ void main()
   {
     sSteps[n] = uSteps[n].xyz;
     sSources[n] = uSources[n];
-    if (VS_SPEC_SIMILAR == 1u)
+    if (VS_SPEC_SIMILAR != 0u)
       sDirection[n] = uSteps[DD + n].xyz;
   }
   barrier();
@@ -114,7 +118,7 @@ void main()
     float v0 = visibility_texel(cell, n, D);
     vec3 s = sSteps[n];
     vec3 acc = vec3(0.0);
-    if (VS_SPEC_SIMILAR == 1u)
+    if (VS_SPEC_SIMILAR != 0u)
     {
       /* the similar medium: per channel, its transmittance ts from c, its extinction s* and source S */
       float g = P.anisotropy;
@@ -224,7 +228,7 @@ void main()
   imageStore(uLight, ivec3(cell), vec4(total.rgb + light, total.a));
   imageStore(uEmitOut, ivec3(cell), vec4(albedo.a * albedo.rgb * light, albedo.a));
   imageStore(uOrderOut, ivec3(cell), vec4(light, 0.0));
-  if (VS_SPEC_SIMILAR == 1u)
+  if (VS_SPEC_SIMILAR != 0u)
   {
     float norm = 1.0 / float(side * side);
     ivec3 layer = ivec3(0, 0, cells.z);
@@ -234,7 +238,7 @@ void main()
     {
       ivec3 texel = at + a * layer;
       imageStore(uOrderMoment, texel, vec4(m[a], 0.0));
-      vec4 before = P.firstOrder == 1u ? vec4(0.0) : imageLoad(uMomentSum, texel);
+      vec4 before = VS_SPEC_SIMILAR == 2u ? vec4(0.0) : imageLoad(uMomentSum, texel);
       imageStore(uMomentSum, texel, before + vec4(m[a], 0.0));
     }
   }

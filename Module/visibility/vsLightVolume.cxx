@@ -78,13 +78,23 @@ std::vector<BindingType> ScatterBindings()
       { shared::VS_LIGHTMS_MOMENT_SUM, B::StorageImage }, { shared::VS_LIGHTMS_ORDER_MOMENT, B::StorageImage } });
 }
 
+// The scatter's variants (light_volume_scatter.glsl's VS_SPEC_SIMILAR).
+enum class ScatterMedium : uint32_t
+{
+  Isotropic = 0,
+  Similar = 1,        // the orders k >= 3 under g != 0
+  SimilarFromLobe = 2 // the order k = 2 under g != 0: its source is the first order's lobe
+};
+
 std::shared_ptr<ComputePipeline> ScatterPipeline(
-  const std::shared_ptr<Context>& context, vk::Format format, uint32_t D, bool similar)
+  const std::shared_ptr<Context>& context, vk::Format format, uint32_t D, ScatterMedium medium)
 {
   const uint32_t push = sizeof(shared::VsLightScatterParams);
-  const std::vector<uint32_t> specialization{ D, similar ? 1u : 0u };
-  const std::string name =
-    std::string(similar ? "light volume scatter, similar medium (D " : "light volume scatter (D ") + std::to_string(D);
+  const std::vector<uint32_t> specialization{ D, uint32_t(medium) };
+  const std::string name = std::string(medium == ScatterMedium::Isotropic ? "light volume scatter (D "
+        : medium == ScatterMedium::Similar ? "light volume scatter, similar medium (D "
+                                           : "light volume scatter, from the first order's lobe (D ") +
+    std::to_string(D);
   if (format == vk::Format::eR8Unorm)
     return SharedPipeline(
       context, VS_SPIRV(vs_spirv_light_volume_scatter_r8), ScatterBindings(), push, name + ", r8)", specialization);
@@ -447,8 +457,11 @@ void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& 
 
   const std::shared_ptr<ComputePipeline> albedoPipeline = SharedPipeline(this->Context_,
     VS_SPIRV(vs_spirv_light_volume_albedo), ScatterBindings(), 0, "light volume albedo");
-  const std::shared_ptr<ComputePipeline> scatter =
-    ScatterPipeline(this->Context_, grid.Image().Format(), side, similar);
+  const std::shared_ptr<ComputePipeline> scatter = ScatterPipeline(
+    this->Context_, grid.Image().Format(), side, similar ? ScatterMedium::Similar : ScatterMedium::Isotropic);
+  // The order k = 2 under g != 0 (the first order's light by the real phase) has a variant of its own.
+  const std::shared_ptr<ComputePipeline> scatterFromLobe =
+    similar ? ScatterPipeline(this->Context_, grid.Image().Format(), side, ScatterMedium::SimilarFromLobe) : scatter;
   const auto bindAll = [&](DescriptorSet& set, const Image3D& in, const Image3D& out, const Image3D& orderIn,
                        const Image3D& orderOut) {
     set.Bind(shared::VS_LIGHTMS_VOLUME, m.Volume->Image())
@@ -493,7 +506,8 @@ void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& 
   for (uint32_t k = 2; k <= orders; ++k)
   {
     batch.Barrier();
-    sets.push_back(std::make_unique<DescriptorSet>(*scatter));
+    const ComputePipeline& pipeline = k == 2 ? *scatterFromLobe : *scatter;
+    sets.push_back(std::make_unique<DescriptorSet>(pipeline));
     bindAll(*sets.back(), *in, *out, *orderIn, *orderOut);
     shared::VsLightScatterParams params{};
     params.cellsX = cells[0];
@@ -504,12 +518,11 @@ void LightVolume::Scatter(const VisibilityGrid& grid, const MultipleScattering& 
     params.offsetY = stride > 1 ? ((k - 2) / stride) % stride : 0u;
     if (similar)
     {
-      // The order k = 2 scatters the first order's light by the real phase, the others carry on in the
-      // similar medium (light_volume_scatter.glsl).
+      // The order k = 2 scatters the first order's light by the real phase (scatterFromLobe), the others
+      // carry on in the similar medium (light_volume_scatter.glsl).
       params.anisotropy = m.Anisotropy;
-      params.firstOrder = k == 2 ? 1u : 0u;
     }
-    batch.Dispatch(*scatter, *sets.back(), &params, sizeof(params), gx, gy, gz);
+    batch.Dispatch(pipeline, *sets.back(), &params, sizeof(params), gx, gy, gz);
     std::swap(in, out);
     std::swap(orderIn, orderOut);
   }
