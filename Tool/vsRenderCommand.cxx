@@ -422,21 +422,22 @@ ProgressiveResult RenderProgressively(
     // it with the update included would stop a budget right after the first frame of a new step.
     // Per sample, the longest of the last three frames (vs::FrameTimePredictor): a frame slower than the
     // one before must not run the budget over.
+    // A frame's fixed part (host work, the display, the last dispatch's tail) apart: the last frame,
+    // sized to what is left of the budget, has few samples and would run over by it.
     predictor.Add(std::max(0.0, frameSeconds - mapper->GetLastUpdateSeconds()), r.Spp - previousSpp);
-    const double perSample = std::max(predictor.SecondsPerSample(), 1e-6);
     const double elapsed = Seconds(loopStart, Clock::now());
     int nextSamples = std::min(mapper->GetSamplesPerFrame(), std::max(target - r.Spp, 0));
     if (autoFrames && r.Spp > previousSpp && r.Spp < target)
     {
-      double fit = AutoFrameSeconds / perSample;
+      int fit = predictor.SamplesWithin(AutoFrameSeconds);
       if (timed)
       {
-        fit = std::min(fit, (timeBudget - elapsed) / perSample); // the last frame ends within the budget
+        fit = std::min(fit, predictor.SamplesWithin(timeBudget - elapsed)); // the last frame ends within the budget
       }
-      nextSamples = std::min(int(std::clamp(fit, 1.0, double(1 << 16))), target - r.Spp);
+      nextSamples = std::min(std::clamp(fit, 1, 1 << 16), target - r.Spp);
       mapper->SetSamplesPerFrame(nextSamples);
     }
-    const double nextFrameSeconds = perSample * double(nextSamples);
+    const double nextFrameSeconds = predictor.NextFrameSeconds(nextSamples);
     previousSpp = r.Spp;
     const bool done = r.Spp >= target || (timed && elapsed + nextFrameSeconds > timeBudget);
     if (bar)
