@@ -148,6 +148,7 @@ void vtkVisSweepVolumeRepresentation::UpdateTimeBudget()
     // That render restarted the accumulation: the clock restarts with it.
     this->AccumulationSeconds = frame;
     std::fill(std::begin(this->RecentFrameSeconds), std::end(this->RecentFrameSeconds), next);
+    this->FirstFrameOnly = true;
     this->NextFrameSeconds = next;
     this->BudgetSamples = samples;
     this->BudgetResets = resets;
@@ -155,12 +156,25 @@ void vtkVisSweepVolumeRepresentation::UpdateTimeBudget()
   else if (samples > this->BudgetSamples)
   {
     this->AccumulationSeconds += frame;
-    // The next frame is expected to take as long as the longest of the last few: predicted from the
-    // last one alone, a frame slower than the one before it ran a 1 s budget of ~9 ms frames over by
-    // a fraction of a millisecond (a clean clone's ParaView.Pvbatch: AccumulationTime 1.000 s).
+    // The next frame is expected to take as long as the longest of the last 16 and as much more as that
+    // one took over their median: the frames' jitter. Predicted from the last frame alone, a frame slower
+    // than the one before ran a 1 s budget of ~9 ms frames over (a clean clone's ParaView.Pvbatch:
+    // AccumulationTime 1.000 s); from the longest of the last three, one slower than those three did
+    // (1.002 s, 2026-12-07). A machine that stalls a frame by more than its recent jitter can still.
+    // The accumulation's first frame (its one-off costs: pipelines, page faults) stands only until the
+    // second, as in vs::FrameTimePredictor.
+    if (this->FirstFrameOnly)
+    {
+      std::fill(std::begin(this->RecentFrameSeconds), std::end(this->RecentFrameSeconds), next);
+      this->FirstFrameOnly = false;
+    }
     this->RecentFrameSeconds[this->RecentFrame] = next;
     this->RecentFrame = (this->RecentFrame + 1) % RecentFrames;
-    this->NextFrameSeconds = *std::max_element(std::begin(this->RecentFrameSeconds), std::end(this->RecentFrameSeconds));
+    double sorted[RecentFrames];
+    std::copy(std::begin(this->RecentFrameSeconds), std::end(this->RecentFrameSeconds), sorted);
+    std::sort(std::begin(sorted), std::end(sorted));
+    const double longest = sorted[RecentFrames - 1], median = 0.5 * (sorted[RecentFrames / 2 - 1] + sorted[RecentFrames / 2]);
+    this->NextFrameSeconds = longest + std::max(0.0, longest - median);
     this->BudgetSamples = samples;
   }
   // Redraws (no new samples) cost nothing of the budget.

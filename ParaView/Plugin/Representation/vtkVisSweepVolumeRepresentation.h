@@ -140,10 +140,12 @@ private:
   int SampleShare = 4096;         // this process's share of MaximumSamples
   double TimeBudget = 0.0;        // seconds, 0: none
   double AccumulationSeconds = 0.0; // the current accumulation's still frames, summed
-  double NextFrameSeconds = 0.0;  // the next frame's expected time: the longest of the last RecentFrames
-  static constexpr int RecentFrames = 3;
-  double RecentFrameSeconds[RecentFrames] = { 0.0, 0.0, 0.0 }; // the last frames' times without their updates
+  double NextFrameSeconds = 0.0;  // the next frame's expected time: the longest of the last RecentFrames and
+                                  // its excess over their median (UpdateTimeBudget)
+  static constexpr int RecentFrames = 16;
+  double RecentFrameSeconds[RecentFrames] = {}; // the last frames' times without their updates
   int RecentFrame = 0;                                         // where the next one goes
+  bool FirstFrameOnly = false;    // RecentFrameSeconds hold the accumulation's first frame alone
   int BudgetResets = -1;          // the mapper's AccumulationResetCount the sum belongs to
   int BudgetSamples = 0;          // this process's samples when last counted
   bool BudgetSpent = false;       // the mapper's MaximumSamples is held at BudgetSamples
