@@ -84,21 +84,17 @@ double FrameTimePredictor::NextFrameSeconds(int samples) const
 
 int FrameTimePredictor::SamplesWithin(double seconds) const
 {
-  constexpr double most = double(1 << 30);
-  if (this->Count == 0)
-  {
-    return 1 << 30;
-  }
+  constexpr int most = 1 << 30;
   const double perSample = this->SecondsPerSample();
   const double left = seconds - this->FixedSeconds();
+  if (this->Count == 0)
+  {
+    return most; // nothing known
+  }
   if (!(left >= 0.0))
   {
-    return 0;
+    return 0; // not even the fixed part fits
   }
-  if (perSample <= 0.0)
-  {
-    return 1 << 30;
-  }
-  return int(std::min(std::floor(left / perSample), most));
+  return perSample > 0.0 ? int(std::min(std::floor(left / perSample), double(most))) : most;
 }
 }

@@ -59,10 +59,9 @@ struct VsLightScatterParams
                    D x D grid, each standing for stride^2 texels (1: all) */
   uint offsetX;
   uint offsetY;
-  float anisotropy;  /* with the shader's specialization constant 1 (issue 39): the phase's g, the orders
-                       carried on in the similar medium (phase_moments.h vs_similar_*) */
-  uint unused;       /* (the order k = 2, whose source is the first order's lobe, is the shader's specialization
-                       constant 1 = 2: light_volume_scatter.glsl) */
+  float anisotropy;  /* with the shader's specialization constant 1 >= 1 (issue 39): the phase's g, the orders
+                       carried on in the similar medium (phase_moments.h vs_similar_*; the order k = 2, whose
+                       source is the first order's lobe, is the constant's value 2) */
 };
 
 VS_NAMESPACE_END
@@ -73,7 +72,7 @@ static_assert(sizeof(vs::shared::VsLightVolumeParams) == 12, "VsLightVolumeParam
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsX) == 0, "VsLightVolumeParams layout");
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsY) == 4, "VsLightVolumeParams layout");
 static_assert(offsetof(vs::shared::VsLightVolumeParams, cellsZ) == 8, "VsLightVolumeParams layout");
-static_assert(sizeof(vs::shared::VsLightScatterParams) == 32, "VsLightScatterParams: 7 uints and a float");
+static_assert(sizeof(vs::shared::VsLightScatterParams) == 28, "VsLightScatterParams: 6 uints and a float");
 static_assert(offsetof(vs::shared::VsLightAlbedoParams, cellSize) == sizeof(vs::shared::VsVolumeParams),
   "VsLightAlbedoParams layout");
 static_assert(sizeof(vs::shared::VsLightAlbedoParams) == sizeof(vs::shared::VsVolumeParams) + 32,
